@@ -1,0 +1,108 @@
+"""Incremental dynamic analysis of one wall under one record (MODEL.md §5; paper Eqs. 15–16)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from frp_assess.dynamics.rocking import RockingModel
+from frp_assess.errors import Cancelled
+
+
+@dataclass(frozen=True)
+class IdaSettings:
+    """Search rule of MODEL.md §5.
+
+    Attributes:
+        step_ratio: s, the hunt tries C₀·s^k, k = 0, 1, 2, …
+        tolerance: bisection stops when (C_hi − C_lo) ≤ tolerance·C_hi.
+        max_multiplier: give up (no collapse) beyond C_max = max_multiplier·C₀.
+    """
+
+    step_ratio: float = 1.10
+    tolerance: float = 0.005
+    max_multiplier: float = 100.0
+
+    def __post_init__(self) -> None:
+        if not (math.isfinite(self.step_ratio) and self.step_ratio > 1.0):
+            raise ValueError(f"IDA step ratio must be > 1, got {self.step_ratio!r}")
+        if not (math.isfinite(self.tolerance) and 0.0 < self.tolerance <= 0.1):
+            raise ValueError(f"IDA tolerance must be in (0, 0.1], got {self.tolerance!r}")
+        if not (math.isfinite(self.max_multiplier) and self.max_multiplier > 1.0):
+            raise ValueError(f"IDA max multiplier must be > 1, got {self.max_multiplier!r}")
+
+
+@dataclass(frozen=True)
+class IdaResult:
+    """Collapse of one wall under one record.
+
+    ``collapse_multiplier``, ``a_dyn`` and ``q`` are ``None`` when the wall did not collapse up
+    to C_max.
+    """
+
+    pga: float  #: PGA of the unscaled record [m/s²]
+    c0: float  #: C₀ = a_RM / PGA, below which nothing moves [-]
+    collapse_multiplier: float | None  #: C of the first collapse [-]
+    a_dyn: float | None  #: C·PGA [m/s²] (Eq. 16)
+    q: float | None  #: a_dyn / a_RM [-] (Eq. 15)
+    runs: int  #: time histories computed
+
+
+def ida(
+    model: RockingModel,
+    acc: NDArray[np.float64],
+    dt: float,
+    settings: IdaSettings = IdaSettings(),
+    *,
+    should_stop: Callable[[], bool] | None = None,
+) -> IdaResult:
+    """First collapse multiplier of ``model`` under the record ``acc`` [m/s²] sampled every dt [s].
+
+    1. C₀ = a_RM/PGA; try C = C₀·s^k, k = 0, 1, … until the first collapse, giving up past
+       C_max = max_multiplier·C₀;
+    2. bisect between the last survivor and the first collapse until
+       (C_hi − C_lo) ≤ tol·C_hi; the result is C_hi, the *first* collapse.
+
+    ``should_stop`` is polled between time histories; when it returns True the search
+    raises :class:`~frp_assess.errors.Cancelled`.
+    """
+    acc = np.ascontiguousarray(acc, dtype=np.float64)
+    pga = float(np.max(np.abs(acc)))
+    if not (math.isfinite(pga) and pga > 0.0):
+        raise ValueError("the record has no ground motion (PGA = 0 or not finite)")
+    a_rm = model.wall.a_rm
+    c0 = a_rm / pga
+    c_max = settings.max_multiplier * c0
+    runs = 0
+
+    def collapses(c: float) -> bool:
+        nonlocal runs
+        if should_stop is not None and should_stop():
+            raise Cancelled("IDA cancelled")
+        runs += 1
+        return model.run(acc, dt, c).collapsed
+
+    c_lo = 0.0
+    c_hi = math.nan
+    k = 0
+    while True:
+        c = c0 * settings.step_ratio**k
+        if c > c_max * (1.0 + 1e-12):
+            return IdaResult(pga, c0, None, None, None, runs)
+        if collapses(c):
+            c_hi = c
+            break
+        c_lo = c
+        k += 1
+    while c_hi - c_lo > settings.tolerance * c_hi:
+        c_mid = 0.5 * (c_lo + c_hi)
+        if collapses(c_mid):
+            c_hi = c_mid
+        else:
+            c_lo = c_mid
+    a_dyn = c_hi * pga
+    return IdaResult(pga, c0, c_hi, a_dyn, a_dyn / a_rm, runs)

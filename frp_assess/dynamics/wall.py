@@ -1,0 +1,86 @@
+"""The rigid rocking wall (MODEL.md §1; paper Eqs. 2–5).
+
+Everything is per metre of wall length and in SI units (m, kg, N, s, rad).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Literal
+
+from frp_assess.motions.record import G
+
+Mechanism = Literal["one-sided", "two-sided"]
+MECHANISMS: tuple[Mechanism, ...] = ("one-sided", "two-sided")
+
+
+@dataclass(frozen=True)
+class Wall:
+    """A monolithic rectangular masonry block rocking about its base corners.
+
+    Args:
+        thickness: B [m], out-of-plane thickness.
+        height: H [m].
+        unit_weight: w [N/m³] (18 kN/m³ = 18e3 N/m³ for solid brick and lime mortar).
+    """
+
+    thickness: float
+    height: float
+    unit_weight: float
+
+    def __post_init__(self) -> None:
+        for name in ("thickness", "height", "unit_weight"):
+            value = getattr(self, name)
+            if not (math.isfinite(value) and value > 0.0):
+                raise ValueError(f"wall {name} must be a finite number > 0, got {value!r}")
+        if self.thickness >= self.height:
+            raise ValueError(
+                f"wall thickness B = {self.thickness} m must be smaller than its height "
+                f"H = {self.height} m for a rocking wall"
+            )
+
+    @property
+    def alpha(self) -> float:
+        """Slenderness angle α [rad], tan α = B/H."""
+        return math.atan2(self.thickness, self.height)
+
+    @property
+    def R(self) -> float:  # noqa: N802 - the model's symbol
+        """Half diagonal R [m] = ½·√(B² + H²): centre of mass to a base corner."""
+        return 0.5 * math.hypot(self.thickness, self.height)
+
+    @property
+    def mass(self) -> float:
+        """Mass per metre of wall m = w·B·H/g [kg/m]."""
+        return self.unit_weight * self.thickness * self.height / G
+
+    @property
+    def I0(self) -> float:  # noqa: N802
+        """Polar moment of inertia about a base corner, (4/3)·m·R² [kg·m²/m]."""
+        return 4.0 / 3.0 * self.mass * self.R**2
+
+    @property
+    def p2(self) -> float:
+        """Frequency parameter p² = m·g·R/I0 = 3g/(4R) [rad²/s²]."""
+        return 3.0 * G / (4.0 * self.R)
+
+    @property
+    def p(self) -> float:
+        """Frequency parameter p [rad/s]."""
+        return math.sqrt(self.p2)
+
+    @property
+    def a_rm(self) -> float:
+        """Ground acceleration that activates rocking, g·tan α [m/s²]."""
+        return G * self.thickness / self.height
+
+    @property
+    def a_rm_g(self) -> float:
+        """Ground acceleration that activates rocking, tan α [g]."""
+        return self.thickness / self.height
+
+    @classmethod
+    def from_slenderness(cls, height: float, alpha: float, unit_weight: float) -> Wall:
+        """The wall of height H [m] and slenderness α [rad] (B = H·tan α)."""
+        return cls(thickness=height * math.tan(alpha), height=height, unit_weight=unit_weight)

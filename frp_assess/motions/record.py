@@ -1,0 +1,57 @@
+"""The ground-motion record as the numerics see it."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.typing import NDArray
+
+#: Standard gravity [m/s²] (used for every g <-> m/s² conversion in the package).
+G = 9.80665
+
+
+@dataclass(frozen=True, eq=False)
+class Record:
+    """A uniformly sampled ground acceleration history.
+
+    Attributes:
+        name: short label (file stem, or ``"art-01"`` for generated records).
+        dt: sampling interval [s].
+        acc: ground acceleration [m/s²], one value per sample, first sample at t = 0.
+        source: where it came from (file path, or generator and seed), for reports.
+    """
+
+    name: str
+    dt: float
+    acc: NDArray[np.float64]
+    source: str = ""
+    meta: dict[str, str] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        acc = np.ascontiguousarray(self.acc, dtype=np.float64)
+        acc.setflags(write=False)
+        object.__setattr__(self, "acc", acc)
+
+    @property
+    def npts(self) -> int:
+        return int(self.acc.size)
+
+    @property
+    def duration(self) -> float:
+        """Duration [s] from the first to the last sample."""
+        return (self.npts - 1) * self.dt
+
+    @property
+    def time(self) -> NDArray[np.float64]:
+        return np.arange(self.npts) * self.dt
+
+    @property
+    def pga(self) -> float:
+        """Peak ground acceleration [m/s²]."""
+        return float(np.max(np.abs(self.acc))) if self.npts else 0.0
+
+    @property
+    def pga_g(self) -> float:
+        """Peak ground acceleration [g]."""
+        return self.pga / G
