@@ -8,8 +8,9 @@ import pytest
 G = 9.80665
 
 
-def synthetic_record(seed: int, duration: float = 8.0, dt: float = 0.01, pga_g: float = 0.2,
-                     corner: int = 6) -> np.ndarray:
+def synthetic_record(
+    seed: int, duration: float = 8.0, dt: float = 0.01, pga_g: float = 0.2, corner: int = 6
+) -> np.ndarray:
     """Band-limited noise under a trapezoidal envelope, scaled to ``pga_g`` [returns m/s²].
 
     A stand-in for an earthquake record: broadband, non-stationary, reproducible from its seed.

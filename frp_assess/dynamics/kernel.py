@@ -52,7 +52,9 @@ MAX_EVENTS_PER_INTERVAL = 100_000
 
 
 @njit(cache=True, nogil=True)
-def _rhs(theta: float, s: float, u: float, p2: float, sin_a: float, cos_a: float, k_s: float) -> float:
+def _rhs(
+    theta: float, s: float, u: float, p2: float, sin_a: float, cos_a: float, k_s: float
+) -> float:
     """θ'' of Eq. 10 in the regime s, ground acceleration u = ü_g/g (already scaled)."""
     st = math.sin(theta)
     ct = math.cos(theta)

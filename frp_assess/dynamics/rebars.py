@@ -71,7 +71,11 @@ class Rebars:
     def stiffness_term(self, wall: Wall) -> float:
         """K [-] of Eq. 10: sin α · tan α · (r_p/2) · E·A/(m·g)."""
         a = wall.alpha
-        ea_over_mg = self.elastic_modulus * self.area(wall) / (wall.unit_weight * wall.thickness * wall.height)
+        ea_over_mg = (
+            self.elastic_modulus
+            * self.area(wall)
+            / (wall.unit_weight * wall.thickness * wall.height)
+        )
         return math.sin(a) * math.tan(a) * 0.5 * self.r_p * ea_over_mg
 
     def rupture_rotation(self, wall: Wall) -> float:

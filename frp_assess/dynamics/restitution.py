@@ -37,7 +37,9 @@ def velocity_ratio(restitution: Restitution, mechanism: Mechanism, alpha: float)
             return math.sqrt(r)
         if restitution == "velocity":
             return r
-        raise ValueError(f"restitution must be 'energy', 'velocity' or a number, got {restitution!r}")
+        raise ValueError(
+            f"restitution must be 'energy', 'velocity' or a number, got {restitution!r}"
+        )
     value = float(restitution)
     if not (math.isfinite(value) and 0.0 < value <= 1.0):
         raise ValueError(f"restitution velocity ratio must be in (0, 1], got {restitution!r}")

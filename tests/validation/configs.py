@@ -9,10 +9,22 @@ WALL = Wall(thickness=0.4, height=3.0, unit_weight=18e3)
 CASES: dict[str, tuple[str, dict | None]] = {
     "URM one-sided": ("one-sided", None),
     "URM two-sided": ("two-sided", None),
-    "GFRP centred one-sided": ("one-sided", dict(elastic_modulus=46e9, ultimate_strain=0.015, position="centred", ratio=2.0)),
-    "CFRP external one-sided": ("one-sided", dict(elastic_modulus=150e9, ultimate_strain=0.013, position="external", ratio=1.0)),
-    "BFRP centred two-sided": ("two-sided", dict(elastic_modulus=50e9, ultimate_strain=0.020, position="centred", ratio=1.0)),
-    "GFRP external two-sided": ("two-sided", dict(elastic_modulus=46e9, ultimate_strain=0.015, position="external", ratio=3.0)),
+    "GFRP centred one-sided": (
+        "one-sided",
+        dict(elastic_modulus=46e9, ultimate_strain=0.015, position="centred", ratio=2.0),
+    ),
+    "CFRP external one-sided": (
+        "one-sided",
+        dict(elastic_modulus=150e9, ultimate_strain=0.013, position="external", ratio=1.0),
+    ),
+    "BFRP centred two-sided": (
+        "two-sided",
+        dict(elastic_modulus=50e9, ultimate_strain=0.020, position="centred", ratio=1.0),
+    ),
+    "GFRP external two-sided": (
+        "two-sided",
+        dict(elastic_modulus=46e9, ultimate_strain=0.015, position="external", ratio=3.0),
+    ),
 }
 
 

@@ -63,7 +63,7 @@ def reference_run(sys: RefSystem, acc: np.ndarray, dt: float, scale: float) -> d
         t0, t1 = i * dt, (i + 1) * dt
         ua, ub = u[i], u[i + 1]
 
-        def ug(t: float) -> float:
+        def ug(t: float, t0: float = t0, ua: float = ua, ub: float = ub) -> float:
             return ua + (ub - ua) * (t - t0) / dt
 
         t = t0
@@ -89,7 +89,11 @@ def reference_run(sys: RefSystem, acc: np.ndarray, dt: float, scale: float) -> d
 
             def f(tt, y, s=s, k_s=k_s):
                 th = y[0]
-                return [y[1], -sys.p2 * (math.sin(a * s - th) + ug(tt) * math.cos(a * s - th) + k_s * math.sin(th))]
+                return [
+                    y[1],
+                    -sys.p2
+                    * (math.sin(a * s - th) + ug(tt) * math.cos(a * s - th) + k_s * math.sin(th)),
+                ]
 
             def ev_impact(tt, y, s=s):
                 return s * y[0]
@@ -105,14 +109,26 @@ def reference_run(sys: RefSystem, acc: np.ndarray, dt: float, scale: float) -> d
                 return s * y[0] - level_c
 
             ev_collapse.terminal, ev_collapse.direction = True, 1
-            events = [ev_impact, ev_collapse] + ([ev_rupture] if k_s > 0 and math.isfinite(sys.theta_max) else [])
+            events = [ev_impact, ev_collapse] + (
+                [ev_rupture] if k_s > 0 and math.isfinite(sys.theta_max) else []
+            )
             # the impact event must not fire at the start of the step (θ = 0 after an impact)
-            sol = solve_ivp(f, (t, t1), [theta, omega], method="DOP853", rtol=1e-11, atol=1e-14,
-                            events=events, dense_output=True)
+            sol = solve_ivp(
+                f,
+                (t, t1),
+                [theta, omega],
+                method="DOP853",
+                rtol=1e-11,
+                atol=1e-14,
+                events=events,
+                dense_output=True,
+            )
             # peak |θ| on the dense output
             tt = np.linspace(t, sol.t[-1], 12)
             peak = max(peak, float(np.max(np.abs(sol.sol(tt)[0]))), abs(sol.y[0, -1]))
-            fired = [(k, te[0]) for k, te in enumerate(sol.t_events) if len(te) and te[0] > t + 1e-14]
+            fired = [
+                (k, te[0]) for k, te in enumerate(sol.t_events) if len(te) and te[0] > t + 1e-14
+            ]
             if not fired:
                 theta, omega = sol.y[0, -1], sol.y[1, -1]
                 t = t1

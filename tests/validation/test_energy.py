@@ -28,12 +28,14 @@ def energy(model: RockingModel, theta, omega, with_bar=True):
 
 
 @pytest.mark.parametrize(
-    "mechanism,position", [("two-sided", "centred"), ("two-sided", "external"), ("one-sided", "external")]
+    "mechanism,position",
+    [("two-sided", "centred"), ("two-sided", "external"), ("one-sided", "external")],
 )
 def test_energy_conserved_with_intact_bars(mechanism, position):
     """Free vibration from θ0 < θ_max with a perfectly elastic impact (velocity ratio 1)."""
-    model = RockingModel(WALL, mechanism, Rebars(position=position, ratio=2.0, **GFRP),
-                         ModelOptions(restitution=1.0))
+    model = RockingModel(
+        WALL, mechanism, Rebars(position=position, ratio=2.0, **GFRP), ModelOptions(restitution=1.0)
+    )
     theta0 = 0.6 * model.theta_max
     dt = 0.002
     res = model.run(np.zeros(int(6.0 / dt)), dt, history=True, theta0=theta0)
@@ -46,8 +48,12 @@ def test_energy_conserved_with_intact_bars(mechanism, position):
 @pytest.mark.parametrize("rule", ["energy-transfer", "velocity-continuous"])
 @pytest.mark.parametrize("position", ["centred", "external"])
 def test_rupture_at_theta_max_with_eq12_jump(rule, position):
-    model = RockingModel(WALL, "two-sided", Rebars(position=position, ratio=1.0, **GFRP),
-                         ModelOptions(restitution=1.0, rupture=rule))
+    model = RockingModel(
+        WALL,
+        "two-sided",
+        Rebars(position=position, ratio=1.0, **GFRP),
+        ModelOptions(restitution=1.0, rupture=rule),
+    )
     a, p2, K, tm = model.wall.alpha, model.wall.p2, model.K, model.theta_max
     # launch from θ = 0 outward with 1.2× the energy needed to reach θ_max
     need = p2 * (math.cos(a - tm) - math.cos(a)) + p2 * K * (1 - math.cos(tm))

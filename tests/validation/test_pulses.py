@@ -56,7 +56,9 @@ def half_sine_threshold(wp: float) -> float:
 
 
 def run(acc: np.ndarray, dt: float, collapse: str = "end-of-record"):
-    model = RockingModel(WALL, "one-sided", options=ModelOptions(free_vibration_tail=20.0, collapse=collapse))
+    model = RockingModel(
+        WALL, "one-sided", options=ModelOptions(free_vibration_tail=20.0, collapse=collapse)
+    )
     return model.run(acc, dt)
 
 
@@ -79,7 +81,11 @@ def test_half_sine_pulse_threshold(wp_over_p):
     t_e = math.pi / wp
     dt = t_e / 4000
     t = np.arange(0, t_e + dt / 2, dt)
-    model = RockingModel(WALL, "one-sided", options=ModelOptions(collapse="first-exceedance", free_vibration_tail=20.0))
+    model = RockingModel(
+        WALL,
+        "one-sided",
+        options=ModelOptions(collapse="first-exceedance", free_vibration_tail=20.0),
+    )
     above = model.run(-1.03 * beta_min * G * ALPHA * np.sin(wp * t), dt)
     assert above.collapsed and above.impacts == 0
     below = model.run(-0.97 * beta_min * G * ALPHA * np.sin(wp * t), dt)

@@ -22,8 +22,12 @@ def ref_system(name: str, **kw) -> RefSystem:
     mechanism, bars = CASES[name]
     args = dict(B=0.4, H=3.0, w=18e3, one_sided=mechanism == "one-sided", **kw)
     if bars:
-        args.update(E=bars["elastic_modulus"], eps_u=bars["ultimate_strain"],
-                    position=bars["position"], rho=bars["ratio"])
+        args.update(
+            E=bars["elastic_modulus"],
+            eps_u=bars["ultimate_strain"],
+            position=bars["position"],
+            rho=bars["ratio"],
+        )
     return RefSystem(**args)
 
 
@@ -40,7 +44,9 @@ def test_peak_rotation_matches_reference(name):
         assert ours.impacts == ref["impacts"]
 
 
-@pytest.mark.parametrize("name", ["URM one-sided", "CFRP external one-sided", "GFRP external two-sided"])
+@pytest.mark.parametrize(
+    "name", ["URM one-sided", "CFRP external one-sided", "GFRP external two-sided"]
+)
 def test_collapse_multiplier_matches_reference(name):
     """IDA with the same search rule on both solvers (reference is ~1000× slower: coarse tol)."""
     acc = synthetic_record(seed=22, duration=5.0, dt=DT)

@@ -1,0 +1,64 @@
+"""The `frp-assess` command line: a thin layer over the application API.
+
+Each subcommand lives in its own module of this package and exposes
+``register(subparsers) -> None``, which adds its parser and sets ``handler`` (a callable
+taking the parsed namespace and returning the exit code).  Errors a user can fix
+(:class:`~frp_assess.errors.InputError`) are printed as one line and give exit code 2.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+from collections.abc import Sequence
+from typing import NoReturn
+
+from frp_assess import __version__
+from frp_assess.errors import Cancelled, InputError
+
+#: Subcommand modules of this package, in the order `--help` lists them.
+COMMAND_MODULES: tuple[str, ...] = (
+    "simulate",
+    "ida",
+)
+
+
+class OneLineParser(argparse.ArgumentParser):
+    """An ArgumentParser whose errors are a single line on stderr and exit code 2."""
+
+    def error(self, message: str) -> NoReturn:
+        self.exit(2, f"{self.prog}: error: {message}\n")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = OneLineParser(
+        prog="frp-assess",
+        description="Seismic assessment of rocking masonry walls retrofitted with vertical "
+        "FRP rebars, by incremental dynamic analysis.",
+    )
+    parser.add_argument("--version", action="version", version=f"frp-assess {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=OneLineParser)
+    sub.required = True
+    for name in COMMAND_MODULES:
+        module = importlib.import_module(f"frp_assess.cli.{name}")
+        module.register(sub)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Entry point of the console script; returns the process exit code."""
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        return int(args.handler(args))
+    except InputError as exc:
+        print(f"frp-assess: error: {exc}", file=sys.stderr)
+        return 2
+    except (KeyboardInterrupt, Cancelled):
+        print("frp-assess: interrupted; finished results are kept in the cache", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

@@ -1,0 +1,151 @@
+"""The `simulate` and `ida` commands: JSON contract, one-line errors, exit codes."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+from frp_assess.cli import main
+from frp_assess.dynamics import ModelOptions, Rebars, RockingModel, Wall, ida
+from frp_assess.motions.record import G, Record
+from frp_assess.motions.writers import write_at2
+from tests.conftest import synthetic_record
+
+WALL_ARGS = ["--thickness", "0.4", "--height", "3", "--mechanism", "one-sided"]
+BAR_ARGS = [
+    "--modulus",
+    "46",
+    "--ultimate-strain",
+    "0.015",
+    "--position",
+    "external",
+    "--ratio",
+    "1",
+]
+
+
+@pytest.fixture
+def record_file(tmp_path):
+    rec = Record("r1", 0.01, synthetic_record(3, duration=6.0, pga_g=0.3))
+    write_at2(rec, tmp_path / "r1.AT2")
+    return tmp_path / "r1.AT2"
+
+
+def test_simulate_json_matches_api(record_file, capsys):
+    assert (
+        main(
+            [
+                "simulate",
+                *WALL_ARGS,
+                *BAR_ARGS,
+                "--record",
+                str(record_file),
+                "--scale",
+                "3",
+                "--json",
+            ]
+        )
+        == 0
+    )
+    out = json.loads(capsys.readouterr().out)
+    from frp_assess.motions.readers import read_record
+
+    rec = read_record(record_file)
+    model = RockingModel(
+        Wall(0.4, 3.0, 18e3), "one-sided", Rebars(46e9, 0.015, "external", 1.0), ModelOptions()
+    )
+    res = model.run(rec.acc, rec.dt, 3.0)
+    assert out["max_rotation"] == res.max_rotation
+    assert out["max_rotation_ratio"] == pytest.approx(res.max_rotation / model.wall.alpha)
+    assert out["collapsed"] == res.collapsed and out["impacts"] == res.impacts
+    assert set(out) == {
+        "collapsed",
+        "collapse_time",
+        "max_rotation",
+        "max_rotation_ratio",
+        "impacts",
+        "ruptures",
+    }
+
+
+def test_simulate_history_csv(record_file, tmp_path, capsys):
+    out = tmp_path / "h.csv"
+    assert (
+        main(
+            [
+                "simulate",
+                *WALL_ARGS,
+                "--record",
+                str(record_file),
+                "--scale",
+                "2",
+                "--out",
+                str(out),
+            ]
+        )
+        == 0
+    )
+    data = np.loadtxt(out, delimiter=",", skiprows=1)
+    assert data.shape[1] == 6 and data[1, 0] == pytest.approx(0.01)
+
+
+def test_ida_json(record_file, capsys):
+    assert (
+        main(
+            [
+                "ida",
+                *WALL_ARGS,
+                "--record",
+                str(record_file),
+                "--record",
+                str(record_file),
+                "--json",
+            ]
+        )
+        == 0
+    )
+    out = json.loads(capsys.readouterr().out)
+    from frp_assess.motions.readers import read_record
+
+    rec = read_record(record_file)
+    model = RockingModel(Wall(0.4, 3.0, 18e3), "one-sided")
+    ref = ida(model, rec.acc, rec.dt)
+    assert out["alpha"] == pytest.approx(model.wall.alpha)
+    assert out["a_rm"] == pytest.approx(0.4 / 3.0)
+    assert len(out["records"]) == 2
+    r0 = out["records"][0]
+    assert r0["collapse_multiplier"] == ref.collapse_multiplier
+    assert r0["a_dyn"] == pytest.approx(ref.a_dyn / G) and r0["q"] == pytest.approx(ref.q)
+    assert r0["pga"] == pytest.approx(rec.pga_g)
+    assert out["mean_q"] == pytest.approx(ref.q)
+
+
+@pytest.mark.parametrize(
+    "argv,fragment",
+    [
+        (["--thickness", "-0.4", "--height", "3", "--mechanism", "one-sided"], "--thickness"),
+        (["--thickness", "3", "--height", "0.4", "--mechanism", "one-sided"], "thickness < height"),
+        ([*WALL_ARGS, *BAR_ARGS[:-1], "25"], "--ratio"),
+        ([*WALL_ARGS, "--modulus", "46"], "missing"),
+        ([*WALL_ARGS, "--restitution", "bouncy"], "--restitution"),
+        ([*WALL_ARGS, "--mechanism", "sideways"], "invalid choice"),
+    ],
+)
+def test_bad_arguments_one_line_exit_2(argv, fragment, record_file, capsys):
+    with pytest.raises(SystemExit) as exit_info:
+        code = main(["simulate", *argv, "--record", str(record_file)])
+        raise SystemExit(code)
+    assert exit_info.value.code == 2
+    err = capsys.readouterr().err.strip()
+    assert fragment in err and "\n" not in err and "Traceback" not in err
+
+
+@pytest.mark.parametrize("content", ["", "a\nb\nc\nNPTS= 2, DT= 0.01\nnan 0.1\n"])
+def test_unreadable_records(tmp_path, content, capsys):
+    p = tmp_path / "bad.AT2"
+    p.write_text(content)
+    assert main(["ida", *WALL_ARGS, "--record", str(p)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert str(p) in err and "\n" not in err

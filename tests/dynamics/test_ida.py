@@ -1,0 +1,95 @@
+"""The IDA search rule of MODEL.md §5 on stand-in models with a known collapse set."""
+
+from __future__ import annotations
+
+import threading
+from dataclasses import dataclass
+
+import numpy as np
+import pytest
+
+from frp_assess.dynamics import IdaSettings, IdaTask, RockingModel, Wall, ida, run_batch
+from frp_assess.errors import Cancelled
+from tests.conftest import synthetic_record
+
+
+@dataclass
+class _Outcome:
+    collapsed: bool
+
+
+class StubModel:
+    """Collapses for C in any of ``bands`` (list of (lo, hi)); counts calls."""
+
+    def __init__(self, bands):
+        self.wall = Wall(thickness=0.4, height=3.0, unit_weight=18e3)
+        self.bands = bands
+        self.calls = []
+
+    def run(self, acc, dt, c):
+        self.calls.append(c)
+        return _Outcome(any(lo <= c <= hi for lo, hi in self.bands))
+
+
+ACC = np.array([0.0, 1.0, -2.0, 0.5])  # PGA 2 m/s²
+
+
+def test_bisection_brackets_the_threshold():
+    c0 = Wall(thickness=0.4, height=3.0, unit_weight=18e3).a_rm / 2.0
+    model = StubModel([(3.3 * c0, np.inf)])
+    res = ida(model, ACC, 0.01, IdaSettings())
+    assert 3.3 * c0 <= res.collapse_multiplier <= 3.3 * c0 * 1.0051
+    assert res.q == pytest.approx(res.collapse_multiplier / c0)
+    assert res.a_dyn == pytest.approx(res.collapse_multiplier * 2.0)
+    # the hunt tried C0·1.1^k up to the first collapse
+    hunt = [c for c in model.calls if c <= 3.3 * c0]
+    assert hunt[:3] == pytest.approx([c0, 1.1 * c0, 1.21 * c0])
+
+
+def test_first_collapse_not_a_later_one():
+    """A wall that falls in a band and 'survives' above it: the first collapse counts."""
+    c0 = Wall(thickness=0.4, height=3.0, unit_weight=18e3).a_rm / 2.0
+    model = StubModel([(2.0 * c0, 2.2 * c0), (5.0 * c0, np.inf)])
+    res = ida(model, ACC, 0.01, IdaSettings())
+    assert 2.0 * c0 <= res.collapse_multiplier <= 2.0 * c0 * 1.0051
+
+
+def test_no_collapse_up_to_cmax():
+    model = StubModel([])
+    res = ida(model, ACC, 0.01, IdaSettings(max_multiplier=10.0))
+    assert res.collapse_multiplier is None and res.q is None and res.a_dyn is None
+    assert max(model.calls) <= 10.0 * res.c0 * (1 + 1e-9)
+
+
+def test_batch_is_deterministic_and_ordered():
+    wall = Wall(thickness=0.4, height=3.0, unit_weight=18e3)
+    recs = [synthetic_record(seed, duration=6.0) for seed in range(4)]
+    tasks = [
+        IdaTask(RockingModel(wall, mech), r, 0.01)
+        for mech in ("one-sided", "two-sided")
+        for r in recs
+    ]
+    seen = []
+    serial = run_batch(tasks, jobs=1, progress=lambda d, n: seen.append((d, n)))
+    parallel = run_batch(tasks, jobs=2)
+    assert [r.collapse_multiplier for r in serial] == [r.collapse_multiplier for r in parallel]
+    assert seen[-1] == (len(tasks), len(tasks))
+    direct = ida(tasks[5].model, tasks[5].acc, 0.01)
+    assert serial[5].collapse_multiplier == direct.collapse_multiplier
+
+
+def test_batch_cancel():
+    wall = Wall(thickness=0.4, height=3.0, unit_weight=18e3)
+    tasks = [
+        IdaTask(RockingModel(wall, "one-sided"), synthetic_record(s, 6.0), 0.01) for s in range(6)
+    ]
+    stop = threading.Event()
+    delivered = []
+
+    def on_result(i, r):
+        delivered.append(i)
+        stop.set()
+
+    with pytest.raises(Cancelled):
+        run_batch(tasks, jobs=1, on_result=on_result, cancel=stop)
+    assert delivered == [0]
