@@ -1,7 +1,26 @@
-"""Reading accelerograms from files: PEER NGA ``.AT2`` and two-column (t, a) text.
+"""Reading accelerograms from files.
 
-Every malformed file raises :class:`RecordFormatError`, whose message is one line naming the
-file and the line.  Accelerations are converted to m/s².
+Formats (``format=``):
+
+* ``"at2"`` -- PEER NGA ``.AT2``: three free header lines, then on line 4 either
+  ``NPTS=  5590, DT=   .0050 SEC`` (new style, the two keys in either order) or the bare
+  numbers ``5590  .0050`` possibly followed by words such as ``NPTS, DT`` (old style); then the
+  samples, several a line.  Fixed-width fields run together (``-1.2E-03-4.5E-04``) are split.
+* ``"esm"`` -- ESM / ITACA ASCII: ``KEY: value`` header lines (``NDATA``,
+  ``SAMPLING_INTERVAL_S``, ``UNITS`` -- which overrides the ``units`` argument), then the
+  samples.
+* ``"two-column"`` -- time [s] and acceleration, leading non-numeric header lines (and ``#``
+  comments) skipped; the time step must be uniform within 1e-6 relative.  A first time
+  t0 != 0 is accepted: the record is taken to start at its first sample (t0 kept in ``meta``).
+* ``"one-column"`` -- one or more samples a line, leading non-numeric lines skipped; needs
+  ``dt``.
+* ``"auto"`` -- ``.at2`` extension -> at2; otherwise by content: ESM keys in the header ->
+  esm; a ``NPTS`` on line 4 -> at2; two numbers on the first data line -> two-column; one
+  number -> one-column.
+
+Units (``units=``): ``g``, ``m/s2`` (``m/s^2``), ``cm/s2`` (``cm/s^2``, ``gal``); the record is
+returned in m/s².  Every malformed file raises :class:`RecordFormatError`, whose ``str()`` is
+one line naming the file and, where it applies, the line.
 """
 
 from __future__ import annotations
@@ -15,7 +34,7 @@ import numpy as np
 from frp_assess.errors import InputError
 from frp_assess.motions.record import G, Record
 
-#: accepted unit names -> factor to m/s²
+#: accepted unit names (lower case, no blanks) -> factor to m/s²
 UNITS: dict[str, float] = {
     "g": G,
     "m/s2": 1.0,
@@ -24,101 +43,242 @@ UNITS: dict[str, float] = {
     "cm/s^2": 0.01,
     "gal": 0.01,
 }
-FORMATS = ("auto", "at2", "two-column")
+#: accepted values of ``format=``
+FORMATS: tuple[str, ...] = ("auto", "at2", "esm", "two-column", "one-column")
 
-_NPTS_DT = re.compile(r"NPTS\s*=\s*([0-9]+)\s*,?\s*DT\s*=\s*([0-9.eE+-]+)", re.IGNORECASE)
+_NUMBER = r"[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eEdD][-+]?[0-9]+)?"
+_NUMBER_RE = re.compile(_NUMBER)
+_NPTS_RE = re.compile(r"NPTS\s*=\s*(" + _NUMBER + ")", re.IGNORECASE)
+_DT_RE = re.compile(r"\bDT\s*=\s*(" + _NUMBER + ")", re.IGNORECASE)
+_ESM_KEY_RE = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*)\s*:\s*(.*?)\s*$")
+_ESM_MARKERS = ("NDATA", "SAMPLING_INTERVAL_S", "EVENT_NAME", "NETWORK", "STATION_CODE")
+
+#: relative tolerance on the uniformity of the time column of a two-column file
+TIME_TOLERANCE = 1e-6
 
 
 class RecordFormatError(InputError):
-    """A record file that cannot be read as asked."""
+    """A record file that cannot be read as asked (one line: ``file:line: message``)."""
 
 
 def unit_factor(units: str) -> float:
-    """Factor from ``units`` to m/s²."""
-    key = units.strip().lower().replace(" ", "")
+    """Factor [m/s² per unit] from an acceleration unit name (see :data:`UNITS`)."""
+    key = str(units).strip().lower().replace(" ", "")
     if key not in UNITS:
-        raise InputError(f"unknown acceleration units {units!r}; expected one of g, m/s2, cm/s2")
+        raise InputError(
+            f"unknown acceleration units {units!r}; expected g, m/s2 or cm/s2 (or m/s^2, "
+            "cm/s^2, gal)",
+            key="units",
+        )
     return UNITS[key]
 
 
-def _floats(tokens: list[str], path: Path, lineno: int) -> list[float]:
-    out = []
-    for tok in tokens:
-        try:
-            value = float(tok)
-        except ValueError:
-            raise RecordFormatError(
-                f"expected a number, found {tok!r}", file=str(path), line=lineno
-            ) from None
-        if not math.isfinite(value):
-            raise RecordFormatError(f"value {tok!r} is not finite", file=str(path), line=lineno)
-        out.append(value)
-    return out
+# --- low-level helpers ------------------------------------------------------------------------
 
 
 def _read_lines(path: Path) -> list[str]:
     try:
-        return path.read_text(encoding="utf-8", errors="replace").splitlines()
+        raw = path.read_bytes()
     except FileNotFoundError:
         raise RecordFormatError("record file not found", file=str(path)) from None
+    except IsADirectoryError:
+        raise RecordFormatError("is a directory, not a record file", file=str(path)) from None
     except OSError as exc:
         raise RecordFormatError(
-            f"cannot read record file ({exc.strerror})", file=str(path)
+            f"cannot read record file ({exc.strerror or exc})", file=str(path)
         ) from None
+    if b"\x00" in raw[:4096]:
+        raise RecordFormatError("not a text file (binary content)", file=str(path))
+    return raw.decode("utf-8", errors="replace").splitlines()
 
 
-def read_at2(path: Path, *, units: str = "g", name: str | None = None) -> Record:
-    """PEER NGA ``.AT2``: 3 free header lines, then ``NPTS= n, DT= dt`` (new style) or the
-    numbers ``n dt`` first on line 4 (old style), then the samples in g (5 a line)."""
+def _to_float(token: str) -> float:
+    return float(token.replace("D", "E").replace("d", "e"))
+
+
+def _floats(tokens: list[str], path: Path, lineno: int) -> list[float]:
+    """Parse tokens as finite numbers; run-together fixed-width fields are split."""
+    out: list[float] = []
+    for tok in tokens:
+        try:
+            values = [_to_float(tok)]
+        except ValueError:
+            parts = _NUMBER_RE.findall(tok)
+            if len(parts) < 2 or "".join(parts) != tok:
+                raise RecordFormatError(
+                    f"expected a number, found {tok!r}", file=str(path), line=lineno
+                ) from None
+            values = [_to_float(p) for p in parts]
+        for value in values:
+            if not math.isfinite(value):
+                raise RecordFormatError(f"value {tok!r} is not finite", file=str(path), line=lineno)
+        out.extend(values)
+    return out
+
+
+def _is_numeric_line(text: str) -> bool:
+    tokens = text.replace(",", " ").split()
+    if not tokens:
+        return False
+    try:
+        for tok in tokens:
+            _to_float(tok)
+    except ValueError:
+        return False
+    return True
+
+
+def _check_dt(dt: float, path: Path, line: int | None) -> float:
+    if not (math.isfinite(dt) and dt > 0.0):
+        raise RecordFormatError(f"time step must be > 0, found {dt}", file=str(path), line=line)
+    return dt
+
+
+# --- the formats -----------------------------------------------------------------------------
+
+
+def _at2_header(header: str, path: Path) -> tuple[int, float]:
+    npts_m, dt_m = _NPTS_RE.search(header), _DT_RE.search(header)
+    if npts_m and dt_m:
+        npts_f, dt = _to_float(npts_m.group(1)), _to_float(dt_m.group(1))
+    else:
+        nums = _NUMBER_RE.findall(header)
+        if len(nums) < 2:
+            raise RecordFormatError(
+                "expected 'NPTS= n, DT= dt' or the numbers 'n dt' on the 4th line",
+                file=str(path),
+                line=4,
+            )
+        first, second = _to_float(nums[0]), _to_float(nums[1])
+        upper = header.upper()
+        dt_first = "DT" in upper and "NPTS" in upper and upper.index("DT") < upper.index("NPTS")
+        npts_f, dt = (second, first) if dt_first else (first, second)
+    if npts_f != int(npts_f) or npts_f < 0:
+        raise RecordFormatError(
+            f"NPTS must be a whole number, found {npts_f:g}", file=str(path), line=4
+        )
+    return int(npts_f), _check_dt(dt, path, 4)
+
+
+def read_at2(path: str | Path, *, units: str = "g", name: str | None = None) -> Record:
+    """PEER NGA ``.AT2`` (new- or old-style line 4, see the module docstring).
+
+    Args:
+        path: the file.
+        units: units of the samples (PEER files are in g).
+        name: record name; default the file stem.
+    """
+    path = Path(path)
+    factor = unit_factor(units)
     lines = _read_lines(path)
-    if len(lines) < 5:
+    if len(lines) < 4:
         raise RecordFormatError(
             "too short for a PEER .AT2 file (needs 4 header lines)", file=str(path)
         )
-    header = lines[3]
-    m = _NPTS_DT.search(header)
-    if m:
-        npts, dt = int(m.group(1)), float(m.group(2))
-    else:
-        nums = re.findall(r"[-+]?[0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?", header)
-        if len(nums) < 2:
-            raise RecordFormatError(
-                "expected 'NPTS= n, DT= dt' or 'n dt' on the 4th line", file=str(path), line=4
-            )
-        npts, dt = int(float(nums[0])), float(nums[1])
-    if not (dt > 0 and math.isfinite(dt)):
-        raise RecordFormatError(f"DT must be > 0, found {dt}", file=str(path), line=4)
+    npts, dt = _at2_header(lines[3], path)
     values: list[float] = []
     for k, line in enumerate(lines[4:], start=5):
         if line.strip():
-            values.extend(_floats(line.split(), path, k))
+            values.extend(_floats(line.replace(",", " ").split(), path, k))
     if len(values) != npts:
         raise RecordFormatError(
             f"header says NPTS={npts} but the file holds {len(values)} values",
             file=str(path),
             line=4,
         )
-    return _make(path, name, dt, np.asarray(values) * unit_factor(units), "PEER AT2")
+    return _make(path, name, dt, np.asarray(values) * factor, "PEER AT2", {"units": units})
 
 
-def read_two_column(path: Path, *, units: str = "g", name: str | None = None) -> Record:
-    """Two columns (time [s], acceleration); leading header lines that are not numbers are
-    skipped; the time step must be uniform."""
+def read_esm(path: str | Path, *, units: str = "g", name: str | None = None) -> Record:
+    """ESM / ITACA ASCII: ``KEY: value`` header then the samples.
+
+    ``SAMPLING_INTERVAL_S`` [s] is required; ``NDATA``, if present, must match the number of
+    samples; ``UNITS`` (e.g. ``cm/s^2``), if present, overrides ``units``.
+    """
+    path = Path(path)
     lines = _read_lines(path)
-    t: list[float] = []
-    a: list[float] = []
-    started = False
+    header: dict[str, tuple[str, int]] = {}
+    start = len(lines)
+    for k, line in enumerate(lines, start=1):
+        text = line.strip()
+        if not text:
+            continue
+        m = _ESM_KEY_RE.match(text)
+        if m and not _is_numeric_line(text):
+            header[m.group(1).upper()] = (m.group(2), k)
+            continue
+        start = k - 1
+        break
+    if "SAMPLING_INTERVAL_S" not in header:
+        raise RecordFormatError("ESM header lacks SAMPLING_INTERVAL_S", file=str(path))
+    dt_text, dt_line = header["SAMPLING_INTERVAL_S"]
+    try:
+        dt = _to_float(dt_text)
+    except ValueError:
+        raise RecordFormatError(
+            f"SAMPLING_INTERVAL_S is not a number: {dt_text!r}", file=str(path), line=dt_line
+        ) from None
+    _check_dt(dt, path, dt_line)
+    used_units = units
+    if "UNITS" in header and header["UNITS"][0]:
+        used_units, unit_line = header["UNITS"]
+        try:
+            unit_factor(used_units)
+        except InputError:
+            raise RecordFormatError(
+                f"unknown UNITS {used_units!r}", file=str(path), line=unit_line
+            ) from None
+    values: list[float] = []
+    for k, line in enumerate(lines[start:], start=start + 1):
+        if line.strip():
+            values.extend(_floats(line.replace(",", " ").split(), path, k))
+    if "NDATA" in header:
+        nd_text, nd_line = header["NDATA"]
+        try:
+            ndata = int(nd_text)
+        except ValueError:
+            raise RecordFormatError(
+                f"NDATA is not a whole number: {nd_text!r}", file=str(path), line=nd_line
+            ) from None
+        if ndata != len(values):
+            raise RecordFormatError(
+                f"header says NDATA={ndata} but the file holds {len(values)} values",
+                file=str(path),
+                line=nd_line,
+            )
+    meta = {"units": used_units}
+    for key in ("EVENT_NAME", "EVENT_ID", "STATION_CODE", "STREAM"):
+        if header.get(key, ("", 0))[0]:
+            meta[key.lower()] = header[key][0]
+    acc = np.asarray(values) * unit_factor(used_units)
+    return _make(path, name, dt, acc, "ESM ASCII", meta)
+
+
+def _data_rows(lines: list[str], path: Path) -> tuple[list[tuple[int, list[str]]], int | None]:
+    """Rows of tokens after the leading non-numeric header lines (comments ``#`` skipped)."""
+    rows: list[tuple[int, list[str]]] = []
+    first: int | None = None
     for k, line in enumerate(lines, start=1):
         text = line.strip()
         if not text or text.startswith("#"):
             continue
-        tokens = text.replace(",", " ").split()
-        if not started:
-            try:
-                [float(x) for x in tokens]
-            except ValueError:
+        if first is None:
+            if not _is_numeric_line(text):
                 continue  # a header line
-            started = True
+            first = k
+        rows.append((k, text.replace(",", " ").split()))
+    return rows, first
+
+
+def read_two_column(path: str | Path, *, units: str = "g", name: str | None = None) -> Record:
+    """Two columns: time [s], acceleration; uniform time step (1e-6 relative)."""
+    path = Path(path)
+    factor = unit_factor(units)
+    rows, _ = _data_rows(_read_lines(path), path)
+    t: list[float] = []
+    a: list[float] = []
+    lines_of: list[int] = []
+    for k, tokens in rows:
         if len(tokens) != 2:
             raise RecordFormatError(
                 f"expected 2 columns (time, acceleration), found {len(tokens)}",
@@ -127,43 +287,116 @@ def read_two_column(path: Path, *, units: str = "g", name: str | None = None) ->
             )
         tt, aa = _floats(tokens, path, k)
         if t and not tt > t[-1]:
-            raise RecordFormatError(f"time {tt} does not increase", file=str(path), line=k)
+            raise RecordFormatError(f"time {tt:g} does not increase", file=str(path), line=k)
         t.append(tt)
         a.append(aa)
+        lines_of.append(k)
     if len(t) < 2:
         raise RecordFormatError("the record is empty (fewer than 2 samples)", file=str(path))
     time = np.asarray(t)
+    dt = (time[-1] - time[0]) / (time.size - 1)
     steps = np.diff(time)
-    dt = float(np.mean(steps))
-    bad = np.nonzero(np.abs(steps - dt) > 1e-6 * max(dt, 1e-12) + 1e-9)[0]
+    bad = np.nonzero(np.abs(steps - steps[0]) > TIME_TOLERANCE * steps[0])[0]
     if bad.size:
+        i = int(bad[0])
         raise RecordFormatError(
-            f"non-uniform time step ({steps[bad[0]]:.6g} s vs {dt:.6g} s)", file=str(path)
+            f"non-uniform time step ({steps[i]:.6g} s where the first is {steps[0]:.6g} s)",
+            file=str(path),
+            line=lines_of[i + 1],
         )
-    if abs(time[0]) > 1e-9:
-        raise RecordFormatError(f"the first time must be 0, found {time[0]}", file=str(path))
-    return _make(path, name, dt, np.asarray(a) * unit_factor(units), "two-column")
+    meta = {"units": units}
+    if time[0] != 0.0:
+        meta["t0_s"] = f"{time[0]:g}"
+    return _make(path, name, float(dt), np.asarray(a) * factor, "two-column", meta)
+
+
+def read_one_column(
+    path: str | Path, *, dt: float | None, units: str = "g", name: str | None = None
+) -> Record:
+    """Samples only (one or more a line, leading non-numeric lines skipped), step ``dt`` [s]."""
+    path = Path(path)
+    factor = unit_factor(units)
+    if dt is None:
+        raise InputError("a one-column record needs its time step (dt)", file=str(path), key="dt")
+    if not (math.isfinite(dt) and dt > 0):
+        raise InputError(f"dt must be > 0, got {dt}", key="dt")
+    rows, _ = _data_rows(_read_lines(path), path)
+    values: list[float] = []
+    for k, tokens in rows:
+        values.extend(_floats(tokens, path, k))
+    return _make(path, name, float(dt), np.asarray(values) * factor, "one-column", {"units": units})
+
+
+def detect_format(path: str | Path) -> str:
+    """The format ``"auto"`` resolves to (see the module docstring)."""
+    path = Path(path)
+    if path.suffix.lower() == ".at2":
+        return "at2"
+    lines = _read_lines(path)
+    head = lines[:80]
+    keys = {m.group(1).upper() for line in head if (m := _ESM_KEY_RE.match(line))}
+    if keys & set(_ESM_MARKERS):
+        return "esm"
+    if len(lines) >= 4 and _NPTS_RE.search(lines[3]):
+        return "at2"
+    for line in lines:
+        text = line.strip()
+        if text and not text.startswith("#") and _is_numeric_line(text):
+            return "two-column" if len(text.replace(",", " ").split()) == 2 else "one-column"
+    raise RecordFormatError("cannot tell the record format (no numeric data found)", file=str(path))
 
 
 def read_record(
-    path: str | Path, *, format: str = "auto", units: str = "g", name: str | None = None
+    path: str | Path,
+    *,
+    format: str = "auto",
+    units: str = "g",
+    dt: float | None = None,
+    name: str | None = None,
 ) -> Record:
-    """Read one accelerogram; ``format``: ``auto`` (by extension), ``at2``, ``two-column``."""
+    """Read one accelerogram [returns m/s²].
+
+    Args:
+        path: the record file.
+        format: ``auto``, ``at2``, ``esm``, ``two-column`` or ``one-column``.
+        units: units of the file's samples (``g``, ``m/s2``, ``cm/s2``); an ESM ``UNITS``
+            header line overrides it.
+        dt: time step [s]; required for ``one-column``; for the other formats, if given, it
+            must agree (1e-6 relative) with the file's own.
+        name: record name; default the file stem.
+    """
     path = Path(path)
-    fmt = format.lower()
+    fmt = str(format).strip().lower()
     if fmt not in FORMATS:
-        raise InputError(f"unknown record format {format!r}; expected one of {', '.join(FORMATS)}")
-    if fmt == "auto":
-        fmt = "at2" if path.suffix.lower() == ".at2" else "two-column"
+        raise InputError(
+            f"unknown record format {format!r}; expected one of {', '.join(FORMATS)}",
+            key="format",
+        )
     unit_factor(units)  # validate early
-    if fmt == "at2":
-        return read_at2(path, units=units, name=name)
-    return read_two_column(path, units=units, name=name)
+    if fmt == "auto":
+        fmt = detect_format(path)
+    if fmt == "one-column":
+        return read_one_column(path, dt=dt, units=units, name=name)
+    reader = {"at2": read_at2, "esm": read_esm, "two-column": read_two_column}[fmt]
+    record = reader(path, units=units, name=name)
+    if dt is not None and abs(record.dt - dt) > TIME_TOLERANCE * record.dt:
+        raise RecordFormatError(
+            f"the file's time step {record.dt:g} s differs from the given dt = {dt:g} s",
+            file=str(path),
+        )
+    return record
 
 
-def _make(path: Path, name: str | None, dt: float, acc: np.ndarray, kind: str) -> Record:
+def _make(
+    path: Path, name: str | None, dt: float, acc: np.ndarray, kind: str, meta: dict[str, str]
+) -> Record:
     if acc.size < 2:
         raise RecordFormatError("the record is empty (fewer than 2 samples)", file=str(path))
+    if not np.all(np.isfinite(acc)):
+        raise RecordFormatError("the record holds non-finite values", file=str(path))
     if not np.any(acc):
         raise RecordFormatError("the record holds only zeros", file=str(path))
-    return Record(name=name or path.stem, dt=dt, acc=acc, source=f"{kind} file {path.name}")
+    meta = {"format": kind, **meta}
+    return Record(
+        name=name or path.stem, dt=dt, acc=acc, source=f"{kind} file {path.name}", meta=meta
+    )

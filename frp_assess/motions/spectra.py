@@ -1,21 +1,27 @@
-"""Elastic acceleration response spectra of the codes (horizontal component).
+"""Horizontal elastic acceleration response spectra of the codes, and the paper's presets.
 
-Each clause is a small function citing it; :class:`ElasticSpectrum` is the one object the
-rest of the package uses.  Periods in s, accelerations in g.
+Each clause is a small pure function citing it; :class:`ElasticSpectrum` is the one object the
+rest of the package (generator, compliance check, CLI, reports) uses.  Periods are in s,
+spectral accelerations and a_g in g, damping ratios as fractions (0.05 for 5 %).
+
+References:
+    EN 1998-1:2004 (Eurocode 8), §3.2.2.2, Eqs. (3.2)-(3.6), Tables 3.2 and 3.3.
+    NTC 2018 (D.M. 17/01/2018), §3.2.3.2.1, Eqs. (3.2.2)-(3.2.8), Tabs. 3.2.IV and 3.2.V.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from frp_assess.errors import InputError
+
 # --- EN 1998-1:2004 §3.2.2.2 ----------------------------------------------------------------
 
-#: Table 3.2 (Type 1) and Table 3.3 (Type 2): ground type -> (S, T_B, T_C, T_D) [-, s, s, s]
+#: EN 1998-1 Table 3.2 (type 1) and Table 3.3 (type 2): ground -> (S [-], T_B, T_C, T_D [s])
 EC8_TABLE: dict[int, dict[str, tuple[float, float, float, float]]] = {
     1: {
         "A": (1.00, 0.15, 0.40, 2.0),
@@ -33,80 +39,137 @@ EC8_TABLE: dict[int, dict[str, tuple[float, float, float, float]]] = {
     },
 }
 
+#: EN 1998-1 Eqs. (3.2)-(3.5): the plateau is 2.5·η·a_g·S
+EC8_PLATEAU = 2.5
 
-def eta(damping: float) -> float:
-    """Damping correction η = √(10/(5 + ξ)) ≥ 0.55, ξ in % (EN 1998-1 Eq. 3.6; NTC 2018 Eq. 3.2.4).
+
+def damping_correction(damping: float) -> float:
+    """Damping correction factor η = √(10 / (5 + ξ)) ≥ 0.55 with ξ in percent [-].
+
+    EN 1998-1 §3.2.2.2(3), Eq. (3.6); NTC 2018 §3.2.3.2.1, Eq. (3.2.4).
 
     Args:
-        damping: viscous damping ratio ξ [-] (0.05 for 5 %).
+        damping: viscous damping ratio ξ [-] (0.05 for 5 %, giving η = 1).
     """
+    if not (math.isfinite(damping) and 0.0 <= damping < 1.0):
+        raise InputError(f"damping ratio must be in [0, 1), got {damping!r}", key="damping")
     return max(math.sqrt(10.0 / (5.0 + 100.0 * damping)), 0.55)
 
 
 def ec8_shape(
-    periods: NDArray[np.float64],
+    periods: ArrayLike,
     ag_s: float,
     t_b: float,
     t_c: float,
     t_d: float,
-    eta_: float,
-    plateau_factor: float = 2.5,
+    eta: float,
+    plateau_factor: float = EC8_PLATEAU,
 ) -> NDArray[np.float64]:
-    """EN 1998-1 Eqs. 3.2–3.5: Se(T) [units of ag_s] from a_g·S, the corner periods [s], η."""
+    """The four-branch elastic shape Se(T) [units of ``ag_s``], EN 1998-1 Eqs. (3.2)-(3.5).
+
+    With ``plateau_factor`` = F0 it is also NTC 2018 Eqs. (3.2.2) (the NTC shape).
+
+    Args:
+        periods: natural periods T ≥ 0 [s].
+        ag_s: zero-period value a_g·S (NTC: a_g·S·... with S = S_S·S_T).
+        t_b, t_c, t_d: corner periods [s], 0 < T_B < T_C < T_D.
+        eta: damping correction η [-].
+        plateau_factor: plateau amplification (2.5 in EC8, F0 in NTC) [-].
+    """
     T = np.asarray(periods, dtype=float)
-    top = ag_s * eta_ * plateau_factor
-    out = np.where(
+    top = ag_s * eta * plateau_factor
+    safe = np.maximum(T, 1e-12)
+    return np.where(
         T <= t_b,
-        ag_s * (1.0 + T / t_b * (eta_ * plateau_factor - 1.0)),
-        np.where(
-            T <= t_c,
-            top,
-            np.where(
-                T <= t_d,
-                top * t_c / np.maximum(T, 1e-12),
-                top * t_c * t_d / np.maximum(T, 1e-12) ** 2,
-            ),
-        ),
+        ag_s * (1.0 + T / t_b * (eta * plateau_factor - 1.0)),
+        np.where(T <= t_c, top, np.where(T <= t_d, top * t_c / safe, top * t_c * t_d / safe**2)),
     )
-    return out
+
+
+def ec8_parameters(ground: str, spectrum_type: int = 1) -> tuple[float, float, float, float]:
+    """(S [-], T_B, T_C, T_D [s]) of EN 1998-1 Table 3.2 (type 1) or Table 3.3 (type 2)."""
+    if spectrum_type not in EC8_TABLE:
+        raise InputError(
+            f"EC8 spectrum type must be 1 or 2, got {spectrum_type!r}", key="spectrum_type"
+        )
+    key = str(ground).strip().upper()
+    if key not in EC8_TABLE[spectrum_type]:
+        raise InputError(f"EC8 ground type must be one of A-E, got {ground!r}", key="ground")
+    return EC8_TABLE[spectrum_type][key]
 
 
 # --- NTC 2018 §3.2.3.2.1 ----------------------------------------------------------------------
 
+#: NTC 2018 Tab. 3.2.IV, S_S = a − b·F0·a_g/g bounded to [lo, hi]: soil -> (a, b, lo, hi)
+NTC_SS_TABLE: dict[str, tuple[float, float, float, float]] = {
+    "A": (1.00, 0.00, 1.00, 1.00),
+    "B": (1.40, 0.40, 1.00, 1.20),
+    "C": (1.70, 0.60, 1.00, 1.50),
+    "D": (2.40, 1.50, 0.90, 1.80),
+    "E": (2.00, 1.10, 1.00, 1.60),
+}
 
-def ntc_ss(soil: str, ag: float, F0: float) -> float:  # noqa: N803 - the code's symbols
-    """Stratigraphic amplification S_S (NTC 2018 Tab. 3.2.IV), with its bounds; a_g in g."""
-    x = F0 * ag
-    rules = {
-        "A": (1.0, 1.0, 1.0),
-        "B": (1.40 - 0.40 * x, 1.00, 1.20),
-        "C": (1.70 - 0.60 * x, 1.00, 1.50),
-        "D": (2.40 - 1.50 * x, 0.90, 1.80),
-        "E": (2.00 - 1.10 * x, 1.00, 1.60),
-    }
-    value, lo, hi = rules[soil]
-    return min(max(value, lo), hi)
+#: NTC 2018 Tab. 3.2.IV, C_C = c·(T_C*)^e: soil -> (c, e)
+NTC_CC_TABLE: dict[str, tuple[float, float]] = {
+    "A": (1.00, 0.00),
+    "B": (1.10, -0.20),
+    "C": (1.05, -0.33),
+    "D": (1.25, -0.50),
+    "E": (1.15, -0.40),
+}
 
-
-def ntc_cc(soil: str, tc_star: float) -> float:
-    """Coefficient C_C of T_C = C_C·T_C* (NTC 2018 Tab. 3.2.IV); T_C* in s."""
-    coef = {
-        "A": (1.0, 0.0),
-        "B": (1.10, -0.20),
-        "C": (1.05, -0.33),
-        "D": (1.25, -0.50),
-        "E": (1.15, -0.40),
-    }
-    a, b = coef[soil]
-    return a * tc_star**b
-
-
-#: Topographic amplification S_T (NTC 2018 Tab. 3.2.V, maximum values)
+#: NTC 2018 Tab. 3.2.V, topographic amplification S_T (the values at the top of the relief;
+#: the code lets S_T decrease linearly to 1 at its base -- not modelled here)
 NTC_ST: dict[str, float] = {"T1": 1.0, "T2": 1.2, "T3": 1.2, "T4": 1.4}
 
 
+def _ntc_soil(soil: str) -> str:
+    key = str(soil).strip().upper()
+    if key not in NTC_SS_TABLE:
+        raise InputError(f"NTC soil category must be one of A-E, got {soil!r}", key="soil")
+    return key
+
+
+def ntc_ss(soil: str, ag: float, F0: float) -> float:  # noqa: N803 - the code's symbols
+    """Stratigraphic amplification S_S [-] with its bounds, NTC 2018 Tab. 3.2.IV.
+
+    Args:
+        soil: subsoil category A-E.
+        ag: site peak acceleration on rock a_g/g [g].
+        F0: maximum amplification of the spectrum [-].
+    """
+    a, b, lo, hi = NTC_SS_TABLE[_ntc_soil(soil)]
+    return min(max(a - b * F0 * ag, lo), hi)
+
+
+def ntc_cc(soil: str, tc_star: float) -> float:
+    """Coefficient C_C [-] of T_C = C_C·T_C*, NTC 2018 Tab. 3.2.IV; T_C* in s."""
+    c, e = NTC_CC_TABLE[_ntc_soil(soil)]
+    return c * tc_star**e
+
+
+def ntc_st(topography: str) -> float:
+    """Topographic amplification S_T [-], NTC 2018 Tab. 3.2.V (T1 1.0, T2 1.2, T3 1.2, T4 1.4)."""
+    key = str(topography).strip().upper()
+    if key not in NTC_ST:
+        raise InputError(
+            f"NTC topographic category must be one of T1-T4, got {topography!r}",
+            key="topography",
+        )
+    return NTC_ST[key]
+
+
+def ntc_corner_periods(soil: str, tc_star: float, ag: float) -> tuple[float, float, float]:
+    """(T_B, T_C, T_D) [s], NTC 2018 Eqs. (3.2.5)-(3.2.7).
+
+    T_C = C_C·T_C*, T_B = T_C/3, T_D = 4·a_g/g + 1.6 (a_g in g).
+    """
+    t_c = ntc_cc(soil, tc_star) * tc_star
+    return t_c / 3.0, t_c, ntc_td(ag)
+
+
 def ntc_td(ag: float) -> float:
-    """T_D = 4·a_g/g + 1.6 [s] (NTC 2018 Eq. 3.2.6), a_g in g."""
+    """T_D = 4·a_g/g + 1.6 [s], NTC 2018 Eq. (3.2.7); a_g in g."""
     return 4.0 * ag + 1.6
 
 
@@ -115,142 +178,199 @@ def ntc_td(ag: float) -> float:
 
 @dataclass(frozen=True)
 class ElasticSpectrum:
-    """A target elastic spectrum: ``sa(T)`` in g for periods T in s."""
+    """A target horizontal elastic spectrum: :meth:`sa` gives Se(T) [g] for T [s].
+
+    Attributes:
+        name: short label (``"A2"``, ``"EC8 type 1 ground B, ag=0.25g"``...).
+        kind: ``"ec8"``, ``"ntc2018"``, ``"table"`` or ``"preset"``.
+        pga_g: zero-period value a_g·S [g] (what the mean PGA of a record set must reach).
+        T_B, T_C, T_D: corner periods [s] (None for a table).
+        parameters: the inputs and derived coefficients (S, η, S_S, C_C...), for reports.
+        description: one line citing the clause and the values used.
+        eta: damping correction η [-] applied to the shape.
+        plateau_factor: 2.5 (EC8, presets) or F0 (NTC) [-].
+        table: for ``kind == "table"``, the points ((T...), (Se...)).
+    """
 
     name: str
-    kind: str  #: "ec8" | "ntc2018" | "table" | "preset"
-    pga_g: float  #: zero-period value a_g·S [g]
-    T_B: float | None  # noqa: N815
+    kind: str
+    pga_g: float
+    T_B: float | None  # noqa: N815 - the codes' symbols
     T_C: float | None  # noqa: N815
     T_D: float | None  # noqa: N815
-    parameters: dict[str, object] = field(default_factory=dict)
+    parameters: dict[str, object] = field(default_factory=dict, compare=False)
     description: str = ""
-    _fn: Callable[[NDArray[np.float64]], NDArray[np.float64]] | None = field(
-        default=None, repr=False, compare=False
-    )
+    eta: float = 1.0
+    plateau_factor: float = EC8_PLATEAU
+    table: tuple[tuple[float, ...], tuple[float, ...]] | None = None
 
     def sa(self, periods: ArrayLike) -> NDArray[np.float64]:
-        """Spectral pseudo-acceleration Se(T) [g]."""
-        assert self._fn is not None
-        return self._fn(np.asarray(periods, dtype=float))
+        """Spectral pseudo-acceleration Se(T) [g], vectorised over the periods T [s]."""
+        T = np.asarray(periods, dtype=float)
+        if self.table is not None:
+            return np.interp(T, np.asarray(self.table[0]), np.asarray(self.table[1]))
+        assert self.T_B is not None and self.T_C is not None and self.T_D is not None
+        return ec8_shape(T, self.pga_g, self.T_B, self.T_C, self.T_D, self.eta, self.plateau_factor)
+
+    @property
+    def plateau_g(self) -> float:
+        """The largest spectral value [g] (the plateau for the code shapes)."""
+        if self.table is not None:
+            return float(max(self.table[1]))
+        return self.pga_g * self.eta * self.plateau_factor
+
+
+def _positive(value: float, key: str) -> float:
+    if not (math.isfinite(value) and value > 0.0):
+        raise InputError(f"{key} must be a positive number, got {value!r}", key=key)
+    return float(value)
 
 
 def ec8_spectrum(
     ag: float, ground: str, spectrum_type: int = 1, damping: float = 0.05
 ) -> ElasticSpectrum:
-    """EN 1998-1 §3.2.2.2 horizontal elastic spectrum; a_g [g] is the design ground
-    acceleration on type A ground (γ_I already applied)."""
-    if spectrum_type not in EC8_TABLE:
-        raise ValueError(f"EC8 spectrum type must be 1 or 2, got {spectrum_type!r}")
-    if ground not in EC8_TABLE[spectrum_type]:
-        raise ValueError(f"EC8 ground type must be one of A-E, got {ground!r}")
-    S, tb, tc, td = EC8_TABLE[spectrum_type][ground]
-    e = eta(damping)
+    """EN 1998-1 §3.2.2.2 horizontal elastic spectrum (Eqs. 3.2-3.5, Tables 3.2/3.3).
+
+    Args:
+        ag: design ground acceleration on type A ground a_g [g] (γ_I already applied).
+        ground: ground type A-E.
+        spectrum_type: 1 (M_s > 5.5) or 2.
+        damping: viscous damping ratio [-] (η from Eq. 3.6).
+    """
+    ag = _positive(ag, "ag")
+    S, t_b, t_c, t_d = ec8_parameters(ground, spectrum_type)
+    g = str(ground).strip().upper()
+    eta = damping_correction(damping)
     return ElasticSpectrum(
-        name=f"EC8 type {spectrum_type} ground {ground} ag={ag:g}g",
+        name=f"EC8 type {spectrum_type} ground {g}, ag={ag:g}g",
         kind="ec8",
         pga_g=ag * S,
-        T_B=tb,
-        T_C=tc,
-        T_D=td,
+        T_B=t_b,
+        T_C=t_c,
+        T_D=t_d,
         parameters={
             "ag": ag,
-            "ground": ground,
+            "ground": g,
             "spectrum_type": spectrum_type,
             "damping": damping,
             "S": S,
+            "eta": eta,
         },
-        description=f"EN 1998-1 §3.2.2.2, type {spectrum_type}, ground {ground}, "
-        f"a_g = {ag:g} g, S = {S:g}",
-        _fn=lambda T: ec8_shape(T, ag * S, tb, tc, td, e),
+        description=f"EN 1998-1 §3.2.2.2, type {spectrum_type}, ground {g}: a_g = {ag:g} g, "
+        f"S = {S:g}, T_B/T_C/T_D = {t_b:g}/{t_c:g}/{t_d:g} s, η = {eta:.3f}",
+        eta=eta,
     )
 
 
 def ntc2018_spectrum(
     ag: float,
-    F0: float,
-    Tc_star: float,
+    F0: float,  # noqa: N803 - the code's symbols
+    Tc_star: float,  # noqa: N803
     soil: str,
     topography: str = "T1",
-    damping: float = 0.05,  # noqa: N803
+    damping: float = 0.05,
 ) -> ElasticSpectrum:
-    """NTC 2018 §3.2.3.2.1 horizontal elastic spectrum from the site's a_g [g], F0 [-], T_C* [s]."""
-    if soil not in ("A", "B", "C", "D", "E"):
-        raise ValueError(f"NTC soil category must be one of A-E, got {soil!r}")
-    if topography not in NTC_ST:
-        raise ValueError(f"NTC topographic category must be one of T1-T4, got {topography!r}")
-    ss = ntc_ss(soil, ag, F0)
-    S = ss * NTC_ST[topography]
-    tc = ntc_cc(soil, Tc_star) * Tc_star
-    tb = tc / 3.0
-    td = ntc_td(ag)
-    e = eta(damping)
+    """NTC 2018 §3.2.3.2.1 horizontal elastic spectrum (Eqs. 3.2.2-3.2.7).
+
+    Args:
+        ag: site peak acceleration on rock a_g/g [g] (Allegato A of NTC 2008 / the INGV grid).
+        F0: maximum spectral amplification on rock [-].
+        Tc_star: T_C* [s], the start of the constant-velocity branch on rock.
+        soil: subsoil category A-E (S_S and C_C of Tab. 3.2.IV).
+        topography: T1-T4 (S_T of Tab. 3.2.V, the value at the top of the relief).
+        damping: viscous damping ratio [-] (η from Eq. 3.2.4).
+    """
+    ag = _positive(ag, "ag")
+    F0 = _positive(F0, "F0")
+    Tc_star = _positive(Tc_star, "Tc_star")
+    s = _ntc_soil(soil)
+    ss, st = ntc_ss(s, ag, F0), ntc_st(topography)
+    topo = str(topography).strip().upper()
+    t_b, t_c, t_d = ntc_corner_periods(s, Tc_star, ag)
+    eta = damping_correction(damping)
+    S = ss * st
     return ElasticSpectrum(
-        name=f"NTC 2018 ag={ag:g}g F0={F0:g} Tc*={Tc_star:g}s soil {soil} {topography}",
+        name=f"NTC 2018 ag={ag:g}g F0={F0:g} Tc*={Tc_star:g}s soil {s} {topo}",
         kind="ntc2018",
         pga_g=ag * S,
-        T_B=tb,
-        T_C=tc,
-        T_D=td,
+        T_B=t_b,
+        T_C=t_c,
+        T_D=t_d,
         parameters={
             "ag": ag,
             "F0": F0,
             "Tc_star": Tc_star,
-            "soil": soil,
-            "topography": topography,
+            "soil": s,
+            "topography": topo,
             "damping": damping,
             "S_S": ss,
-            "S_T": NTC_ST[topography],
+            "C_C": ntc_cc(s, Tc_star),
+            "S_T": st,
             "S": S,
+            "eta": eta,
         },
-        description=f"NTC 2018 §3.2.3.2.1, soil {soil}, {topography}: "
-        f"S = {S:.3f}, T_C = {tc:.4f} s",
-        _fn=lambda T: ec8_shape(T, ag * S, tb, tc, td, e, plateau_factor=F0),
+        description=f"NTC 2018 §3.2.3.2.1, soil {s}, {topo}: a_g = {ag:g} g, F0 = {F0:g}, "
+        f"S_S = {ss:.3f}, S_T = {st:g}, T_B/T_C/T_D = {t_b:.4f}/{t_c:.4f}/{t_d:.3f} s",
+        eta=eta,
+        plateau_factor=F0,
     )
 
 
-#: The paper's spectra (its Fig. 7): a_g·S = 0.106 g, (T_B, T_C) [s]; plateau 2.5·a_g·S and
-#: T_D = 2.0 s are assumptions (MODEL.md §6), as the paper does not state them.
+#: The paper's spectra: name -> (a_g·S [g], T_B [s], T_C [s]).  The plateau 2.5·a_g·S and
+#: T_D = 2.0 s are assumptions (MODEL.md §6): the paper does not state them.
 PRESETS: dict[str, tuple[float, float, float]] = {
     "A1": (0.106, 0.103, 0.309),
     "A2": (0.106, 0.146, 0.437),
     "A3": (0.106, 0.130, 0.391),
 }
+#: T_D [s] assumed for the presets
+PRESET_TD = 2.0
 
 
 def preset_spectrum(name: str) -> ElasticSpectrum:
-    """One of the paper's spectra A1, A2, A3 (EC8 shape, η = 1)."""
-    key = name.upper()
+    """One of the paper's spectra A1, A2, A3: EC8-shaped (Eqs. 3.2-3.5), 5 % damping (η = 1),
+    a_g·S = 0.106 g, plateau 2.5·a_g·S, T_D = 2.0 s."""
+    key = str(name).strip().upper()
     if key not in PRESETS:
-        raise ValueError(f"unknown spectrum preset {name!r}; expected one of {', '.join(PRESETS)}")
-    ags, tb, tc = PRESETS[key]
+        raise InputError(
+            f"unknown spectrum preset {name!r}; expected one of {', '.join(PRESETS)}",
+            key="spectrum",
+        )
+    ags, t_b, t_c = PRESETS[key]
     return ElasticSpectrum(
         name=key,
         kind="preset",
         pga_g=ags,
-        T_B=tb,
-        T_C=tc,
-        T_D=2.0,
-        parameters={"name": key},
-        description=f"paper spectrum {key}: a_g·S = {ags} g, T_B = {tb} s, T_C = {tc} s "
-        "(plateau 2.5·a_g·S and T_D = 2.0 s assumed)",
-        _fn=lambda T: ec8_shape(T, ags, tb, tc, 2.0, 1.0),
+        T_B=t_b,
+        T_C=t_c,
+        T_D=PRESET_TD,
+        parameters={"preset": key},
+        description=f"paper spectrum {key}: a_g·S = {ags} g, T_B = {t_b} s, T_C = {t_c} s "
+        f"(EC8 shape; plateau 2.5·a_g·S and T_D = {PRESET_TD} s assumed)",
     )
 
 
 def table_spectrum(
     periods: ArrayLike, accelerations: ArrayLike, name: str = "table"
 ) -> ElasticSpectrum:
-    """A user spectrum: points (T [s], Se [g]), linear in between, constant beyond the ends.
+    """A user spectrum from points (T [s], Se [g]).
 
-    Its zero-period value (a_g·S) is Se at the first point if that is at T = 0, else the
-    linear extrapolation is *not* attempted and the first value is used."""
+    Linear interpolation between the points; beyond the ends the end values are held constant
+    (no extrapolation: the user states where the spectrum ends).  The zero-period value
+    ``pga_g`` (a_g·S) is Se at the first point, which should therefore be at T = 0.
+    """
     T = np.asarray(periods, dtype=float)
     S = np.asarray(accelerations, dtype=float)
     if T.ndim != 1 or T.shape != S.shape or T.size < 2:
-        raise ValueError("a table spectrum needs two equal-length lists of at least 2 points")
+        raise InputError(
+            "a table spectrum needs two equal-length lists of at least 2 points", key="spectrum"
+        )
+    if not (np.all(np.isfinite(T)) and np.all(np.isfinite(S))):
+        raise InputError("table spectrum values must be finite numbers", key="spectrum")
     if np.any(np.diff(T) <= 0) or T[0] < 0 or np.any(S <= 0):
-        raise ValueError("table periods must increase from >= 0 and accelerations be > 0")
+        raise InputError(
+            "table periods must increase from T >= 0 and accelerations be > 0", key="spectrum"
+        )
     return ElasticSpectrum(
         name=name,
         kind="table",
@@ -259,6 +379,119 @@ def table_spectrum(
         T_C=None,
         T_D=None,
         parameters={"periods": T.tolist(), "accelerations": S.tolist()},
-        description=f"user table of {T.size} points, T = {T[0]:g}–{T[-1]:g} s",
-        _fn=lambda x: np.interp(x, T, S),
+        description=f"user table of {T.size} points, T = {T[0]:g}-{T[-1]:g} s "
+        "(linear between points, constant beyond the ends)",
+        table=(tuple(T.tolist()), tuple(S.tolist())),
+    )
+
+
+# --- the text form used by the CLI -------------------------------------------------------------
+
+SPECTRUM_HELP = (
+    "target spectrum: a preset of the paper (A1, A2, A3); "
+    "'ec8:type=1,ground=B,ag=0.25[,damping=0.05]' (EN 1998-1 §3.2.2.2, ag in g on rock); "
+    "'ntc:ag=0.261,F0=2.36,tc=0.347,soil=B[,topo=T1,damping=0.05]' (NTC 2018 §3.2.3.2.1, "
+    "tc = T_C* in s); or 'table:T/Se,T/Se,...' (periods in s, Se in g, linear between points)"
+)
+
+_ALIASES = {
+    "type": "spectrum_type",
+    "spectrum_type": "spectrum_type",
+    "ground": "ground",
+    "soil": "soil",
+    "ag": "ag",
+    "f0": "F0",
+    "tc": "Tc_star",
+    "tc*": "Tc_star",
+    "tcstar": "Tc_star",
+    "tc_star": "Tc_star",
+    "topo": "topography",
+    "topography": "topography",
+    "st": "topography",
+    "damping": "damping",
+    "xi": "damping",
+}
+
+
+def _keywords(body: str, allowed: set[str], text: str) -> dict[str, str]:
+    out: dict[str, str] = {}
+    for item in filter(None, (p.strip() for p in body.split(","))):
+        key, sep, value = item.partition("=")
+        name = _ALIASES.get(key.strip().lower())
+        if not sep or name is None or name not in allowed:
+            raise InputError(
+                f"cannot read {item!r} in spectrum {text!r}; expected key=value with keys "
+                f"{', '.join(sorted(allowed))}",
+                key="spectrum",
+            )
+        out[name] = value.strip()
+    return out
+
+
+def _number(kw: dict[str, str], key: str, text: str, default: float | None = None) -> float:
+    if key not in kw:
+        if default is None:
+            raise InputError(f"spectrum {text!r} lacks {key}=", key="spectrum")
+        return default
+    try:
+        return float(kw[key])
+    except ValueError:
+        raise InputError(
+            f"{key} must be a number in spectrum {text!r}, got {kw[key]!r}", key="spectrum"
+        ) from None
+
+
+def parse_spectrum(text: str) -> ElasticSpectrum:
+    """The spectrum described by a one-line string (the CLI form; see :data:`SPECTRUM_HELP`).
+
+    Examples: ``A2``; ``ec8:type=1,ground=B,ag=0.25``;
+    ``ntc:ag=0.261,F0=2.36,tc=0.347,soil=B,topo=T1``; ``table:0/0.3,0.15/0.75,2/0.19``.
+    """
+    raw = str(text).strip()
+    head, sep, body = raw.partition(":")
+    kind = head.strip().lower()
+    if not sep:
+        return preset_spectrum(raw)
+    if kind == "ec8":
+        kw = _keywords(body, {"spectrum_type", "ground", "ag", "damping"}, raw)
+        stype = _number(kw, "spectrum_type", raw, 1.0)
+        if stype not in (1.0, 2.0):
+            raise InputError(f"EC8 type must be 1 or 2 in {raw!r}", key="spectrum")
+        if "ground" not in kw:
+            raise InputError(f"spectrum {raw!r} lacks ground=", key="spectrum")
+        return ec8_spectrum(
+            _number(kw, "ag", raw), kw["ground"], int(stype), _number(kw, "damping", raw, 0.05)
+        )
+    if kind in ("ntc", "ntc2018"):
+        allowed = {"ag", "F0", "Tc_star", "soil", "topography", "damping"}
+        kw = _keywords(body, allowed, raw)
+        if "soil" not in kw:
+            raise InputError(f"spectrum {raw!r} lacks soil=", key="spectrum")
+        return ntc2018_spectrum(
+            _number(kw, "ag", raw),
+            _number(kw, "F0", raw),
+            _number(kw, "Tc_star", raw),
+            kw["soil"],
+            kw.get("topography", "T1"),
+            _number(kw, "damping", raw, 0.05),
+        )
+    if kind == "table":
+        points: list[tuple[float, float]] = []
+        for item in filter(None, (p.strip() for p in body.split(","))):
+            t, slash, s = item.partition("/")
+            try:
+                points.append((float(t), float(s)))
+            except ValueError:
+                raise InputError(
+                    f"table point {item!r} is not 'T/Se' (two numbers)", key="spectrum"
+                ) from None
+            if not slash:
+                raise InputError(f"table point {item!r} is not 'T/Se'", key="spectrum")
+        if len(points) < 2:
+            raise InputError("a table spectrum needs at least 2 points", key="spectrum")
+        return table_spectrum([p[0] for p in points], [p[1] for p in points])
+    raise InputError(
+        f"unknown spectrum {raw!r}; expected a preset (A1, A2, A3), 'ec8:...', 'ntc:...' or "
+        "'table:...'",
+        key="spectrum",
     )

@@ -1,0 +1,174 @@
+"""`frp-assess records`: generate spectrum-compatible accelerograms and check record sets.
+
+frp-assess records generate --spectrum A2 --count 7 --seed 1 --out records/
+frp-assess records check rec1.AT2 rec2.AT2 rec3.AT2 --spectrum ec8:type=1,ground=B,ag=0.25
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+from pathlib import Path
+
+from rich.console import Console
+from rich.table import Table
+
+from frp_assess.errors import InputError
+from frp_assess.io_utils import atomic_write_text
+from frp_assess.motions.compliance import DEFAULT_T1, ComplianceReport, check_compliance
+from frp_assess.motions.envelopes import ENVELOPES
+from frp_assess.motions.readers import FORMATS, UNITS, read_record
+from frp_assess.motions.record import Record
+from frp_assess.motions.simqke import generate_artificial
+from frp_assess.motions.spectra import SPECTRUM_HELP, ElasticSpectrum, parse_spectrum
+from frp_assess.motions.writers import write_at2
+
+T1_HELP = (
+    f"fundamental period T1 of the structure [s] for the check ranges (EC8 0.2T1-2T1, NTC "
+    f"0.15 s-max(2 s, 2T1)); default {DEFAULT_T1:g} s, a choice for a rocking wall, whose "
+    "apparent period grows with the amplitude"
+)
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser(
+        "records",
+        help="generate artificial accelerograms, check record sets against a code spectrum",
+        description="Spectrum-compatible artificial accelerograms (SIMQKE) and the code checks "
+        "of EN 1998-1 §3.2.3.1.2 and NTC 2018 §3.2.3.6.",
+    )
+    rsub = p.add_subparsers(dest="records_command", metavar="ACTION", parser_class=type(p))
+    rsub.required = True
+
+    g = rsub.add_parser(
+        "generate",
+        help="generate a set of spectrum-compatible records",
+        description="Generate COUNT artificial accelerograms compatible with the target "
+        "spectrum (SIMQKE, Gasparini & Vanmarcke 1976), write them as PEER .AT2 files (in g) "
+        "with spectra.csv (target and mean spectra), and print the code checks. "
+        "The same seed gives the same records, bit for bit.",
+    )
+    g.add_argument("--spectrum", required=True, metavar="SPEC", help=SPECTRUM_HELP)
+    g.add_argument("--count", type=int, default=7, help="number of records (default 7)")
+    g.add_argument("--seed", type=int, default=1, help="random seed (default 1)")
+    g.add_argument("--duration", type=float, default=25.0, help="total duration [s] (25)")
+    g.add_argument("--dt", type=float, default=0.005, help="time step [s] (0.005)")
+    g.add_argument(
+        "--stationary", type=float, default=10.0, help="stationary part of the envelope [s] (10)"
+    )
+    g.add_argument("--envelope", choices=ENVELOPES, default="trapezoidal", help="envelope shape")
+    g.add_argument("--t1", type=float, default=DEFAULT_T1, metavar="T1", help=T1_HELP)
+    g.add_argument("--out", required=True, metavar="DIR", help="output folder")
+    g.set_defaults(handler=run_generate)
+
+    c = rsub.add_parser(
+        "check",
+        help="check a set of record files against a code spectrum",
+        description="Check any set of records (recorded or artificial) against the target "
+        "spectrum, clause by clause (EN 1998-1 §3.2.3.1.2, NTC 2018 §3.2.3.6). "
+        "Exit code 0 if every check passes, 1 otherwise.",
+    )
+    c.add_argument("files", nargs="+", metavar="FILE", help="record files")
+    c.add_argument("--spectrum", required=True, metavar="SPEC", help=SPECTRUM_HELP)
+    c.add_argument("--units", default="g", choices=sorted(UNITS), help="units of the files")
+    c.add_argument("--format", default="auto", choices=FORMATS, help="file format")
+    c.add_argument("--dt", type=float, default=None, help="time step [s] of one-column files")
+    c.add_argument(
+        "--recorded",
+        action="store_true",
+        help="check as recorded records (NTC: mean within 90-130 %% of the target)",
+    )
+    c.add_argument("--t1", type=float, default=DEFAULT_T1, metavar="T1", help=T1_HELP)
+    c.set_defaults(handler=run_check)
+
+
+def _positive(value: float, key: str) -> None:
+    if not (math.isfinite(value) and value > 0):
+        raise InputError(f"expected a number > 0, found {value:g}", key=key)
+
+
+def run_generate(args: argparse.Namespace) -> int:
+    spectrum = parse_spectrum(args.spectrum)
+    for key in ("duration", "dt", "stationary", "t1"):
+        _positive(getattr(args, key), f"--{key}")
+    if args.count < 1:
+        raise InputError(f"expected a count >= 1, found {args.count}", key="--count")
+    records = generate_artificial(
+        spectrum,
+        count=args.count,
+        seed=args.seed,
+        duration=args.duration,
+        dt=args.dt,
+        stationary=args.stationary,
+        envelope=args.envelope,
+        t1=args.t1,
+    )
+    out = Path(args.out)
+    if out.exists() and not out.is_dir():
+        raise InputError("exists and is not a folder", file=str(out), key="--out")
+    for record in records:
+        write_at2(record, out / f"{record.name}.AT2")
+    report = check_compliance(records, spectrum, t1=args.t1)
+    atomic_write_text(out / "spectra.csv", spectra_csv(report, spectrum))
+    console = Console()
+    console.print(
+        f"wrote {len(records)} records and spectra.csv to {out} "
+        f"(seed {args.seed}, set factor {float(records[0].meta['set_scale_factor']):.4f})"
+    )
+    print_report(report, spectrum, console)
+    return 0 if report.passed else 1
+
+
+def run_check(args: argparse.Namespace) -> int:
+    spectrum = parse_spectrum(args.spectrum)
+    _positive(args.t1, "--t1")
+    records: list[Record] = [
+        read_record(f, format=args.format, units=args.units, dt=args.dt) for f in args.files
+    ]
+    report = check_compliance(records, spectrum, t1=args.t1, recorded=args.recorded)
+    print_report(report, spectrum, Console())
+    return 0 if report.passed else 1
+
+
+def spectra_csv(report: ComplianceReport, spectrum: ElasticSpectrum) -> str:
+    """CSV of the target, mean and per-record spectra [g] at the report's periods [s]."""
+    names = report.record_names
+    lines = [
+        f"# target: {spectrum.description}",
+        f"# damping {report.damping:g}; pseudo-accelerations in g; T1 = {report.t1:g} s",
+        ",".join(
+            ["period_s", "target_g", "mean_g", "mean_over_target"] + [f"{n}_g" for n in names]
+        ),
+    ]
+    for k, t in enumerate(report.periods):
+        row = [f"{t:.6g}", f"{report.target[k]:.6g}", f"{report.mean[k]:.6g}"]
+        row.append(f"{report.mean[k] / report.target[k]:.5f}")
+        row += [f"{report.spectra[i, k]:.6g}" for i in range(len(names))]
+        lines.append(",".join(row))
+    return "\n".join(lines) + "\n"
+
+
+def print_report(
+    report: ComplianceReport, spectrum: ElasticSpectrum, console: Console | None = None
+) -> None:
+    """The compliance table (one row per requirement) and the verdict."""
+    console = console or Console()
+    kind = "recorded" if report.recorded else "artificial"
+    table = Table(
+        title=f"{len(report.record_names)} {kind} records vs {spectrum.name} "
+        f"(T1 = {report.t1:g} s, ξ = {report.damping:.0%})"
+    )
+    table.add_column("code", no_wrap=True)
+    table.add_column("clause", no_wrap=True)
+    table.add_column("requirement")
+    table.add_column("found")
+    table.add_column("margin", justify="right", no_wrap=True)
+    table.add_column("result", no_wrap=True)
+    for c in report.checks:
+        margin = f"{c.margin:+.1%}" if c.unit == "" else f"{c.margin:+g} {c.unit}"
+        result = "[green]pass[/green]" if c.passed else "[bold red]FAIL[/bold red]"
+        table.add_row(c.code, c.clause, c.requirement, c.found, margin, result)
+    console.print(table)
+    console.print(spectrum.description)
+    verdict = "all checks pass" if report.passed else "some checks FAIL"
+    console.print(f"[bold]{verdict}[/bold]")
