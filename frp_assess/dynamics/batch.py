@@ -84,7 +84,13 @@ def run_batch(
     else:
         with ThreadPoolExecutor(max_workers=workers, thread_name_prefix="ida") as pool:
             futures = [pool.submit(work, i) for i in range(n)]
-            finished, _ = wait(futures, return_when=FIRST_EXCEPTION)
+            try:
+                finished, _ = wait(futures, return_when=FIRST_EXCEPTION)
+            except BaseException:  # Ctrl-C in the waiting thread: stop the workers promptly
+                stop.set()
+                for f in futures:
+                    f.cancel()
+                raise
             for f in finished:
                 exc = f.exception()
                 if exc is not None:

@@ -1,0 +1,194 @@
+"""The one application API that the CLI, the TUI and the report call.
+
+``run_assessment`` takes validated :class:`~frp_assess.assess.inputs.AssessmentInputs`, runs
+everything, writes the results directory atomically and returns the results dict
+(docs/results-json.md).  Progress and cancellation are plain callables/events.
+"""
+
+from __future__ import annotations
+
+import datetime as _dt
+import threading
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from frp_assess.assess.cache import IdaCache
+from frp_assess.assess.code_check import simple_overturning_check
+from frp_assess.assess.inputs import AssessmentInputs, Material
+from frp_assess.assess.results import (
+    build_results,
+    case_dict,
+    history_dict,
+    rank_cases,
+    results_csv,
+    results_json,
+    spectra_csv,
+)
+from frp_assess.assess.runner import DesignResult, IdaRunner, design_search, summarise
+from frp_assess.assess.seismic import SeismicInput, build_records
+from frp_assess.io_utils import atomic_write_text
+from frp_assess.motions import write_at2
+
+#: progress(stage, done, total); stages: "records", "ida", "design", "writing"
+Progress = Callable[[str, int, int], None]
+
+CACHE_DIR = ".cache"
+
+
+@dataclass(frozen=True)
+class RunStats:
+    computed: int  #: (case, record) IDAs computed in this run
+    reused: int  #: (case, record) IDAs taken from the cache
+    out_dir: Path
+
+
+def _noop(stage: str, done: int, total: int) -> None:
+    return None
+
+
+def prepare_records(inputs: AssessmentInputs) -> SeismicInput:
+    """Generate or read the records and check them (the first stage of a run)."""
+    return build_records(inputs)
+
+
+def run_assessment(
+    inputs: AssessmentInputs,
+    out_dir: Path,
+    *,
+    jobs: int | None = None,
+    progress: Progress | None = None,
+    cancel: threading.Event | None = None,
+    seismic: SeismicInput | None = None,
+    created: str | None = None,
+    pdf: bool = True,
+) -> tuple[dict[str, Any], RunStats]:
+    """Run the assessment and write ``out_dir``; returns (results, stats).
+
+    Finished (case, record) IDAs are cached in ``out_dir/.cache`` as they complete, so a
+    cancelled run (:class:`~frp_assess.errors.Cancelled`) loses nothing; result files are
+    only written, atomically, once everything is computed.
+    """
+    report = progress or _noop
+    out_dir = Path(out_dir)
+    if seismic is None:
+        report("records", 0, 1)
+        seismic = build_records(inputs)
+        report("records", 1, 1)
+    records = seismic.records
+    names = [r.name for r in records]
+    demand = inputs.spectrum.pga_g
+    a_rm = inputs.wall.a_rm_g
+    runner = IdaRunner(records, inputs, IdaCache(out_dir / CACHE_DIR), jobs=jobs, cancel=cancel)
+
+    models = [inputs.model_for(None)] + [inputs.model_for(o) for o in inputs.options]
+    all_results = runner.run(models, progress=lambda d, n: report("ida", d, n))
+    summaries = [summarise(r, inputs.ida.max_multiplier, a_rm) for r in all_results]
+    urm_design = summaries[0].design_a_dyn
+    options = [None, *inputs.options]
+    cases = [
+        case_dict(inputs, o, m, s, names, demand, urm_design)
+        for o, m, s in zip(options, models, summaries, strict=True)
+    ]
+    recommended = rank_cases(cases, inputs.target)
+
+    design: list[DesignResult] | None = None
+    if inputs.design is not None:
+        pairs = [(m, p) for m in inputs.design.materials for p in inputs.design.positions]
+        design = []
+        for k, (mat, pos) in enumerate(pairs):
+            report("design", k, len(pairs))
+            design.append(design_search(runner, inputs, mat, pos, demand))
+        report("design", len(pairs), len(pairs))
+
+    governing = governing_histories(inputs, cases, records, all_results, recommended)
+    materials: dict[str, Material] = {}
+    for o in inputs.options:
+        materials.setdefault(o.material.name, o.material)
+    if inputs.design is not None:
+        for mat in inputs.design.materials:
+            materials.setdefault(mat.name, mat)
+    results = build_results(
+        inputs=inputs,
+        seismic=seismic,
+        cases=cases,
+        recommended=recommended,
+        check=simple_overturning_check(
+            inputs.thickness,
+            inputs.height,
+            demand,
+            inputs.code_check.knowledge_level,
+            inputs.code_check.behaviour_factor,
+        ),
+        design=design,
+        governing=governing,
+        materials=materials,
+        created=created or _dt.date.today().isoformat(),
+    )
+    report("writing", 0, 1)
+    write_outputs(results, seismic, out_dir, pdf=pdf)
+    report("writing", 1, 1)
+    return results, RunStats(runner.computed, runner.reused, out_dir)
+
+
+def governing_histories(
+    inputs: AssessmentInputs,
+    cases: list[dict[str, Any]],
+    records: list,
+    all_results: list,
+    recommended: str | None,
+) -> dict[str, Any] | None:
+    """θ/α(t) and bar strain of the recommended option (else the unreinforced wall) under the
+    record that fails first, at the collapse multiplier and just below it."""
+    idx = next((i for i, c in enumerate(cases) if c["name"] == recommended), 0)
+    res = all_results[idx]
+    failing = [(r.collapse_multiplier, k) for k, r in enumerate(res) if r.collapse_multiplier]
+    if not failing:
+        return None
+    c, k = min(failing)
+    model = inputs.model_for(None if idx == 0 else inputs.options[idx - 1])
+    rec = records[k]
+    below = c * (1.0 - inputs.ida.tolerance)
+    runs = [
+        history_dict("collapse", c, model.run(rec.acc, rec.dt, c, history=True), model.wall.alpha),
+        history_dict(
+            "just below", below, model.run(rec.acc, rec.dt, below, history=True), model.wall.alpha
+        ),
+    ]
+    bars = model.rebars
+    return {
+        "case": cases[idx]["name"],
+        "record": rec.name,
+        "runs": runs,
+        "rupture_strain": None if bars is None else bars.rupture_strain,
+    }
+
+
+def write_outputs(
+    results: dict[str, Any], seismic: SeismicInput, out_dir: Path, *, pdf: bool
+) -> None:
+    """results.json, results.csv, spectra.csv, records/*.AT2 and (if available) report.pdf."""
+    out_dir.mkdir(parents=True, exist_ok=True)
+    for rec in seismic.records:
+        write_at2(rec, out_dir / "records" / f"{rec.name}.AT2", f"{rec.name}: {rec.source}")
+    atomic_write_text(out_dir / "spectra.csv", spectra_csv(results))
+    atomic_write_text(out_dir / "results.csv", results_csv(results))
+    atomic_write_text(out_dir / "results.json", results_json(results))
+    if pdf:
+        build_pdf(results, out_dir / "report.pdf")
+
+
+def build_pdf(results: dict[str, Any], path: Path) -> bool:
+    """Build the PDF report if the report package is installed; returns whether it did."""
+    try:
+        from frp_assess.report.document import build_report
+    except ImportError:
+        return False
+    build_report(results, path)
+    return True
+
+
+def default_out_dir(project_file: Path) -> Path:
+    """``<stem>-results/`` next to the project file."""
+    return project_file.with_name(f"{project_file.stem}-results")

@@ -1,0 +1,128 @@
+"""What an assessment needs, as plain domain objects (the YAML schema maps onto these).
+
+Practitioners' units are kept here (GPa, ‰, kN/m³, g) because these objects are also
+written into results.json; conversion to SI happens when the dynamics models are built.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from frp_assess.dynamics import (
+    IdaSettings,
+    Mechanism,
+    ModelOptions,
+    Position,
+    Rebars,
+    RockingModel,
+    Wall,
+)
+from frp_assess.motions import ElasticSpectrum
+
+
+@dataclass(frozen=True)
+class Material:
+    """An FRP bar material."""
+
+    name: str
+    elastic_modulus: float  #: E [GPa]
+    ultimate_strain: float  #: ε_u [-]
+    density: float  #: [kg/m³]
+    price: float  #: [currency/kg], indicative
+    source: str = ""
+
+
+@dataclass(frozen=True)
+class Option:
+    """One retrofit option: a material, a position and a ratio."""
+
+    name: str
+    material: Material
+    position: Position
+    ratio: float  #: ρ [‰], active bars
+
+
+@dataclass(frozen=True)
+class ArtificialRecords:
+    count: int = 7
+    seed: int = 1
+    duration: float = 25.0  #: [s]
+    dt: float = 0.005  #: [s]
+
+
+@dataclass(frozen=True)
+class RecordFile:
+    path: str  #: absolute, or relative to the working directory
+    format: str = "auto"
+    units: str = "g"
+    dt: float | None = None  #: [s], one-column files only
+    name: str | None = None
+
+
+@dataclass(frozen=True)
+class DesignRequest:
+    """Design mode: the smallest ratio meeting the target, per material and position."""
+
+    materials: tuple[Material, ...]
+    positions: tuple[Position, ...]
+    ratio_range: tuple[float, float] = (0.5, 5.0)  #: [‰]
+    resolution: float = 0.05  #: [‰]
+
+
+@dataclass(frozen=True)
+class Costs:
+    currency: str = "EUR"
+    installation_per_metre: float = 0.0  #: per metre of wall length and layer of bars
+
+
+@dataclass(frozen=True)
+class CodeCheckSettings:
+    knowledge_level: str = "LC1"  #: LC1 | LC2 | LC3
+    behaviour_factor: float = 2.0  #: q of Circolare 2019 §C8.7.1
+
+
+@dataclass(frozen=True)
+class AssessmentInputs:
+    """One wall, its site, its candidate retrofits and the analysis settings."""
+
+    thickness: float  #: B [m]
+    height: float  #: H [m]
+    unit_weight: float  #: w [kN/m³]
+    mechanism: Mechanism
+    spectrum: ElasticSpectrum
+    records: ArtificialRecords | tuple[RecordFile, ...]
+    options: tuple[Option, ...] = ()
+    length: float = 1.0  #: L [m]
+    masonry: str | None = None
+    masonry_description: str = ""
+    scale_to_spectrum: bool = True
+    t1: float = 1.0  #: reference period of the compliance checks [s]
+    model: ModelOptions = ModelOptions()
+    strain_factor: float = 0.5
+    ida: IdaSettings = IdaSettings()
+    target: float = 1.0  #: required mean capacity/demand
+    costs: Costs = Costs()
+    design: DesignRequest | None = None
+    code_check: CodeCheckSettings = CodeCheckSettings()
+    project: dict[str, str] = field(default_factory=dict)
+    input_file: str = ""
+
+    @property
+    def wall(self) -> Wall:
+        return Wall(self.thickness, self.height, self.unit_weight * 1e3)
+
+    def rebars(self, material: Material, position: Position, ratio: float) -> Rebars:
+        return Rebars(
+            material.elastic_modulus * 1e9,
+            material.ultimate_strain,
+            position,
+            ratio,
+            self.strain_factor,
+        )
+
+    def model_for(self, option: Option | None) -> RockingModel:
+        """The dynamics model of the unreinforced wall (``None``) or of an option."""
+        bars = (
+            None if option is None else self.rebars(option.material, option.position, option.ratio)
+        )
+        return RockingModel(self.wall, self.mechanism, bars, self.model)

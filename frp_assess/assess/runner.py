@@ -1,0 +1,185 @@
+"""Running the IDAs of an assessment through the cache, and the design-mode search."""
+
+from __future__ import annotations
+
+import math
+import threading
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+
+from frp_assess.assess.cache import IdaCache, record_digest, task_key
+from frp_assess.assess.inputs import AssessmentInputs, Material
+from frp_assess.dynamics import IdaResult, IdaTask, Position, RockingModel, run_batch
+from frp_assess.motions import G, Record
+
+#: progress(stage, done, total)
+Progress = Callable[[str, int, int], None]
+
+
+@dataclass(frozen=True)
+class CaseSummary:
+    """IDA results of one case over the record set, accelerations in g."""
+
+    results: tuple[IdaResult, ...]
+    a_dyn: tuple[float | None, ...]  #: per record [g]; None = no collapse up to C_max
+    a_dyn_bound: tuple[float, ...]  #: a_dyn, or C_max·PGA (a lower bound) where None [g]
+    mean_a_dyn: float  #: [g]
+    min_a_dyn: float  #: [g]
+    mean_q: float
+    design_a_dyn: float  #: mean with ≥ 7 records, else the least favourable [g]
+    lower_bound: bool  #: some record did not collapse up to C_max: values are lower bounds
+
+
+def summarise(results: Sequence[IdaResult], settings_max: float, a_rm_g: float) -> CaseSummary:
+    a_dyn = tuple(None if r.a_dyn is None else r.a_dyn / G for r in results)
+    bound = tuple(
+        a if a is not None else settings_max * r.c0 * r.pga / G
+        for a, r in zip(a_dyn, results, strict=True)
+    )
+    mean = sum(bound) / len(bound)
+    low = min(bound)
+    design = mean if len(bound) >= 7 else low
+    return CaseSummary(
+        tuple(results),
+        a_dyn,
+        bound,
+        mean,
+        low,
+        mean / a_rm_g,
+        design,
+        any(a is None for a in a_dyn),
+    )
+
+
+class IdaRunner:
+    """Runs (models × records) IDAs, reusing and filling the cache."""
+
+    def __init__(
+        self,
+        records: Sequence[Record],
+        inputs: AssessmentInputs,
+        cache: IdaCache,
+        *,
+        jobs: int | None = None,
+        cancel: threading.Event | None = None,
+    ) -> None:
+        self.records = list(records)
+        self.inputs = inputs
+        self.cache = cache
+        self.jobs = jobs
+        self.cancel = cancel
+        self._hashes = [record_digest(r.acc, r.dt) for r in self.records]
+        self.computed = 0
+        self.reused = 0
+
+    def run(
+        self, models: Sequence[RockingModel], progress: Callable[[int, int], None] | None = None
+    ) -> list[list[IdaResult]]:
+        n_rec = len(self.records)
+        total = len(models) * n_rec
+        out: list[IdaResult | None] = [None] * total
+        keys: list[str] = []
+        tasks: list[IdaTask] = []
+        slots: list[int] = []
+        for m_i, model in enumerate(models):
+            for r_i, rec in enumerate(self.records):
+                key = task_key(model, self._hashes[r_i], self.inputs.ida)
+                hit = self.cache.get(key)
+                if hit is not None:
+                    out[m_i * n_rec + r_i] = hit
+                else:
+                    keys.append(key)
+                    tasks.append(IdaTask(model, rec.acc, rec.dt, self.inputs.ida))
+                    slots.append(m_i * n_rec + r_i)
+        hits = total - len(tasks)
+        self.reused += hits
+        if progress is not None:
+            progress(hits, total)
+
+        def on_result(i: int, res: IdaResult) -> None:
+            self.cache.put(keys[i], res)
+
+        fresh = run_batch(
+            tasks,
+            jobs=self.jobs,
+            on_result=on_result,
+            cancel=self.cancel,
+            progress=None if progress is None else (lambda d, n: progress(hits + d, total)),
+        )
+        self.computed += len(tasks)
+        for slot, res in zip(slots, fresh, strict=True):
+            out[slot] = res
+        results = [r for r in out if r is not None]
+        return [results[i * n_rec : (i + 1) * n_rec] for i in range(len(models))]
+
+
+@dataclass(frozen=True)
+class DesignResult:
+    material: Material
+    position: Position
+    ratio: float | None  #: smallest ratio meeting the target [‰], None if none in range
+    summary: CaseSummary | None
+    capacity_demand: float | None
+    message: str
+
+
+def design_search(
+    runner: IdaRunner,
+    inputs: AssessmentInputs,
+    material: Material,
+    position: Position,
+    demand_g: float,
+) -> DesignResult:
+    """Smallest ρ on the grid of ``resolution`` within ``ratio_range`` whose design capacity
+    meets the target, by bisection (capacity/demand is taken as increasing with ρ)."""
+    assert inputs.design is not None
+    lo_r, hi_r = inputs.design.ratio_range
+    res = inputs.design.resolution
+    grid_lo = math.ceil(lo_r / res - 1e-9)
+    grid_hi = math.floor(hi_r / res + 1e-9)
+    a_rm = inputs.wall.a_rm_g
+    cache: dict[int, CaseSummary] = {}
+
+    def evaluate(k: int) -> CaseSummary:
+        if k not in cache:
+            bars = inputs.rebars(material, position, k * res)
+            model = RockingModel(inputs.wall, inputs.mechanism, bars, inputs.model)
+            cache[k] = summarise(runner.run([model])[0], inputs.ida.max_multiplier, a_rm)
+        return cache[k]
+
+    def ok(k: int) -> bool:
+        return evaluate(k).design_a_dyn / demand_g >= inputs.target
+
+    if grid_hi < grid_lo or not ok(grid_hi):
+        top = evaluate(grid_hi) if grid_hi >= grid_lo else None
+        cd = None if top is None else top.design_a_dyn / demand_g
+        return DesignResult(
+            material,
+            position,
+            None,
+            top,
+            cd,
+            f"no ratio up to {hi_r:g} ‰ meets the target {inputs.target:g}"
+            + ("" if cd is None else f" (reaches {cd:.2f} at {hi_r:g} ‰)"),
+        )
+    if ok(grid_lo):
+        k = grid_lo
+    else:
+        lo, hi = grid_lo, grid_hi  # lo fails, hi passes
+        while hi - lo > 1:
+            mid = (lo + hi) // 2
+            if ok(mid):
+                hi = mid
+            else:
+                lo = mid
+        k = hi
+    s = evaluate(k)
+    ratio = round(k * res, 6)
+    return DesignResult(
+        material,
+        position,
+        ratio,
+        s,
+        s.design_a_dyn / demand_g,
+        f"ρ = {ratio:g} ‰ is the smallest ratio (to {res:g} ‰) meeting the target",
+    )

@@ -1,0 +1,119 @@
+"""The application API end to end on a small project: files, consistency, cache, cancel."""
+
+from __future__ import annotations
+
+import json
+import threading
+
+import pytest
+
+from frp_assess.api import run_assessment
+from frp_assess.assess.inputs import (
+    ArtificialRecords,
+    AssessmentInputs,
+    Costs,
+    DesignRequest,
+    Material,
+    Option,
+)
+from frp_assess.dynamics import ida
+from frp_assess.errors import Cancelled
+from frp_assess.motions import preset_spectrum
+
+GFRP = Material("GFRP", 46.0, 0.015, 2000.0, 8.0, "test")
+CFRP = Material("CFRP", 150.0, 0.013, 1550.0, 35.0, "test")
+
+
+def small_inputs(**kw) -> AssessmentInputs:
+    base = dict(
+        thickness=0.3,
+        height=3.0,
+        unit_weight=18.0,
+        mechanism="one-sided",
+        length=5.0,
+        spectrum=preset_spectrum("A2"),
+        records=ArtificialRecords(count=3, seed=7, duration=14.0, dt=0.01),
+        options=(
+            Option("GFRP ext 1", GFRP, "external", 1.0),
+            Option("CFRP cen 2", CFRP, "centred", 2.0),
+        ),
+        costs=Costs("EUR", 100.0),
+        target=3.0,
+        project={"name": "Test <&> wall"},
+    )
+    base.update(kw)
+    return AssessmentInputs(**base)
+
+
+def test_run_writes_consistent_results(tmp_path):
+    inputs = small_inputs(design=DesignRequest((GFRP,), ("external",), (0.5, 3.0), 0.25))
+    results, stats = run_assessment(inputs, tmp_path, jobs=2, pdf=False, created="2026-01-01")
+    assert stats.computed > 0
+    assert {p.name for p in tmp_path.iterdir()} >= {
+        "results.json",
+        "results.csv",
+        "spectra.csv",
+        "records",
+    }
+    on_disk = json.loads((tmp_path / "results.json").read_text())
+    assert on_disk == json.loads(json.dumps(results))
+    cases = results["cases"]
+    assert cases[0]["name"] == "Unreinforced" and cases[0]["rank"] is None
+    demand = results["demand"]["pga"]
+    assert demand == pytest.approx(0.106)
+    # every number traceable: recompute one IDA directly
+    rec = results["records"][1]
+    from frp_assess.motions import read_record
+
+    acc = read_record(tmp_path / "records" / f"{rec['name']}.AT2")
+    direct = ida(inputs.model_for(inputs.options[0]), acc.acc, acc.dt, inputs.ida)
+    assert cases[1]["records"][1]["collapse_multiplier"] == pytest.approx(
+        direct.collapse_multiplier, rel=1e-5
+    )
+    for c in cases:
+        a = [r["a_dyn"] for r in c["records"]]
+        assert c["min_a_dyn"] == pytest.approx(min(a))
+        assert c["capacity_demand"] == pytest.approx(c["design_a_dyn"] / demand)
+        assert c["improvement"] == pytest.approx(c["design_a_dyn"] / cases[0]["design_a_dyn"])
+        assert c["meets_target"] == (c["capacity_demand"] >= 3.0)
+    # fewer than 7 records: the design value is the least favourable record
+    assert cases[1]["design_a_dyn"] == pytest.approx(cases[1]["min_a_dyn"])
+    ranks = sorted(c["rank"] for c in cases[1:])
+    assert ranks == [1, 2]
+    d = results["design"][0]
+    assert d["ratio"] is None or d["capacity_demand"] >= 3.0
+    lines = (tmp_path / "results.csv").read_text().splitlines()
+    assert len(lines) == 1 + 3 * 3
+    assert results["governing"]["runs"][0]["collapsed"] is True
+    assert results["governing"]["runs"][1]["collapsed"] is False
+
+
+def test_rerun_is_served_from_cache_with_same_numbers(tmp_path):
+    inputs = small_inputs()
+    first, s1 = run_assessment(inputs, tmp_path, pdf=False, created="x")
+    second, s2 = run_assessment(inputs, tmp_path, pdf=False, created="x")
+    assert s2.computed == 0 and s2.reused == s1.computed
+    assert first == second
+    changed, s3 = run_assessment(small_inputs(target=1.5), tmp_path, pdf=False, created="x")
+    assert s3.computed == 0  # the target does not change any IDA
+    other, s4 = run_assessment(small_inputs(strain_factor=0.4), tmp_path, pdf=False, created="x")
+    assert s4.computed == 2 * 3  # only the reinforced cases depend on the strain factor
+
+
+def test_cancel_keeps_finished_results(tmp_path):
+    inputs = small_inputs()
+    stop = threading.Event()
+    seen = []
+
+    def progress(stage, done, total):
+        if stage == "ida" and done >= 2:
+            seen.append(done)
+            stop.set()
+
+    with pytest.raises(Cancelled):
+        run_assessment(inputs, tmp_path, jobs=1, progress=progress, cancel=stop, pdf=False)
+    assert not (tmp_path / "results.json").exists()  # nothing half-written
+    cached = len(list((tmp_path / ".cache").glob("*.json")))
+    assert cached >= 2
+    _, stats = run_assessment(inputs, tmp_path, jobs=1, pdf=False)
+    assert stats.reused == cached and stats.computed == 9 - cached

@@ -1,0 +1,48 @@
+"""Ranking rule, FRP quantities, and the code kinematic check (hand calculations).
+
+Kinematic check source: Circolare 2019 §C8.7.1 (a0* = α0·g/(e*·FC), ground-level check
+a0* ≥ a_g·S/q, q = 2) and Tab. C8.5.IV (FC = 1.35/1.20/1.00); α0 = B/H for the simple
+overturning of a monolithic wall.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from frp_assess.assess.code_check import simple_overturning_check
+from frp_assess.assess.inputs import Costs, Material
+from frp_assess.assess.quantities import frp_quantity
+from frp_assess.assess.ranking import Rankable, rank_options
+
+GFRP = Material("GFRP", 46.0, 0.015, 2000.0, 8.0)
+
+
+def test_ranking_rule():
+    items = [
+        Rankable(1, 1.5, 900.0, 10.0),  # meets, cheap
+        Rankable(2, 3.0, 2000.0, 20.0),  # meets, dear
+        Rankable(3, 0.8, 100.0, 1.0),  # fails, high c/d
+        Rankable(4, 0.5, 50.0, 1.0),  # fails, low c/d
+        Rankable(5, 1.1, 900.0, 8.0),  # meets, same cost as 1 but lighter
+    ]
+    assert rank_options(items, 1.0) == [5, 1, 2, 3, 4]
+
+
+@pytest.mark.parametrize("position,layers", [("centred", 1), ("external", 2)])
+def test_quantities(position, layers):
+    q = frp_quantity(0.4, 3.0, 6.0, GFRP, position, 2.0, Costs("EUR", 150.0))
+    area = 2e-3 * 0.4 * layers  # m² per metre of wall
+    assert q.mass_per_m == pytest.approx(area * 3.0 * 2000.0)
+    assert q.mass == pytest.approx(q.mass_per_m * 6.0)
+    assert q.cost == pytest.approx(q.mass * 8.0 + 150.0 * 6.0 * layers)
+
+
+def test_kinematic_check_by_hand():
+    c = simple_overturning_check(0.4, 3.0, 0.30, "LC1", 2.0)
+    assert c.alpha0 == pytest.approx(0.4 / 3.0)
+    assert c.a0_star == pytest.approx(0.4 / 3.0 / 1.35)
+    assert c.demand == pytest.approx(0.15)
+    assert c.passed is False  # 0.0988 g < 0.15 g
+    assert simple_overturning_check(0.4, 3.0, 0.15, "LC3").passed is True
+    with pytest.raises(ValueError):
+        simple_overturning_check(0.4, 3.0, 0.3, "LC4")
