@@ -19,9 +19,12 @@ from frp_assess.errors import Cancelled, InputError
 
 #: Subcommand modules of this package, in the order `--help` lists them.
 COMMAND_MODULES: tuple[str, ...] = (
+    "new",
+    "validate",
     "simulate",
     "ida",
     "records",
+    "schema",
 )
 
 

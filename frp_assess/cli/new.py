@@ -1,0 +1,48 @@
+"""`frp-assess new NAME.yaml`: start a project file from the commented template."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import re
+from importlib import resources
+from pathlib import Path
+
+from frp_assess.errors import InputError
+
+TEMPLATE_NAME = "Example wall"
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser(
+        "new",
+        help="create a project file from the commented template",
+        description="Copy the template, which documents every key with its units and allowed "
+        "values, to NAME.yaml; the project name is taken from the file name.",
+    )
+    p.add_argument("file", metavar="NAME.yaml", help="project file to create")
+    p.add_argument("--force", action="store_true", help="overwrite an existing file")
+    p.set_defaults(handler=run)
+
+
+def template_text() -> str:
+    """The text of the packaged template ``frp_assess/templates/wall.yaml``."""
+    return resources.files("frp_assess").joinpath("templates/wall.yaml").read_text("utf-8")
+
+
+def run(args: argparse.Namespace) -> int:
+    path = Path(args.file)
+    if path.exists() and not args.force:
+        raise InputError(f"{path} already exists; use --force to overwrite it")
+    if path.is_dir():
+        raise InputError(f"{path} is a directory")
+    name = path.stem.replace("_", " ").replace("-", " ").strip() or TEMPLATE_NAME
+    if not re.fullmatch(r"[A-Za-z0-9][\w .()-]*", name):
+        name = json.dumps(name, ensure_ascii=False)  # a JSON string is a quoted YAML scalar
+    text = template_text().replace(f"name: {TEMPLATE_NAME}", f"name: {name}", 1)
+    try:
+        path.write_text(text, encoding="utf-8")
+    except OSError as exc:
+        raise InputError(f"cannot write {path}: {exc.strerror}") from None
+    print(f"created {path}: edit it, then 'frp-assess validate {path}' and 'frp-assess run {path}'")
+    return 0

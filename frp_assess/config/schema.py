@@ -1,0 +1,594 @@
+"""The project file as pydantic v2 models (``extra="forbid"``, units in every description).
+
+The root model is :class:`Project`.  Field names are the YAML keys of issue 4.  Numbers are
+strict (a quoted ``"0.4"`` or a ``yes`` is an error, not a silent conversion); free-text fields
+accept any scalar.  Cross-checks that need several fields (B < H, known materials and masonry,
+exactly one record source) raise :class:`~pydantic_core.PydanticCustomError` whose context
+``loc`` completes the location of the error, so that the loader can point at the right line.
+"""
+
+from __future__ import annotations
+
+import datetime as _dt
+from typing import Annotated, Any, Literal
+
+from pydantic import (
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Discriminator,
+    Field,
+    Strict,
+    Tag,
+    WithJsonSchema,
+    field_validator,
+    model_validator,
+)
+from pydantic_core import PydanticCustomError
+
+from frp_assess.config.library import FRP_MATERIALS, MASONRY, FrpMaterial, did_you_mean
+
+Position = Literal["centred", "external"]
+Mechanism = Literal["one-sided", "two-sided"]
+GroundType = Literal["A", "B", "C", "D", "E"]
+
+#: confidence factor FC of Circolare 2019 §C8.5.4 by knowledge level
+CONFIDENCE_FACTORS: dict[str, float] = {"LC1": 1.35, "LC2": 1.20, "LC3": 1.00}
+#: accepted ``format`` of a record file (as frp_assess.motions.readers.FORMATS)
+RECORD_FORMATS = ("auto", "at2", "esm", "two-column", "one-column")
+#: accepted ``units`` of a record file (as frp_assess.motions.readers.UNITS)
+RecordUnits = Literal["g", "m/s2", "m/s^2", "cm/s2", "cm/s^2", "gal"]
+#: the largest reinforcement ratio accepted [‰]
+MAX_RATIO = 20.0
+
+
+def located_error(message: str, *loc: str | int) -> PydanticCustomError:
+    """A validation error whose ``ctx['loc']`` extends the location pydantic reports."""
+    return PydanticCustomError(
+        "cross_check", message.replace("{", "(").replace("}", ")"), {"loc": loc}
+    )
+
+
+def _to_text(value: Any) -> Any:
+    """Free text: any YAML scalar (number, date) becomes a string; null becomes ``""``."""
+    if value is None:
+        return ""
+    if isinstance(value, bool | int | float | _dt.date):
+        return str(value)
+    return value
+
+
+Number = Annotated[float, Strict()]
+FreeText = Annotated[str, BeforeValidator(_to_text)]
+
+
+def format_ratio(ratio: float) -> str:
+    """A ratio [‰] without trailing zeros: 1.0 -> ``1``, 1.50 -> ``1.5``."""
+    return f"{ratio:.6g}"
+
+
+def option_name(material: str, position: str, ratio: float) -> str:
+    """The generated name of an option, e.g. ``GFRP centred 1‰``."""
+    return f"{material} {position} {format_ratio(ratio)}‰"
+
+
+class _Model(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+# --------------------------------------------------------------------------------- project
+class ProjectInfo(_Model):
+    """Free-text identification of the project, copied into the results and the report."""
+
+    name: FreeText = Field("Untitled wall", description="Name of the wall or project (text).")
+    location: FreeText = Field("", description="Site, e.g. town and address (text).")
+    engineer: FreeText = Field("", description="Who made the assessment (text).")
+    notes: FreeText = Field("", description="Any notes for the report (text).")
+
+
+# ------------------------------------------------------------------------------------ wall
+class WallSpec(_Model):
+    """The masonry wall, a rigid rocking block (MODEL.md §1)."""
+
+    thickness: Number = Field(gt=0, description="Thickness B [m], > 0 and < height.")
+    height: Number = Field(gt=0, description="Height H [m] above the rocking base, > 0.")
+    length: Number = Field(
+        1.0, gt=0, description="Length L [m] of the wall, for quantities and costs (default 1)."
+    )
+    masonry: str | None = Field(
+        None,
+        description="Masonry type, a key of Circolare 2019 Tab. C8.5.I: "
+        + ", ".join(f"{k} ({m.unit_weight:g} kN/m3)" for k, m in MASONRY.items())
+        + ". Gives the unit weight unless unit_weight is given.",
+    )
+    unit_weight: Number | None = Field(
+        None, ge=5.0, le=30.0, description="Unit weight w [kN/m3], 5-30; wins over masonry."
+    )
+    mechanism: Mechanism = Field(
+        description="one-sided: wall restrained on one side (rebounds on impact); "
+        "two-sided: free-standing wall rocking both ways."
+    )
+
+    @field_validator("masonry")
+    @classmethod
+    def _known_masonry(cls, value: str | None) -> str | None:
+        if value is not None and value not in MASONRY:
+            raise PydanticCustomError(
+                "unknown_masonry",
+                f"unknown masonry {value!r}{did_you_mean(value, MASONRY)}; "
+                f"expected one of {', '.join(MASONRY)}",
+            )
+        return value
+
+    @model_validator(mode="after")
+    def _check_wall(self) -> WallSpec:
+        if self.thickness >= self.height:
+            raise located_error(
+                f"expected thickness B < height H = {self.height:g} m, found {self.thickness:g}"
+                " (a rocking wall is slender)",
+                "thickness",
+            )
+        if self.masonry is None and self.unit_weight is None:
+            raise located_error(
+                "give 'masonry' (a library key) or 'unit_weight' [kN/m3]; neither was found"
+            )
+        return self
+
+    @property
+    def unit_weight_kn(self) -> float:
+        """Unit weight w [kN/m³]: the explicit value, else the masonry library's."""
+        if self.unit_weight is not None:
+            return float(self.unit_weight)
+        assert self.masonry is not None
+        return MASONRY[self.masonry].unit_weight
+
+
+# -------------------------------------------------------------------------------- spectra
+class Ntc2018Spectrum(_Model):
+    """NTC 2018 §3.2.3.2.1 elastic spectrum from the site's parameters."""
+
+    type: Literal["ntc2018"] = Field(description="Spectrum kind.")
+    ag: Number = Field(gt=0, le=1.5, description="a_g [g] on rock, 0 < a_g <= 1.5.")
+    F0: Number = Field(gt=0, le=5.0, description="F0 [-], maximum amplification on rock.")
+    Tc_star: Number = Field(gt=0, le=3.0, description="T_C* [s], start of the velocity branch.")
+    soil: GroundType = Field(description="Subsoil category A-E (S_S, C_C of Tab. 3.2.IV).")
+    topography: Literal["T1", "T2", "T3", "T4"] = Field(
+        "T1", description="Topographic category T1-T4 (S_T of Tab. 3.2.V)."
+    )
+    damping: Number = Field(0.05, gt=0, lt=1, description="Viscous damping ratio [-] (0.05).")
+
+
+class Ec8Spectrum(_Model):
+    """EN 1998-1 §3.2.2.2 elastic spectrum."""
+
+    type: Literal["ec8"] = Field(description="Spectrum kind.")
+    ag: Number = Field(gt=0, le=1.5, description="a_g [g] on type A ground, 0 < a_g <= 1.5.")
+    ground: GroundType = Field(description="Ground type A-E (Table 3.2/3.3).")
+    spectrum_type: Literal[1, 2] = Field(1, description="1 (M_s > 5.5) or 2.")
+    damping: Number = Field(0.05, gt=0, lt=1, description="Viscous damping ratio [-] (0.05).")
+
+
+class PresetSpectrum(_Model):
+    """One of the paper's spectra (a_g·S = 0.106 g, EC8 shape)."""
+
+    type: Literal["preset"] = Field(description="Spectrum kind.")
+    name: Literal["A1", "A2", "A3"] = Field(description="Preset A1, A2 or A3 (MODEL.md §6).")
+
+
+class TableSpectrum(_Model):
+    """A user table of (T, Se) points, linear between them."""
+
+    type: Literal["table"] = Field(description="Spectrum kind.")
+    periods: list[Annotated[Number, Field(ge=0)]] = Field(
+        min_length=2, description="Periods T [s], increasing, >= 0."
+    )
+    accelerations: list[Annotated[Number, Field(ge=0)]] = Field(
+        min_length=2, description="Spectral accelerations Se(T) [g], one per period."
+    )
+
+    @model_validator(mode="after")
+    def _check_table(self) -> TableSpectrum:
+        if len(self.accelerations) != len(self.periods):
+            raise located_error(
+                f"expected {len(self.periods)} accelerations (one per period), "
+                f"found {len(self.accelerations)}",
+                "accelerations",
+            )
+        for i in range(1, len(self.periods)):
+            if self.periods[i] <= self.periods[i - 1]:
+                raise located_error(
+                    f"expected increasing periods, found {self.periods[i]:g} s after "
+                    f"{self.periods[i - 1]:g} s",
+                    "periods",
+                    i,
+                )
+        return self
+
+
+Spectrum = Annotated[
+    Ntc2018Spectrum | Ec8Spectrum | PresetSpectrum | TableSpectrum,
+    Field(discriminator="type"),
+]
+
+
+# -------------------------------------------------------------------------------- records
+class ArtificialRecords(_Model):
+    """Spectrum-compatible artificial accelerograms (SIMQKE), reproducible from the seed."""
+
+    count: Annotated[int, Strict()] = Field(7, ge=1, le=100, description="Number, 1-100 (7).")
+    seed: Annotated[int, Strict()] = Field(1, description="Random seed (same seed, same set).")
+    duration: Number = Field(25.0, gt=0, description="Total duration [s] (25, NTC minimum).")
+    dt: Number = Field(0.005, gt=0, le=0.05, description="Time step [s], <= 0.05 (0.005).")
+
+
+class RecordFile(_Model):
+    """A recorded accelerogram file."""
+
+    path: str = Field(description="File path, relative to the project file.")
+    format: Literal["auto", "at2", "esm", "two-column", "one-column"] = Field(
+        "auto", description="auto | at2 (PEER NGA) | esm (ESM/ITACA) | two-column | one-column."
+    )
+    units: RecordUnits = Field("g", description="Units of the samples: g | m/s2 | cm/s2 | gal.")
+    dt: Number | None = Field(
+        None, gt=0, le=0.05, description="Time step [s], required for one-column files."
+    )
+    name: str | None = Field(None, description="Name in the results (default: file name).")
+
+    @model_validator(mode="after")
+    def _dt_for_one_column(self) -> RecordFile:
+        if self.format == "one-column" and self.dt is None:
+            raise located_error("a one-column file needs 'dt' [s]; none was found", "dt")
+        return self
+
+
+class RecordsSpec(_Model):
+    """The accelerograms: artificial ones or files (exactly one of the two)."""
+
+    artificial: ArtificialRecords | None = Field(
+        None, description="Generate artificial records compatible with the spectrum."
+    )
+    files: list[RecordFile] | None = Field(
+        None, min_length=1, description="Recorded accelerograms, read from files."
+    )
+    scale_to_spectrum: bool = Field(
+        True, description="Scale every record file to the spectrum's a_g*S (true)."
+    )
+
+    @model_validator(mode="after")
+    def _exactly_one(self) -> RecordsSpec:
+        if self.artificial is not None and self.files is not None:
+            raise located_error("give either 'artificial' or 'files', not both", "files")
+        if self.artificial is None and self.files is None:
+            raise located_error("give either 'artificial' or 'files'; neither was found")
+        return self
+
+
+def _default_records() -> RecordsSpec:
+    return RecordsSpec(artificial=ArtificialRecords())
+
+
+class SeismicSpec(_Model):
+    """The site's seismic action: a spectrum and the records compatible with it."""
+
+    spectrum: Spectrum = Field(
+        description="Elastic spectrum at 5 % damping: type ntc2018 | ec8 | preset | table."
+    )
+    records: RecordsSpec = Field(
+        default_factory=_default_records,
+        description="Accelerograms (default: 7 artificial, seed 1, 25 s, dt 0.005 s).",
+    )
+    t1: Number = Field(
+        1.0, gt=0, le=10, description="Reference period T1 [s] of the compatibility checks."
+    )
+
+
+# ------------------------------------------------------------------------------ materials
+class MaterialSpec(_Model):
+    """An FRP bar material added to, or overriding fields of, the library (GFRP, BFRP, CFRP).
+
+    For a library material only the fields given are replaced; a new material needs
+    elastic_modulus, ultimate_strain, density and price.
+    """
+
+    elastic_modulus: Number | None = Field(None, gt=0, le=1000, description="E [GPa].")
+    ultimate_strain: Number | None = Field(None, gt=0, lt=1, description="eps_u [-].")
+    density: Number | None = Field(None, gt=0, le=10000, description="Density [kg/m3].")
+    price: Number | None = Field(None, ge=0, description="Indicative price [currency/kg].")
+    source: FreeText | None = Field(None, description="Source of the values (text).")
+
+
+# -------------------------------------------------------------------------- interventions
+Ratio = Annotated[Number, Field(gt=0, le=MAX_RATIO)]
+
+
+class Intervention(_Model):
+    """One retrofit option: vertical FRP bars of a material, position and ratio."""
+
+    name: FreeText | None = Field(
+        None, description="Name in the results (default e.g. 'GFRP external 1‰')."
+    )
+    material: str = Field(description="Material: a library key or one of 'materials'.")
+    position: Position = Field(description="centred (one bar) | external (one on each face).")
+    ratio: Ratio = Field(description="Ratio rho [per mille] of the active bars, 0 < rho <= 20.")
+
+
+class SweepAxes(_Model):
+    """Every combination of the listed materials, positions and ratios."""
+
+    material: list[str] = Field(min_length=1, description="Materials (library or 'materials').")
+    position: list[Position] = Field(min_length=1, description="Positions: centred, external.")
+    ratio: list[Ratio] = Field(min_length=1, description="Ratios [per mille], 0 < rho <= 20.")
+
+
+class Sweep(_Model):
+    """A sweep: expands into one option per combination."""
+
+    sweep: SweepAxes = Field(description="The axes of the sweep.")
+
+
+def _intervention_tag(value: Any) -> str:
+    if isinstance(value, dict):
+        return "sweep-item" if "sweep" in value else "option"
+    return "sweep-item" if isinstance(value, Sweep) else "option"
+
+
+InterventionItem = Annotated[
+    Annotated[Intervention, Tag("option")] | Annotated[Sweep, Tag("sweep-item")],
+    Discriminator(_intervention_tag),
+]
+
+
+# ------------------------------------------------------------------------------- analysis
+def _restitution(value: Any) -> Any:
+    if isinstance(value, str) and value in ("energy", "velocity"):
+        return value
+    if isinstance(value, int | float) and not isinstance(value, bool) and 0 < value <= 1:
+        return float(value)
+    raise PydanticCustomError(
+        "restitution",
+        f"expected energy, velocity or a number in (0, 1], found {value!r}",
+    )
+
+
+Restitution = Annotated[
+    Literal["energy", "velocity"] | float,
+    BeforeValidator(_restitution),
+    WithJsonSchema(
+        {
+            "anyOf": [
+                {"enum": ["energy", "velocity"], "type": "string"},
+                {"type": "number", "exclusiveMinimum": 0, "maximum": 1},
+            ]
+        }
+    ),
+]
+
+
+class IdaSpec(_Model):
+    """The incremental dynamic analysis rule (MODEL.md §5)."""
+
+    step_ratio: Number = Field(1.10, gt=1, le=10, description="Step ratio s of C, > 1 (1.10).")
+    tolerance: Number = Field(
+        0.005, gt=0, le=0.1, description="Relative bisection tolerance, 0-0.1 (0.005)."
+    )
+    max_multiplier: Number = Field(
+        100.0, gt=1, description="Give up at this multiple of C0 [-] (100): 'no collapse'."
+    )
+
+
+class AnalysisSpec(_Model):
+    """Model options and the IDA settings (MODEL.md §3, §5)."""
+
+    restitution: Restitution = Field(
+        "energy",
+        description="energy: velocity ratio sqrt(r) | velocity: r | a number in (0, 1]: the "
+        "velocity ratio itself.",
+    )
+    rupture: Literal["energy-transfer", "velocity-continuous"] = Field(
+        "energy-transfer",
+        description="Bar rupture rule: energy-transfer (Eq. 12) | velocity-continuous.",
+    )
+    collapse: Literal["end-of-record", "first-exceedance"] = Field(
+        "end-of-record",
+        description="Collapse: |theta| >= alpha at the end of the record | "
+        "as soon as |theta| reaches alpha.",
+    )
+    strain_factor: Number = Field(
+        0.5, gt=0, le=1, description="Cyclic reduction c of eps_u, 0 < c <= 1 (0.5)."
+    )
+    free_vibration_tail: Number = Field(
+        0.0, ge=0, le=60, description="Zero motion appended to each record [s] (0)."
+    )
+    ida: IdaSpec = Field(default_factory=IdaSpec, description="IDA rule.")
+    target: Number = Field(
+        1.0, gt=0, description="Required mean capacity/demand, mean a_dyn/(a_g*S) (1.0)."
+    )
+
+
+# ---------------------------------------------------------------------- design/code/costs
+class DesignSpec(_Model):
+    """Design mode: the smallest ratio meeting the target per material and position."""
+
+    materials: list[str] = Field(min_length=1, description="Materials to design with.")
+    positions: list[Position] = Field(
+        default_factory=lambda: ["centred", "external"],
+        min_length=1,
+        description="Positions (both by default).",
+    )
+    ratio_range: tuple[Ratio, Ratio] = Field(
+        (0.5, 5.0), description="Search range [per mille], 0 < low < high <= 20."
+    )
+    resolution: Number = Field(0.05, gt=0, le=1, description="Resolution [per mille] (0.05).")
+
+    @model_validator(mode="after")
+    def _range(self) -> DesignSpec:
+        lo, hi = self.ratio_range
+        if not lo < hi:
+            raise located_error(f"expected low < high, found [{lo:g}, {hi:g}]", "ratio_range")
+        return self
+
+
+class CodeCheckSpec(_Model):
+    """Linear kinematic check of Circolare 2019 §C8.7.1 beside the IDA."""
+
+    knowledge_level: Literal["LC1", "LC2", "LC3"] = Field(
+        "LC1", description="Knowledge level: FC = 1.35 (LC1), 1.20 (LC2), 1.00 (LC3)."
+    )
+    behaviour_factor: Number = Field(2.0, ge=1, le=4, description="Behaviour factor q (2.0).")
+
+    @property
+    def confidence_factor(self) -> float:
+        """FC [-] of the knowledge level."""
+        return CONFIDENCE_FACTORS[self.knowledge_level]
+
+
+class CostsSpec(_Model):
+    """Indicative costs: bars by weight (material price) plus installation."""
+
+    currency: FreeText = Field("EUR", description="Currency of all prices (text).")
+    installation_per_metre: Number = Field(
+        0.0,
+        ge=0,
+        description="Installation [currency per metre of wall length per layer of "
+        "bars] (centred: 1 layer, external: 2); default 0: bars only.",
+    )
+
+
+# ----------------------------------------------------------------------------------- root
+class Project(_Model):
+    """A project file: one wall, its site, candidate retrofits and analysis settings."""
+
+    project: ProjectInfo = Field(default_factory=ProjectInfo, description="Identification.")
+    wall: WallSpec = Field(description="The wall.")
+    seismic: SeismicSpec = Field(description="Spectrum and records.")
+    materials: dict[str, MaterialSpec] = Field(
+        default_factory=dict,
+        description="Additions/overrides of the FRP library (GFRP, "
+        "BFRP, CFRP): E [GPa], eps_u, density [kg/m3], price [currency/kg].",
+    )
+    interventions: list[InterventionItem] = Field(
+        default_factory=list, description="Retrofit options: single options and sweeps."
+    )
+    analysis: AnalysisSpec = Field(default_factory=AnalysisSpec, description="Settings.")
+    design: DesignSpec | None = Field(None, description="Design mode (optional).")
+    code_check: CodeCheckSpec = Field(
+        default_factory=CodeCheckSpec, description="Code kinematic check settings."
+    )
+    costs: CostsSpec = Field(default_factory=CostsSpec, description="Indicative costs.")
+
+    @model_validator(mode="after")
+    def _cross_checks(self) -> Project:
+        for name, spec in self.materials.items():
+            if name in FRP_MATERIALS:
+                continue
+            missing = [
+                f
+                for f in ("elastic_modulus", "ultimate_strain", "density", "price")
+                if getattr(spec, f) is None
+            ]
+            if missing:
+                raise located_error(
+                    f"new material {name!r} needs {', '.join(missing)} (not in the library "
+                    f"{', '.join(FRP_MATERIALS)})",
+                    "materials",
+                    name,
+                )
+        known = self.material_names()
+        for i, item in enumerate(self.interventions):
+            if isinstance(item, Intervention):
+                self._check_material(item.material, known, "interventions", i, "material")
+            else:
+                for j, m in enumerate(item.sweep.material):
+                    self._check_material(m, known, "interventions", i, "sweep", "material", j)
+        if self.design is not None:
+            for j, m in enumerate(self.design.materials):
+                self._check_material(m, known, "design", "materials", j)
+        seen: dict[str, Intervention] = {}
+        for i, option in self._expanded_with_index():
+            other = seen.setdefault(str(option.name), option)
+            if other is not option and _key(other) != _key(option):
+                raise located_error(
+                    f"two different options are named {option.name!r}", "interventions", i
+                )
+        return self
+
+    @staticmethod
+    def _check_material(name: str, known: list[str], *loc: str | int) -> None:
+        if name not in known:
+            raise located_error(
+                f"unknown material {name!r}{did_you_mean(name, known)}; "
+                f"expected one of {', '.join(known)}",
+                *loc,
+            )
+
+    def material_names(self) -> list[str]:
+        """Names of the library materials and of those the file adds."""
+        return list(dict.fromkeys([*FRP_MATERIALS, *self.materials]))
+
+    def unit_weight_kn(self) -> float:
+        """Unit weight w of the wall [kN/m³] (explicit value, else the masonry library's)."""
+        return self.wall.unit_weight_kn
+
+    def material_table(self) -> dict[str, FrpMaterial]:
+        """The FRP library merged with the file's additions and overrides, by name."""
+        table = dict(FRP_MATERIALS)
+        for name, spec in self.materials.items():
+            base = table.get(name)
+            fields = {
+                f: getattr(spec, f)
+                for f in ("elastic_modulus", "ultimate_strain", "density", "price", "source")
+                if getattr(spec, f) is not None
+            }
+            if base is None:
+                fields.setdefault("source", "user input")
+                table[name] = FrpMaterial(name=name, description="user material", **fields)
+            else:
+                if "source" not in fields and set(fields) - {"price"}:
+                    fields["source"] = "user input (overrides the library)"
+                table[name] = FrpMaterial(
+                    name=name,
+                    elastic_modulus=fields.get("elastic_modulus", base.elastic_modulus),
+                    ultimate_strain=fields.get("ultimate_strain", base.ultimate_strain),
+                    density=fields.get("density", base.density),
+                    price=fields.get("price", base.price),
+                    source=fields.get("source", base.source),
+                    description=base.description,
+                )
+        return table
+
+    def _expanded_with_index(self) -> list[tuple[int, Intervention]]:
+        out: list[tuple[int, Intervention]] = []
+        for i, item in enumerate(self.interventions):
+            if isinstance(item, Intervention):
+                name = item.name or option_name(item.material, item.position, item.ratio)
+                out.append((i, item.model_copy(update={"name": name})))
+                continue
+            ax = item.sweep
+            for m in ax.material:
+                for p in ax.position:
+                    for r in ax.ratio:
+                        out.append(
+                            (
+                                i,
+                                Intervention(
+                                    name=option_name(m, p, r), material=m, position=p, ratio=r
+                                ),
+                            )
+                        )
+        return out
+
+    def expand_interventions(self) -> list[Intervention]:
+        """The concrete options, in file order, every one named; an option equal to an earlier
+        one (same material, position and ratio) is dropped."""
+        seen: set[tuple[str, str, float]] = set()
+        out: list[Intervention] = []
+        for _, option in self._expanded_with_index():
+            key = _key(option)
+            if key not in seen:
+                seen.add(key)
+                out.append(option)
+        return out
+
+
+def _key(option: Intervention) -> tuple[str, str, float]:
+    return (option.material, option.position, float(option.ratio))
