@@ -1,0 +1,28 @@
+"""`frp-assess report RESULTS_DIR`: rebuild the PDF report from stored results."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from frp_assess.report.document import build_report, load_results
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser(
+        "report",
+        help="rebuild report.pdf from a results directory (no analysis is rerun)",
+        description="Read RESULTS_DIR/results.json, written by `frp-assess run`, and write the "
+        "PDF assessment report (default RESULTS_DIR/report.pdf).",
+    )
+    p.add_argument("results_dir", metavar="RESULTS_DIR", help="results directory of a run")
+    p.add_argument("--out", metavar="FILE", help="PDF to write (default RESULTS_DIR/report.pdf)")
+    p.set_defaults(handler=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    results = load_results(args.results_dir)  # InputError -> one line, exit 2
+    out = Path(args.out) if args.out else Path(args.results_dir) / "report.pdf"
+    build_report(results, out)
+    print(f"wrote {out}")
+    return 0

@@ -1,0 +1,523 @@
+"""Vector charts (reportlab ``Drawing`` flowables) as pure functions of the results dict.
+
+A small axes helper (:class:`Axes`) maps data to drawing coordinates on linear or log scales,
+draws the frame, grid, ticks and axis labels; the chart functions only add the data.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+from reportlab.graphics.shapes import Circle, Drawing, Line, PolyLine, Rect, String
+from reportlab.lib import colors
+from reportlab.lib.colors import Color
+from reportlab.pdfbase.pdfmetrics import stringWidth
+
+from frp_assess.report import styles as st
+from frp_assess.report.tables import is_lower_bound, urm_case
+
+Results = Mapping[str, Any]
+FS = st.CHART_FONT_SIZE
+
+
+# --- scales and ticks ---------------------------------------------------------------------
+
+
+def nice_ticks(lo: float, hi: float, n: int = 6) -> list[float]:
+    """Round tick values covering [lo, hi] with about ``n`` intervals."""
+    if hi <= lo:
+        hi = lo + 1.0
+    raw = (hi - lo) / n
+    mag = 10 ** math.floor(math.log10(raw))
+    step = next(m * mag for m in (1, 2, 2.5, 5, 10) if m * mag >= raw)
+    first = math.floor(lo / step + 1e-9) * step
+    ticks = []
+    k = 0
+    while True:
+        v = first + k * step
+        if v > hi + step * 1e-6:
+            break
+        ticks.append(round(v, 12))
+        k += 1
+    return ticks
+
+
+def nice_range(lo: float, hi: float, n: int = 6) -> tuple[float, float, list[float]]:
+    """Extend [lo, hi] to the enclosing round ticks."""
+    ticks = nice_ticks(lo, hi, n)
+    if ticks[0] > lo:
+        ticks.insert(0, ticks[0] - (ticks[1] - ticks[0]))
+    if ticks[-1] < hi:
+        ticks.append(ticks[-1] + (ticks[1] - ticks[0]))
+    return ticks[0], ticks[-1], ticks
+
+
+def log_ticks(lo: float, hi: float) -> list[float]:
+    """1-2-5 ticks per decade between lo and hi (1 only when many decades)."""
+    decades = range(math.floor(math.log10(lo)), math.ceil(math.log10(hi)) + 1)
+    mults = (1, 2, 5) if len(decades) <= 5 else (1,)
+    return [m * 10.0**d for d in decades for m in mults if lo * 0.999 <= m * 10.0**d <= hi * 1.001]
+
+
+def tick_label(v: float) -> str:
+    if v == 0:
+        return "0"
+    return f"{v:g}"
+
+
+class Axes:
+    """One plot area inside a drawing."""
+
+    def __init__(
+        self,
+        drawing: Drawing,
+        x: float,
+        y: float,
+        w: float,
+        h: float,
+        xlim: tuple[float, float],
+        ylim: tuple[float, float],
+        *,
+        xlog: bool = False,
+        ylog: bool = False,
+    ) -> None:
+        self.d, self.x, self.y, self.w, self.h = drawing, x, y, w, h
+        self.xlim, self.ylim, self.xlog, self.ylog = xlim, ylim, xlog, ylog
+
+    def _f(self, v: float, lim: tuple[float, float], log: bool) -> float:
+        if log:
+            v = max(v, lim[0] * 1e-3)
+            return (math.log10(v) - math.log10(lim[0])) / (math.log10(lim[1]) - math.log10(lim[0]))
+        return (v - lim[0]) / (lim[1] - lim[0])
+
+    def tx(self, v: float) -> float:
+        return self.x + self.w * self._f(v, self.xlim, self.xlog)
+
+    def ty(self, v: float) -> float:
+        return self.y + self.h * self._f(v, self.ylim, self.ylog)
+
+    def frame(
+        self, xlabel: str, ylabel: str, xticks: Sequence[float], yticks: Sequence[float]
+    ) -> None:
+        d = self.d
+        for v in xticks:
+            px = self.tx(v)
+            d.add(Line(px, self.y, px, self.y + self.h, strokeColor=st.ZEBRA, strokeWidth=0.6))
+            d.add(Line(px, self.y, px, self.y - 3, strokeColor=st.INK, strokeWidth=0.6))
+            d.add(_text(px, self.y - 3 - FS, tick_label(v), anchor="middle"))
+        for v in yticks:
+            py = self.ty(v)
+            d.add(Line(self.x, py, self.x + self.w, py, strokeColor=st.ZEBRA, strokeWidth=0.6))
+            d.add(Line(self.x, py, self.x - 3, py, strokeColor=st.INK, strokeWidth=0.6))
+            d.add(_text(self.x - 5, py - FS * 0.35, tick_label(v), anchor="end"))
+        d.add(
+            Rect(
+                self.x, self.y, self.w, self.h, fillColor=None, strokeColor=st.INK, strokeWidth=0.7
+            )
+        )
+        d.add(_text(self.x + self.w / 2, self.y - 6 - 2.2 * FS, xlabel, anchor="middle"))
+        label_w = max((stringWidth(tick_label(v), st.FONT, FS) for v in yticks), default=10)
+        ylab = _text(0, 0, ylabel, anchor="middle")
+        from reportlab.graphics.shapes import Group
+
+        g = Group(ylab)
+        g.translate(self.x - label_w - 10, self.y + self.h / 2)
+        g.rotate(90)
+        d.add(g)
+
+    def line(
+        self,
+        xs: Sequence[float],
+        ys: Sequence[float],
+        color: Color,
+        width: float = 1.0,
+        dash: Sequence[float] | None = None,
+    ) -> None:
+        pts: list[float] = []
+        for a, b in zip(xs, ys, strict=True):
+            pts += [self.tx(a), self.ty(b)]
+        if len(pts) >= 4:
+            self.d.add(
+                PolyLine(
+                    pts,
+                    strokeColor=color,
+                    strokeWidth=width,
+                    strokeDashArray=dash,
+                    strokeLineJoin=1,
+                    strokeLineCap=1,
+                )
+            )
+
+    def hline(
+        self,
+        y: float,
+        color: Color,
+        width: float = 0.9,
+        dash: Sequence[float] = (4, 2),
+        label: str | None = None,
+    ) -> None:
+        py = self.ty(y)
+        self.d.add(
+            Line(
+                self.x,
+                py,
+                self.x + self.w,
+                py,
+                strokeColor=color,
+                strokeWidth=width,
+                strokeDashArray=list(dash),
+            )
+        )
+        if label:
+            self.d.add(_text(self.x + self.w - 3, py + 2.5, label, anchor="end", color=color))
+
+    def marker(
+        self,
+        x: float,
+        y: float,
+        color: Color,
+        *,
+        hollow: bool = False,
+        shape: str = "o",
+        size: float = 2.6,
+    ) -> None:
+        add_marker(self.d, self.tx(x), self.ty(y), color, hollow=hollow, shape=shape, size=size)
+
+
+def add_marker(
+    d: Drawing,
+    px: float,
+    py: float,
+    color: Color,
+    *,
+    hollow: bool = False,
+    shape: str = "o",
+    size: float = 2.6,
+) -> None:
+    fill = colors.white if hollow else color
+    if shape == "s":
+        d.add(
+            Rect(
+                px - size,
+                py - size,
+                2 * size,
+                2 * size,
+                fillColor=fill,
+                strokeColor=color,
+                strokeWidth=0.8,
+            )
+        )
+    elif shape == "^":
+        from reportlab.graphics.shapes import Polygon
+
+        d.add(
+            Polygon(
+                [px - size * 1.1, py - size, px + size * 1.1, py - size, px, py + size * 1.2],
+                fillColor=fill,
+                strokeColor=color,
+                strokeWidth=0.8,
+            )
+        )
+    else:
+        d.add(Circle(px, py, size, fillColor=fill, strokeColor=color, strokeWidth=0.8))
+
+
+def new_drawing(width: float, height: float) -> Drawing:
+    """An empty drawing whose default font is the report's (no base-14 font is pulled in)."""
+    st.register_fonts()
+    return Drawing(width, height, initialFontName=st.FONT, initialFontSize=FS)
+
+
+def _text(
+    x: float,
+    y: float,
+    text: str,
+    *,
+    anchor: str = "start",
+    size: float = FS,
+    color: Color = st.INK,
+    bold: bool = False,
+) -> String:
+    st.register_fonts()
+    return String(
+        x,
+        y,
+        text,
+        fontName=st.FONT_BOLD if bold else st.FONT,
+        fontSize=size,
+        fillColor=color,
+        textAnchor=anchor,
+    )
+
+
+def legend(
+    d: Drawing,
+    x: float,
+    y: float,
+    items: Sequence[tuple[str, dict[str, Any]]],
+    *,
+    dy: float = FS * 1.55,
+) -> None:
+    """Vertical legend from (x, y) downwards; item style keys: color, width, dash, marker."""
+    for i, (label, sty) in enumerate(items):
+        yy = y - i * dy
+        if sty.get("width", 0) > 0:
+            d.add(
+                Line(
+                    x,
+                    yy + FS * 0.35,
+                    x + 16,
+                    yy + FS * 0.35,
+                    strokeColor=sty["color"],
+                    strokeWidth=sty["width"],
+                    strokeDashArray=sty.get("dash"),
+                )
+            )
+        if sty.get("marker"):
+            add_marker(
+                d,
+                x + 8,
+                yy + FS * 0.35,
+                sty["color"],
+                shape=sty["marker"],
+                hollow=sty.get("hollow", False),
+            )
+        d.add(_text(x + 20, yy, label))
+
+
+# --- the charts ---------------------------------------------------------------------------
+
+
+def spectra_chart(
+    results: Results, *, width: float = st.FRAME_WIDTH, height: float = 230, log_x: bool = True
+) -> Drawing:
+    """Target spectrum, every record's 5 % spectrum and their mean, Sa [g] against T [s]."""
+    s = results["seismic"]
+    periods = [float(t) for t in s["periods"]]
+    target = [float(v) for v in s["target_sa"]]
+    mean = [float(v) for v in s["mean_sa"]]
+    rec_sa = [[float(v) for v in r["sa"]] for r in results["records"] if r.get("sa")]
+    d = new_drawing(width, height)
+    x0, y0 = 46.0, 34.0
+    w, h = width - x0 - 150, height - y0 - 10
+    if log_x:
+        pos = [t for t in periods if t > 0]
+        xlim = (min(pos), max(pos))
+        xticks = log_ticks(*xlim)
+    else:
+        xlim0, xlim1, xticks = nice_range(0.0, max(periods))
+        xlim = (xlim0, xlim1)
+    top = max([*target, *mean, *(v for sa in rec_sa for v in sa)], default=1.0)
+    ylo, yhi, yticks = nice_range(0.0, top * 1.05)
+    ax = Axes(d, x0, y0, w, h, xlim, (ylo, yhi), xlog=log_x)
+    ax.frame(
+        "period T [s]" + (" (log scale)" if log_x else ""),
+        "spectral acceleration Sa [g]",
+        xticks,
+        yticks,
+    )
+    keep = [i for i, t in enumerate(periods) if (t > 0 or not log_x)]
+
+    def sel(vals: Sequence[float]) -> tuple[list[float], list[float]]:
+        return [periods[i] for i in keep], [vals[i] for i in keep]
+
+    for sa in rec_sa:
+        ax.line(*sel(sa), color=st.RECORD_LINE, width=0.6)
+    ax.line(*sel([0.9 * v for v in target]), color=st.TARGET, width=0.8, dash=[1.5, 2])
+    ax.line(*sel(target), color=st.TARGET, width=1.6)
+    ax.line(*sel(mean), color=st.MEAN_LINE, width=1.4, dash=[5, 2])
+    legend(
+        d,
+        x0 + w + 14,
+        y0 + h - FS,
+        [
+            ("target spectrum", {"color": st.TARGET, "width": 1.6}),
+            ("90 % of target", {"color": st.TARGET, "width": 0.8, "dash": [1.5, 2]}),
+            (
+                f"mean of {len(rec_sa)} records",
+                {"color": st.MEAN_LINE, "width": 1.4, "dash": [5, 2]},
+            ),
+            ("each record (5 % damping)", {"color": st.RECORD_LINE, "width": 0.8}),
+        ],
+    )
+    return d
+
+
+SERIES_KEYS = ("material", "position")
+
+
+def option_series(results: Results) -> dict[tuple[str, str], list[Mapping[str, Any]]]:
+    """Options grouped by (material, position), each sorted by FRP mass."""
+    groups: dict[tuple[str, str], list[Mapping[str, Any]]] = {}
+    for c in results["cases"]:
+        if c.get("material") is None:
+            continue
+        groups.setdefault((c["material"], c["position"]), []).append(c)
+    for v in groups.values():
+        v.sort(key=lambda c: (c["frp_mass"], c["ratio"]))
+    return dict(sorted(groups.items()))
+
+
+def _series_style(key: tuple[str, str], i: int) -> dict[str, Any]:
+    mat, pos = key
+    color = st.MATERIAL_COLOURS.get(mat, st.SERIES[i % len(st.SERIES)])
+    centred = pos == "centred"
+    return {
+        "color": color,
+        "width": 1.1,
+        "dash": [3, 2] if centred else None,
+        "marker": "o" if centred else "s",
+    }
+
+
+def options_chart(
+    results: Results, quantity: str, *, width: float = st.FRAME_WIDTH, height: float = 215
+) -> Drawing:
+    """``quantity`` ('improvement' or 'capacity_demand') against the FRP mass of the wall [kg]."""
+    labels = {
+        "improvement": "level of seismic improvement I [–]",
+        "capacity_demand": "capacity / demand [–]",
+    }
+    groups = option_series(results)
+    urm = urm_case(results)
+    d = new_drawing(width, height)
+    x0, y0 = 46.0, 34.0
+    w, h = width - x0 - 150, height - y0 - 10
+    cases = [c for v in groups.values() for c in v] + [urm]
+    xs = [float(c["frp_mass"]) for c in cases]
+    ys = [float(c[quantity]) for c in cases]
+    target = float(results["model"]["target"])
+    if quantity == "capacity_demand":
+        ys.append(target)
+    xlo, xhi, xticks = nice_range(0.0, max(xs) * 1.03 or 1.0)
+    ylo, yhi, yticks = nice_range(0.0, max(ys) * 1.05)
+    ax = Axes(d, x0, y0, w, h, (xlo, xhi), (ylo, yhi))
+    ax.frame("FRP installed on the whole wall [kg]", labels[quantity], xticks, yticks)
+    if quantity == "capacity_demand":
+        ax.hline(target, st.PASS, label=f"target = {target:g}")
+    else:
+        ax.hline(1.0, st.MUTED, dash=(2, 2), label="unreinforced = 1")
+    items: list[tuple[str, dict[str, Any]]] = []
+    any_bound = False
+    for i, (key, cs) in enumerate(groups.items()):
+        sty = _series_style(key, i)
+        ax.line(
+            [c["frp_mass"] for c in cs],
+            [c[quantity] for c in cs],
+            sty["color"],
+            sty["width"],
+            sty["dash"],
+        )
+        for c in cs:
+            lb = is_lower_bound(c)
+            any_bound |= lb
+            ax.marker(c["frp_mass"], c[quantity], sty["color"], shape=sty["marker"], hollow=lb)
+        items.append((f"{key[0]} {key[1]}", sty))
+    ax.marker(urm["frp_mass"], urm[quantity], st.INK, shape="^")
+    items.append(("unreinforced wall", {"color": st.INK, "width": 0, "marker": "^"}))
+    rec = next((c for c in results["cases"] if c["name"] == results.get("recommended")), None)
+    if rec is not None:
+        px, py = ax.tx(rec["frp_mass"]), ax.ty(rec[quantity])
+        d.add(Circle(px, py, 6.5, fillColor=None, strokeColor=st.INK, strokeWidth=0.9))
+        items.append(
+            ("recommended (ringed)", {"color": st.INK, "width": 0, "marker": "o", "hollow": True})
+        )
+    legend(d, x0 + w + 14, y0 + h - FS, items)
+    note_y = y0 + h - FS - (len(items) + 0.6) * FS * 1.55
+    d.add(_text(x0 + w + 14, note_y, "ρ = 1, 2, 3 ‰ along each line", color=st.MUTED))
+    if any_bound:
+        d.add(_text(x0 + w + 14, note_y - FS * 1.4, "open marker: lower bound", color=st.MUTED))
+        d.add(_text(x0 + w + 14, note_y - FS * 2.6, "(no collapse ≤ C_max)", color=st.MUTED))
+    return d
+
+
+def _clip_series(
+    t: Sequence[float], y: Sequence[float], ymax: float
+) -> tuple[list[float], list[float], float | None]:
+    """Cut the series where it first exceeds ``ymax`` (interpolated); return the cut time."""
+    xs: list[float] = []
+    ys: list[float] = []
+    for i, (a, b) in enumerate(zip(t, y, strict=True)):
+        if b > ymax:
+            if i > 0:
+                a0, b0 = t[i - 1], y[i - 1]
+                tc = a0 + (a - a0) * (ymax - b0) / (b - b0)
+                xs.append(tc)
+                ys.append(ymax)
+                return xs, ys, tc
+            return xs, ys, a
+        xs.append(a)
+        ys.append(b)
+    return xs, ys, None
+
+
+def _thin(t: Sequence[float], *ys: Sequence[float], n_max: int = 1800) -> list[list[float]]:
+    step = max(1, math.ceil(len(t) / n_max))
+    return [list(t[::step])] + [list(y[::step]) for y in ys]
+
+
+def history_chart(
+    results: Results, *, width: float = st.FRAME_WIDTH, height: float = 400
+) -> Drawing | None:
+    """θ/α(t) and bar strain ε(t) [‰] of the governing case, at collapse and just below."""
+    gov = results.get("governing")
+    if not gov or not gov.get("runs"):
+        return None
+    runs = gov["runs"]
+    rupture = gov.get("rupture_strain")
+    has_strain = rupture is not None or any(any(r.get("strain") or []) for r in runs)
+    d = new_drawing(width, height)
+    x0 = 46.0
+    w = width - x0 - 150
+    panel_h = (height - 2 * 40) / 2 if has_strain else height - 44
+    t_end = max(max(r["time"]) for r in runs if r.get("time"))
+    xlo, xhi, xticks = nice_range(0.0, t_end)
+    below = [r for r in runs if not r.get("collapsed")]
+    peak_below = max((max(abs(v) for v in r["theta_over_alpha"]) for r in below), default=1.0)
+    ymax_theta = max(1.5, math.ceil(peak_below * 1.4 * 2) / 2)
+    ymin_theta = min(0.0, min(min(r["theta_over_alpha"]) for r in runs))
+    ymin_theta = max(ymin_theta, -ymax_theta)
+    ylo, yhi, yticks = nice_range(ymin_theta, ymax_theta)
+    y_theta = 40.0 + (panel_h + 40 if has_strain else 0)
+    ax = Axes(d, x0, y_theta, w, panel_h, (xlo, xhi), (ylo, yhi))
+    ax.frame("time t [s]", "rotation θ/α [–]", xticks, yticks)
+    ax.hline(1.0, st.MUTED, dash=(3, 2), label="θ = α")
+    if ylo < 0:
+        ax.hline(-1.0, st.MUTED, dash=(3, 2))
+    items = []
+    notes = []
+    for run in runs:
+        color = st.COLLAPSE_RUN if run.get("collapsed") else st.BELOW_RUN
+        t, th, _ = _thin(
+            run["time"], run["theta_over_alpha"], run.get("strain") or [0.0] * len(run["time"])
+        )
+        xs, ys, cut = _clip_series(t, [max(v, ylo) for v in th], yhi)
+        ax.line(xs, ys, color, 0.8)
+        if cut is not None:
+            ax.marker(cut, yhi, color, shape="^", size=3)
+            notes.append((color, f"leaves the plot at t = {cut:.2f} s"))
+        items.append(
+            (f"{run['label']}, C = {run['multiplier']:.3f}", {"color": color, "width": 1.4})
+        )
+    legend(d, x0 + w + 14, y_theta + panel_h - FS, items)
+    ny = y_theta + panel_h - FS - (len(items) + 0.5) * FS * 1.55
+    for color, text in notes:
+        d.add(_text(x0 + w + 14, ny, "▲ " + text, color=color))
+        d.add(_text(x0 + w + 14, ny - FS * 1.3, "(overturns)", color=color))
+        ny -= FS * 3
+    if has_strain:
+        strains = [1e3 * abs(v) for r in runs for v in (r.get("strain") or [0.0])]
+        top = max([*strains, 1e3 * (rupture or 0.0)])
+        slo, shi, sticks = nice_range(0.0, top * 1.1 or 1.0)
+        ax2 = Axes(d, x0, 40.0, w, panel_h, (xlo, xhi), (slo, shi))
+        ax2.frame("time t [s]", "bar strain ε [‰]", xticks, sticks)
+        if rupture is not None:
+            ax2.hline(1e3 * rupture, st.TARGET, label=f"rupture ε_max = {1e3 * rupture:.2f} ‰")
+        for run in runs:
+            color = st.COLLAPSE_RUN if run.get("collapsed") else st.BELOW_RUN
+            t, sn = _thin(run["time"], run.get("strain") or [0.0] * len(run["time"]))
+            ax2.line(t, [1e3 * abs(v) for v in sn], color, 0.8)
+        legend(d, x0 + w + 14, 40.0 + panel_h - FS, items)
+    return d

@@ -1,0 +1,220 @@
+"""The PDF assessment report: a pure function of the results dict (docs/results-json.md).
+
+Public API: :func:`load_results`, :func:`build_story`, :func:`build_report`.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+from collections.abc import Mapping
+from pathlib import Path
+from typing import Any
+
+from reportlab.lib.units import mm
+from reportlab.pdfbase.pdfmetrics import stringWidth
+from reportlab.pdfgen.canvas import Canvas
+from reportlab.platypus import BaseDocTemplate, Flowable, Frame, PageTemplate, Paragraph
+
+from frp_assess.errors import InputError
+from frp_assess.report import sections
+from frp_assess.report import styles as st
+
+#: top-level keys the report reads
+REQUIRED_KEYS = (
+    "project",
+    "wall",
+    "model",
+    "materials",
+    "costs",
+    "seismic",
+    "demand",
+    "records",
+    "compliance",
+    "code_check",
+    "cases",
+)
+
+
+def load_results(results_dir: str | Path) -> dict[str, Any]:
+    """Read ``results_dir/results.json``; anything missing or malformed is an InputError."""
+    d = Path(results_dir)
+    if not d.is_dir():
+        raise InputError("not a results directory (does not exist)", file=str(d))
+    path = d / "results.json"
+    if not path.is_file():
+        raise InputError("no results.json here; run `frp-assess run` first", file=str(d))
+    try:
+        results = json.loads(path.read_text(encoding="utf-8"))
+    except json.JSONDecodeError as exc:
+        raise InputError(f"invalid JSON: {exc.msg}", file=str(path), line=exc.lineno) from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise InputError(f"cannot read: {exc}", file=str(path)) from None
+    if not isinstance(results, dict):
+        raise InputError("expected a JSON object", file=str(path))
+    if results.get("schema_version") != 1:
+        raise InputError(
+            f"unsupported schema_version {results.get('schema_version')!r} (expected 1)",
+            file=str(path),
+            key="schema_version",
+        )
+    for key in REQUIRED_KEYS:
+        if key not in results:
+            raise InputError("missing", file=str(path), key=key)
+    if not results["cases"]:
+        raise InputError("no cases", file=str(path), key="cases")
+    return results
+
+
+def build_story(results: Mapping[str, Any]) -> list[Flowable]:
+    """The flowables of the seven sections, in order."""
+    st.register_fonts()
+    story: list[Flowable] = []
+    for part in (
+        sections.summary,
+        sections.inputs,
+        sections.seismic,
+        sections.unreinforced,
+        sections.options,
+        sections.governing,
+        sections.method,
+    ):
+        story += part(results)
+    return story
+
+
+def _fit(text: str, font: str, size: float, width: float) -> str:
+    """``text`` shortened with an ellipsis to fit ``width``."""
+    if stringWidth(text, font, size) <= width:
+        return text
+    while text and stringWidth(text + "…", font, size) > width:
+        text = text[:-1]
+    return text + "…"
+
+
+class NumberedCanvas(Canvas):
+    """Canvas that writes 'page n of N' once the number of pages is known."""
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self._saved: list[dict[str, Any]] = []
+
+    def showPage(self) -> None:  # noqa: N802 (reportlab API)
+        self._saved.append(dict(self.__dict__))
+        self._startPage()
+
+    def save(self) -> None:
+        total = len(self._saved)
+        for state in self._saved:
+            self.__dict__.update(state)
+            self._draw_page_number(total)
+            super().showPage()
+        super().save()
+
+    def _draw_page_number(self, total: int) -> None:
+        self.setFont(st.FONT, 7.5)
+        self.setFillColor(st.MUTED)
+        self.drawRightString(
+            st.PAGE_SIZE[0] - st.MARGIN_X, 10 * mm, f"page {self._pageNumber} of {total}"
+        )
+
+
+class ReportTemplate(BaseDocTemplate):
+    """A4 portrait, one frame, header and footer, PDF outline from the section headings."""
+
+    def __init__(self, filename: str, results: Mapping[str, Any]) -> None:
+        p = results.get("project", {})
+        super().__init__(
+            filename,
+            pagesize=st.PAGE_SIZE,
+            leftMargin=st.MARGIN_X,
+            rightMargin=st.MARGIN_X,
+            topMargin=st.MARGIN_TOP,
+            bottomMargin=st.MARGIN_BOTTOM,
+            title=f"Seismic assessment – {p.get('name') or 'wall'}",
+            author=str(p.get("engineer") or ""),
+            subject="Rocking masonry wall retrofitted with vertical FRP rebars",
+            creator=f"frp-assess {results.get('software', {}).get('version', '')}",
+            invariant=1,
+            initialFontName=st.FONT,
+            initialFontSize=st.BODY_SIZE,
+        )
+        self.results = results
+        frame = Frame(
+            self.leftMargin,
+            self.bottomMargin,
+            self.width,
+            self.height,
+            id="body",
+            leftPadding=0,
+            rightPadding=0,
+            topPadding=0,
+            bottomPadding=0,
+        )
+        self.addPageTemplates([PageTemplate(id="page", frames=[frame], onPage=self._decorate)])
+        self._outline = 0
+
+    def _decorate(self, canv: Canvas, doc: BaseDocTemplate) -> None:
+        r = self.results
+        p = r.get("project", {})
+        w, h = st.PAGE_SIZE
+        canv.saveState()
+        canv.setStrokeColor(st.RULE)
+        canv.setLineWidth(0.5)
+        top = h - 12 * mm
+        canv.line(st.MARGIN_X, top - 2.5, w - st.MARGIN_X, top - 2.5)
+        canv.setFont(st.FONT_BOLD, 8)
+        canv.setFillColor(st.INK)
+        right = "Seismic assessment · vertical FRP rebars"
+        right_w = stringWidth(right, st.FONT, 8)
+        name = _fit(
+            str(p.get("name") or "Unnamed project"), st.FONT_BOLD, 8, st.FRAME_WIDTH - right_w - 12
+        )
+        canv.drawString(st.MARGIN_X, top, name)
+        canv.setFont(st.FONT, 8)
+        canv.setFillColor(st.MUTED)
+        canv.drawRightString(w - st.MARGIN_X, top, right)
+        canv.line(st.MARGIN_X, 13.5 * mm, w - st.MARGIN_X, 13.5 * mm)
+        canv.setFont(st.FONT, 7.5)
+        sw = r.get("software", {})
+        foot = (
+            f"{sw.get('name', 'frp-assess')} {sw.get('version', '')} · results of "
+            f"{r.get('created', '?')} · {r.get('input_file') or ''}"
+        )
+        canv.drawString(st.MARGIN_X, 10 * mm, _fit(foot, st.FONT, 7.5, st.FRAME_WIDTH - 80))
+        canv.restoreState()
+
+    def afterFlowable(self, flowable: Flowable) -> None:  # noqa: N802 (reportlab API)
+        if isinstance(flowable, Paragraph) and flowable.style.name in ("h1", "h2"):
+            key = f"s{self._outline}"
+            self._outline += 1
+            self.canv.bookmarkPage(key)
+            level = 0 if flowable.style.name == "h1" else 1
+            self.canv.addOutlineEntry(flowable.getPlainText(), key, level=level, closed=True)
+
+
+def _umask() -> int:
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return mask
+
+
+def build_report(results: Mapping[str, Any], out_path: Path | str) -> None:
+    """Write the PDF to ``out_path`` atomically (temp file in the same directory, then rename).
+
+    Two builds from the same results give byte-identical files.
+    """
+    out_path = Path(out_path)
+    out_path.parent.mkdir(parents=True, exist_ok=True)
+    story = build_story(results)
+    fd, tmp = tempfile.mkstemp(dir=out_path.parent, prefix=f".{out_path.name}.", suffix=".tmp")
+    os.close(fd)
+    try:
+        doc = ReportTemplate(tmp, results)
+        doc.build(story, canvasmaker=NumberedCanvas)
+        os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes 0600; give the usual permissions
+        os.replace(tmp, out_path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise

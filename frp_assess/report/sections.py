@@ -1,0 +1,519 @@
+"""The seven sections of the report, each a list of flowables built from the results dict."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+from reportlab.lib.units import mm
+from reportlab.platypus import CondPageBreak, Flowable, KeepTogether, PageBreak
+
+from frp_assess.report import charts
+from frp_assess.report import tables as tb
+from frp_assess.report.flow import esc, gap, grid, key_value, markup, para
+
+Results = Mapping[str, Any]
+MECHANISM_TEXT = {
+    "one-sided": "one-sided rocking (the wall leans against transverse walls or floors on one "
+    "side, so it can only rotate outwards and rebounds at each impact)",
+    "two-sided": "two-sided rocking (a free-standing wall or parapet, rotating about either "
+    "base edge)",
+}
+
+
+def h1(text: str) -> Flowable:
+    return markup(esc(text), "h1")
+
+
+def h2(text: str) -> Flowable:
+    return markup(esc(text), "h2")
+
+
+def _verdict(ok: bool, text: str) -> Flowable:
+    return markup(text, "verdict_ok" if ok else "verdict_bad")
+
+
+def _option_sentence(results: Results, c: Mapping[str, Any]) -> str:
+    cur = results["costs"]["currency"]
+    lb = tb.is_lower_bound(c)
+    return (
+        f"<b>{esc(c['name'])}</b>: {tb.fmt_mass(c['frp_mass'])} kg of {esc(c['material'])} "
+        f"({tb.fmt_mass(c['frp_mass_per_m'])} kg per metre of wall), indicative cost "
+        f"{tb.fmt_cost(c['frp_cost'])} {esc(cur)}; capacity/demand "
+        f"{esc(tb.bound(tb.fmt_ratio(c['capacity_demand']), lb))}, improvement "
+        f"{esc(tb.bound(tb.fmt_ratio(c['improvement']), lb))} × the unreinforced wall"
+        + ("" if c["meets_target"] else " (does <b>not</b> reach the target)")
+        + "."
+    )
+
+
+# --- 1 Summary ----------------------------------------------------------------------------
+
+
+def summary(results: Results) -> list[Flowable]:
+    p = results.get("project", {})
+    w = results["wall"]
+    s = results["seismic"]
+    urm = tb.urm_case(results)
+    target = results["model"]["target"]
+    demand = results["demand"]["pga"]
+    n_rec = len(results["records"])
+    out: list[Flowable] = [
+        para(p.get("name") or "Unnamed project", "title"),
+        markup(
+            "Out-of-plane seismic assessment of a rocking masonry wall and of its retrofit with "
+            "vertical FRP rebars (incremental dynamic analysis)"
+            + "<br/>"
+            + esc(" · ".join(x for x in (p.get("location"), p.get("engineer")) if x))
+            + (" · " if (p.get("location") or p.get("engineer")) else "")
+            + f"results of {esc(results.get('created', ''))}",
+            "subtitle",
+        ),
+        h1("1  Summary"),
+    ]
+    mech = MECHANISM_TEXT.get(w["mechanism"], esc(w["mechanism"]))
+    out.append(
+        markup(
+            f"<b>The wall.</b> {w['thickness']:.2f} m thick, {w['height']:.2f} m high and "
+            f"{w['length']:.2f} m long, "
+            f"{esc(w.get('masonry_description') or w.get('masonry') or 'masonry')} "
+            f"({w['unit_weight']:g} kN/m³), assessed for {esc(mech)}. Its slenderness is "
+            f"α = {w['alpha_deg']:.2f}° and it starts rocking at a<sub>RM</sub> = "
+            f"{tb.fmt_acc(w['a_rm'])} g."
+        )
+    )
+    site = esc(p.get("location") or "the site")
+    comp = results["compliance"]
+    out.append(
+        markup(
+            f"<b>The site and the demand.</b> {site}: {esc(s['spectrum'].get('name') or '')}; "
+            f"design ground acceleration a<sub>g</sub>·S = {tb.fmt_acc(demand)} g. "
+            f"{n_rec} {esc(s.get('records_kind', ''))} records, "
+            + (
+                "compatible with the spectrum (all code checks passed)."
+                if comp["passed"]
+                else "<b>NOT all spectrum-compatibility checks passed</b> (see section 3)."
+            )
+        )
+    )
+    ok = bool(urm["meets_target"])
+    lb = tb.is_lower_bound(urm)
+    out.append(
+        markup(
+            f"<b>The wall as it is.</b> Over the {n_rec} records the unreinforced wall "
+            f"overturns at a mean ground acceleration a<sub>dyn</sub> = "
+            f"{esc(tb.bound(tb.fmt_acc(tb.design_a_dyn(urm)), lb))} g, i.e. "
+            f"{esc(tb.bound(tb.fmt_ratio(urm['capacity_demand']), lb))} times the demand."
+        )
+    )
+    out.append(
+        _verdict(
+            ok,
+            (
+                "Verdict: the unreinforced wall is adequate"
+                if ok
+                else "Verdict: the unreinforced wall is NOT adequate"
+            )
+            + f" (capacity/demand {esc(tb.bound(tb.fmt_ratio(urm['capacity_demand']), lb))} "
+            + ("≥" if ok else "<")
+            + f" target {target:g}).",
+        )
+    )
+    k = results["code_check"]
+    out.append(
+        markup(
+            "For comparison, the linear kinematic check of NTC 2018 / Circolare 2019 §C8.7.1 "
+            f"gives a<sub>0</sub>* = {tb.fmt_acc(k['a0_star'])} g against "
+            f"{tb.fmt_acc(k['demand'])} g (ratio {tb.fmt_ratio(k['ratio'])}: "
+            + ("satisfied" if k["passed"] else "not satisfied")
+            + "). The dynamic analysis accounts for the wall's rocking capacity beyond "
+            "activation, which the static check ignores.",
+            "small",
+        )
+    )
+    rec = tb.case_by_name(results, results.get("recommended"))
+    ranked = tb.ranked_options(results)
+    if rec is not None:
+        out.append(markup("<b>Recommended retrofit.</b> " + _option_sentence(results, rec)))
+        out.append(
+            markup(
+                "It is the cheapest option that meets the target (ranking rule: "
+                f"{esc(results.get('ranking_rule', ''))})",
+                "small",
+            )
+        )
+        alts = [c for c in ranked if c is not rec][:3]
+        if alts:
+            out.append(markup("<b>Alternatives</b>, next in the ranking:"))
+            for c in alts:
+                out.append(markup(_option_sentence(results, c), "bullet"))
+    elif ranked:
+        out.append(
+            _verdict(
+                False,
+                f"No retrofit option examined reaches capacity/demand ≥ {target:g}. "
+                "The best ones are:",
+            )
+        )
+        for c in ranked[:3]:
+            out.append(markup(_option_sentence(results, c), "bullet"))
+    else:
+        out.append(para("No retrofit option was examined."))
+    out.append(gap(4))
+    data = tb.summary_table(results)
+    widths = [25 * mm, 37 * mm, 18 * mm, 18 * mm, 20 * mm, 17 * mm, 20 * mm, 15 * mm]
+    out.append(
+        grid(
+            data, widths, wrap=(0, 1), numeric_from=2, highlight_rows=[1] if rec is not None else []
+        )
+    )
+    out.append(
+        para(
+            f"All accelerations in g; costs are indicative ({results['costs']['currency']}, "
+            "material at the stated price per kg plus installation per metre of wall and layer "
+            "of bars) and must be confirmed by quotes. Full list of options: section 5.",
+            "caption",
+        )
+    )
+    out.append(PageBreak())
+    return out
+
+
+# --- 2 Inputs -----------------------------------------------------------------------------
+
+
+def inputs(results: Results) -> list[Flowable]:
+    w = results["wall"]
+    out: list[Flowable] = [h1("2  Inputs"), h2("2.1  Project and software")]
+    out.append(key_value(tb.software_rows(results)))
+    out.append(h2("2.2  Wall, masonry and mechanism"))
+    rows = tb.wall_rows(results)
+    rows[-1] = ["mechanism", MECHANISM_TEXT.get(w["mechanism"], w["mechanism"])]
+    out.append(key_value(rows))
+    out.append(h2("2.3  FRP materials"))
+    data = tb.materials_table(results)
+    out.append(grid(data, [18 * mm, 16 * mm, 14 * mm, 22 * mm, 22 * mm, 82 * mm], wrap=(5,)))
+    out.append(
+        para(
+            "Prices are indicative defaults or user inputs, not quotes. ε_u is the ultimate "
+            "tensile strain of the bar; the design rupture strain is ε_max = c·ε_u "
+            f"with c = {results['model']['strain_factor']:g}.",
+            "caption",
+        )
+    )
+    out.append(h2("2.4  Model options and IDA settings"))
+    out.append(key_value(tb.model_rows(results), sub_values=True))
+    return out
+
+
+# --- 3 Seismic input ----------------------------------------------------------------------
+
+
+def seismic(results: Results) -> list[Flowable]:
+    out: list[Flowable] = [PageBreak(), h1("3  Seismic input"), h2("3.1  Target spectrum")]
+    out.append(key_value(tb.spectrum_rows(results), sub_values=True, verbatim_rows=(0, 1)))
+    out.append(h2("3.2  Records"))
+    out.append(
+        grid(
+            tb.records_table(results),
+            [22 * mm, 62 * mm, 20 * mm, 22 * mm, 18 * mm, 22 * mm],
+            wrap=(0, 1),
+            numeric_from=2,
+        )
+    )
+    out.append(gap(6))
+    out.append(
+        KeepTogether(
+            [
+                charts.spectra_chart(results),
+                para(
+                    "Figure 1. Elastic response spectra at 5 % damping: the target, 90 % of it, "
+                    "each record's spectrum and their mean (the quantity the code checks compare).",
+                    "caption",
+                ),
+            ]
+        )
+    )
+    comp = results["compliance"]
+    out.append(CondPageBreak(60 * mm))
+    out.append(h2("3.3  Code compliance of the record set"))
+    out.append(
+        grid(
+            tb.compliance_table(results),
+            [12 * mm, 32 * mm, 48 * mm, 44 * mm, 20 * mm, 14 * mm],
+            wrap=(1, 2, 3),
+            numeric_from=4,
+        )
+    )
+    out.append(
+        _verdict(
+            bool(comp["passed"]), "All checks passed." if comp["passed"] else "Some checks FAILED."
+        )
+    )
+    return out
+
+
+# --- 4 Unreinforced wall ------------------------------------------------------------------
+
+
+def unreinforced(results: Results) -> list[Flowable]:
+    urm = tb.urm_case(results)
+    out: list[Flowable] = [
+        PageBreak(),
+        h1("4  The unreinforced wall"),
+        h2("4.1  Rocking properties"),
+    ]
+    out.append(key_value(tb.wall_property_rows(results), sub_values=True))
+    out.append(h2("4.2  Incremental dynamic analysis, record by record"))
+    out.append(grid(tb.case_records_table(urm), [30 * mm, 28 * mm, 40 * mm, 28 * mm, 24 * mm]))
+    out.append(
+        para(
+            "C: the smallest multiplier of the record that overturns the wall (first collapse); "
+            "a_dyn = C·PGA; q = a_dyn / a_RM. 'no collapse ≤ C_max': the wall did not overturn "
+            "up to the largest multiplier tried.",
+            "caption",
+        )
+    )
+    out.append(key_value(tb.case_summary_rows(results, urm), sub_values=True))
+    out.append(h2("4.3  Dynamic assessment next to the code kinematic check"))
+    out.append(
+        grid(tb.comparison_table(results), [62 * mm, 24 * mm, 24 * mm, 28 * mm, 30 * mm], wrap=(0,))
+    )
+    out.append(gap(6))
+    out.append(key_value(tb.code_check_rows(results), sub_values=True))
+    note = results["code_check"].get("note")
+    if note:
+        out.append(para(note, "caption"))
+    return out
+
+
+# --- 5 Retrofit options -------------------------------------------------------------------
+
+
+def options(results: Results) -> list[Flowable]:
+    out: list[Flowable] = [PageBreak(), h1("5  Retrofit options"), h2("5.1  Ranking")]
+    out.append(para("Ranking rule: " + results.get("ranking_rule", ""), "small"))
+    data = tb.ranking_table(results)
+    rec_name = results.get("recommended")
+    hl = [i for i, r in enumerate(data.rows) if r[1] == rec_name]
+    widths = [9, 26, 11, 14, 8, 12, 12, 11, 15, 13, 16, 16, 11]
+    out.append(
+        grid(
+            data, [x * mm for x in widths], wrap=(1,), small=True, numeric_from=4, highlight_rows=hl
+        )
+    )
+    out.append(
+        markup(
+            "ρ: ratio of the active bars to the wall cross-section (external bars: the same on "
+            "each face, so twice the quantity is installed). FRP masses per metre of wall and "
+            "for the whole wall; costs indicative. q = a<sub>dyn</sub>/a<sub>RM</sub>; "
+            "improvement = a<sub>dyn</sub> / a<sub>dyn</sub> of the unreinforced wall; "
+            "capacity/demand = a<sub>dyn</sub> / a<sub>g</sub>·S. '≥': lower bound, some record "
+            "did not overturn up to C_max. Highlighted: the recommended option.",
+            "caption",
+        )
+    )
+    out.append(CondPageBreak(90 * mm))
+    out.append(h2("5.2  Effect of the FRP quantity"))
+    out.append(
+        KeepTogether(
+            [
+                charts.options_chart(results, "improvement"),
+                para(
+                    "Figure 2. Level of seismic improvement against the FRP installed on the wall, "
+                    "one line per material and position.",
+                    "caption",
+                ),
+            ]
+        )
+    )
+    out.append(
+        KeepTogether(
+            [
+                charts.options_chart(results, "capacity_demand"),
+                para(
+                    "Figure 3. Capacity/demand against the FRP installed on the wall; options "
+                    "above the target line meet it.",
+                    "caption",
+                ),
+            ]
+        )
+    )
+    out.append(CondPageBreak(50 * mm))
+    out.append(h2("5.3  Design mode: the smallest ratio that meets the target"))
+    if results.get("design"):
+        out.append(
+            grid(
+                tb.design_table(results),
+                [16 * mm, 18 * mm, 20 * mm, 20 * mm, 18 * mm, 18 * mm, 64 * mm],
+                wrap=(6,),
+                numeric_from=2,
+            )
+        )
+    else:
+        out.append(para("Design mode was not run for this project."))
+    out.append(CondPageBreak(80 * mm))
+    out.append(h2("5.4  a_dyn [g] of every option and record"))
+    mat = tb.a_dyn_matrix(results)
+    n = len(mat.header) - 1
+    other = (174 - 34) / max(n, 1)
+    out.append(grid(mat, [34 * mm] + [other * mm] * n, wrap=(0,), small=True))
+    out.append(para("n.c.: no collapse up to C_max for that record.", "caption"))
+    return out
+
+
+# --- 6 Governing time history -------------------------------------------------------------
+
+
+def governing(results: Results) -> list[Flowable]:
+    out: list[Flowable] = [PageBreak(), h1("6  The governing time history")]
+    gov = results.get("governing")
+    if not gov or not gov.get("runs"):
+        out.append(para("No time history is stored in the results."))
+        return out
+    rs = gov.get("rupture_strain")
+    out.append(
+        markup(
+            f"Case <b>{esc(gov['case'])}</b>, record <b>{esc(gov['record'])}</b> (the record "
+            "that overturns it at the smallest multiplier). The response at the collapse "
+            "multiplier and just below it shows how the wall fails"
+            + (
+                f"; the bar ruptures when its strain reaches ε<sub>max</sub> = "
+                f"{1e3 * rs:.2f} ‰ (c·ε<sub>u</sub>)."
+                if rs is not None
+                else "."
+            )
+        )
+    )
+    out.append(
+        grid(
+            tb.governing_runs_table(results),
+            [30 * mm, 26 * mm, 26 * mm, 22 * mm, 26 * mm, 26 * mm],
+            wrap=(0,),
+        )
+    )
+    out.append(gap(8))
+    chart = charts.history_chart(results)
+    if chart is not None:
+        out.append(chart)
+        out.append(
+            para(
+                "Figure 4. Rotation θ/α (θ = α: the wall has rotated as far as its slenderness; "
+                "collapse is judged at the end of the record or on overturning) and strain of "
+                "the acting bar, at the collapse multiplier (red) and just below it (blue).",
+                "caption",
+            )
+        )
+    return out
+
+
+# --- 7 Method and references --------------------------------------------------------------
+
+EQUATIONS = [
+    (
+        "Equation of motion (paper Eq. 10), s = sgn θ",
+        "θ'' = −p²·[ sin(α·s − θ) + (ü<sub>g</sub>/g)·cos(α·s − θ) + K<sub>s</sub>·sin θ ],   "
+        "p² = 3g/(4R),   K = sin α·tan α·(r<sub>p</sub>/2)·E·A/(m·g),   r<sub>p</sub> = 1 centred, "
+        "4 external; K<sub>s</sub> = K while the bar acting on side s is intact, 0 after rupture.",
+    ),
+    (
+        "Restitution at impact (Housner; paper Eq. 13–14)",
+        "r<sub>2</sub> = (1 − 1.5·sin²α)² two-sided; r<sub>1</sub> = [(1 − 1.5·sin²α)²·"
+        "(1 − 1.5·cos²α)]² one-sided; convention 'energy': |θ'<sub>+</sub>| = √r·|θ'<sub>−</sub>|; "
+        "'velocity': |θ'<sub>+</sub>| = r·|θ'<sub>−</sub>|.",
+    ),
+    (
+        "Bar rupture (paper Eq. 11–12)",
+        "θ<sub>max</sub> = 2·asin(ε<sub>max</sub>·H / (2·b<sub>r</sub>)), ε<sub>max</sub> = "
+        "c·ε<sub>u</sub>, b<sub>r</sub> = B/2 centred, B external; 'energy-transfer': "
+        "½I<sub>0</sub>θ'<sub>+</sub>² = ½I<sub>0</sub>θ'<sub>−</sub>² + U<sub>r</sub>(θ<sub>max"
+        "</sub>), U<sub>r</sub> = ½·(E·A/H)·e², e = 2·b<sub>r</sub>·sin(θ/2).",
+    ),
+    (
+        "Incremental dynamic analysis",
+        "C<sub>0</sub> = a<sub>RM</sub>/PGA; C = C<sub>0</sub>·s<sup>k</sup> until the first "
+        "collapse (C ≤ C_max), then bisection to (C<sub>hi</sub> − C<sub>lo</sub>) ≤ "
+        "tol·C<sub>hi</sub>; a<sub>dyn</sub> = C<sub>hi</sub>·PGA.",
+    ),
+    (
+        "Force reduction factor (paper Eq. 15–16)",
+        "q = a<sub>dyn</sub> / a<sub>RM</sub>, a<sub>RM</sub> = g·tan α.",
+    ),
+    (
+        "Improvement and capacity/demand",
+        "I = mean a<sub>dyn</sub>(retrofitted) / mean a<sub>dyn</sub>(unreinforced); "
+        "capacity/demand = mean a<sub>dyn</sub> / (a<sub>g</sub>·S).",
+    ),
+]
+
+ASSUMPTIONS = [
+    "The wall is a rigid monolithic block rocking about its base edges (no sliding, no "
+    "bouncing, no crushing of the edge); the analysis is per metre of wall.",
+    "The FRP bars are unbonded, not prestressed, anchored at the base and the top, linear "
+    "elastic up to a brittle rupture at ε_max = c·ε_u; they carry no load at rest, so they "
+    "do not change a_RM.",
+    "Collapse follows the chosen criterion (section 2.4); the collapse multiplier is the "
+    "first one that overturns the wall.",
+    "With 7 or more records the mean a_dyn is the design value (EN 1998-1 §4.3.3.4.3, "
+    "NTC 2018 §7.3.5); with fewer, the least favourable.",
+    "Response spectra by the exact piecewise-linear recurrence at 5 % damping.",
+    "Prices and costs are indicative (material price per kg plus installation per metre of "
+    "wall and layer of bars); they serve to rank the options, not to estimate the works.",
+    "Anchorages, end plates, local crushing and the connection to the rest of the building are "
+    "outside the model and must be designed separately.",
+]
+
+REFERENCES = [
+    "[1] Masonry Walls Retrofitted with Vertical FRP Rebars. Materials (MDPI). Source paper of "
+    "the model (equations, IDA procedure, material data); for the authors, year and DOI see "
+    "the reference itself.",
+    "[2] Housner, G. W. (1963). The behavior of inverted pendulum structures during "
+    "earthquakes. Bulletin of the Seismological Society of America, 53(2), 403–417.",
+    "[3] EN 1998-1:2004. Eurocode 8: Design of structures for earthquake resistance – Part 1: "
+    "General rules, seismic actions and rules for buildings. CEN, Brussels.",
+    "[4] NTC 2018. Aggiornamento delle «Norme tecniche per le costruzioni», D.M. 17 gennaio "
+    "2018. Gazzetta Ufficiale n. 42, 20 febbraio 2018.",
+    "[5] Circolare 21 gennaio 2019, n. 7 C.S.LL.PP. Istruzioni per l'applicazione dell'«"
+    "Aggiornamento delle Norme tecniche per le costruzioni» di cui al D.M. 17 gennaio 2018.",
+    "[6] Gasparini, D. A., Vanmarcke, E. H. (1976). Simulated earthquake motions compatible "
+    "with prescribed response spectra (SIMQKE). MIT Department of Civil Engineering, "
+    "Research Report R76-4.",
+    "[7] Nigam, N. C., Jennings, P. C. (1969). Calculation of response spectra from "
+    "strong-motion earthquake records. Bulletin of the Seismological Society of America, "
+    "59(2), 909–922.",
+    "[8] CNR-DT 203/2006. Guide for the design and construction of concrete structures "
+    "reinforced with fiber-reinforced polymer bars. CNR, Rome (ranges of FRP bar properties).",
+]
+
+
+def method(results: Results) -> list[Flowable]:
+    out: list[Flowable] = [PageBreak(), h1("7  Method and references"), h2("7.1  Equations")]
+    for title, eq in EQUATIONS:
+        out.append(markup(f"<b>{esc(title)}.</b>"))
+        out.append(markup(eq, "equation"))
+    out.append(
+        para(
+            "Symbols: B, H thickness and height; R = ½√(B² + H²); m mass per metre; I₀ = "
+            "(4/3)·m·R²; E, A elastic modulus and area of the active bars (A = ρ·B per metre); "
+            "ü_g ground acceleration scaled by C. The equation is integrated with every event "
+            "(uplift, impact, rupture, collapse) located inside the time step.",
+            "small",
+        )
+    )
+    out.append(h2("7.2  Assumptions"))
+    for a in ASSUMPTIONS:
+        out.append(markup("• " + esc(a), "bullet"))
+    out.append(h2("7.3  References"))
+    for r in REFERENCES:
+        out.append(para(r, "reference"))
+    sw = results.get("software", {})
+    out.append(gap(6))
+    out.append(
+        para(
+            f"Report generated by {sw.get('name', 'frp-assess')} {sw.get('version', '')} from "
+            f"results.json of {results.get('created', '')}; every number in it is read from that "
+            "file.",
+            "small",
+        )
+    )
+    return out

@@ -1,0 +1,531 @@
+"""Table contents as pure functions of the results dict (docs/results-json.md).
+
+Every function returns plain text (not markup): :mod:`frp_assess.report.document` escapes it.
+Header cells are the exception: they are constant markup written here (sub/superscripts).
+Number formats, used everywhere in the report:
+
+- accelerations in g: 3 decimals (:func:`fmt_acc`);
+- ratios (capacity/demand, improvement): 2 decimals (:func:`fmt_ratio`), q too (:func:`fmt_q`);
+- IDA multipliers: 3 decimals; masses: 1 decimal (kg); costs: 0 decimals with thousands commas.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+Results = Mapping[str, Any]
+DASH = "—"
+NO_COLLAPSE = "no collapse ≤ C_max"
+
+
+@dataclass(frozen=True)
+class TableData:
+    """Header (markup, constant) and body rows (plain text)."""
+
+    header: list[str]
+    rows: list[list[str]]
+
+
+# --- number formats -----------------------------------------------------------------------
+
+
+def fmt_acc(x: float | None) -> str:
+    return DASH if x is None else f"{x:.3f}"
+
+
+def fmt_ratio(x: float | None) -> str:
+    return DASH if x is None else f"{x:.2f}"
+
+
+fmt_q = fmt_ratio
+
+
+def fmt_mult(x: float | None) -> str:
+    return NO_COLLAPSE if x is None else f"{x:.3f}"
+
+
+def fmt_mass(x: float | None) -> str:
+    return DASH if x is None else f"{x:.1f}"
+
+
+def fmt_cost(x: float | None) -> str:
+    return DASH if x is None else f"{x:,.0f}"
+
+
+def fmt_permille(x: float | None) -> str:
+    """ρ in ‰: at most 2 decimals, trailing zeros dropped (2 → '2', 1.579 → '1.58')."""
+    if x is None:
+        return DASH
+    return f"{x:.2f}".rstrip("0").rstrip(".")
+
+
+def fmt_num(x: Any, digits: int = 3) -> str:
+    """Generic value: numbers to ``digits`` significant figures, others as text."""
+    if x is None:
+        return DASH
+    if isinstance(x, bool):
+        return "yes" if x else "no"
+    if isinstance(x, int):
+        return str(x)
+    if isinstance(x, float):
+        return f"{x:.{digits}g}"
+    return str(x)
+
+
+def yes_no(x: bool | None) -> str:
+    return DASH if x is None else ("yes" if x else "no")
+
+
+def pass_fail(x: bool | None) -> str:
+    return DASH if x is None else ("pass" if x else "FAIL")
+
+
+# --- helpers on the results ---------------------------------------------------------------
+
+
+def urm_case(results: Results) -> Mapping[str, Any]:
+    """The unreinforced wall: the case without material (the first by contract)."""
+    for c in results["cases"]:
+        if c.get("material") is None:
+            return c
+    return results["cases"][0]
+
+
+def ranked_options(results: Results) -> list[Mapping[str, Any]]:
+    """Retrofit options by rank (1 first); unranked options last, in file order."""
+    opts = [c for c in results["cases"] if c.get("material") is not None]
+    return sorted(opts, key=lambda c: (c.get("rank") is None, c.get("rank") or 0))
+
+
+def is_lower_bound(case: Mapping[str, Any]) -> bool:
+    """Some record did not collapse up to C_max: the case's means are lower bounds."""
+    if case.get("lower_bound"):
+        return True
+    return any(r.get("collapse_multiplier") is None for r in case.get("records", []))
+
+
+def design_a_dyn(case: Mapping[str, Any]) -> float:
+    """The design value of a_dyn: ``design_a_dyn`` if stored, else the mean."""
+    value = case.get("design_a_dyn")
+    return float(case["mean_a_dyn"] if value is None else value)
+
+
+def uses_mean(results: Results) -> bool:
+    value = results.get("model", {}).get("design_value")
+    return value is None or str(value).startswith("mean")
+
+
+def a_dyn_label(results: Results) -> str:
+    """Header markup of the design a_dyn column."""
+    return "mean a<sub>dyn</sub> [g]" if uses_mean(results) else "min a<sub>dyn</sub> [g]"
+
+
+def bound(text: str, lower: bool) -> str:
+    return f"≥ {text}" if lower and text != DASH else text
+
+
+def case_by_name(results: Results, name: str | None) -> Mapping[str, Any] | None:
+    for c in results["cases"]:
+        if c["name"] == name:
+            return c
+    return None
+
+
+def position_text(pos: str | None) -> str:
+    return DASH if pos is None else pos
+
+
+# --- the tables ---------------------------------------------------------------------------
+
+RANKING_HEADER = [
+    "rank",
+    "option",
+    "mate-<br/>rial",
+    "position",
+    "ρ [‰]",
+    "FRP<br/>[kg/m]",
+    "FRP wall<br/>[kg]",
+    "cost<br/>[{cur}]",
+    "{a_dyn}",
+    "mean q",
+    "improve-<br/>ment",
+    "capacity /<br/>demand",
+    "meets<br/>target",
+]
+
+
+def ranking_row(case: Mapping[str, Any]) -> list[str]:
+    lb = is_lower_bound(case)
+    return [
+        DASH if case.get("rank") is None else str(case["rank"]),
+        case["name"],
+        case.get("material") or "none",
+        position_text(case.get("position")),
+        fmt_permille(case.get("ratio")),
+        fmt_mass(case["frp_mass_per_m"]),
+        fmt_mass(case["frp_mass"]),
+        fmt_cost(case["frp_cost"]),
+        bound(fmt_acc(design_a_dyn(case)), lb),
+        bound(fmt_q(case["mean_q"]), lb),
+        bound(fmt_ratio(case["improvement"]), lb),
+        bound(fmt_ratio(case["capacity_demand"]), lb),
+        yes_no(case["meets_target"]),
+    ]
+
+
+def ranking_table(results: Results) -> TableData:
+    """Unreinforced wall first, then every option by rank."""
+    cur = results["costs"]["currency"]
+    header = [h.format(cur=cur, a_dyn=a_dyn_label(results)) for h in RANKING_HEADER]
+    rows = [ranking_row(urm_case(results))] + [ranking_row(c) for c in ranked_options(results)]
+    return TableData(header, rows)
+
+
+def summary_table(results: Results, n_alternatives: int = 3) -> TableData:
+    """The unreinforced wall, the recommended option and the best alternatives."""
+    cur = results["costs"]["currency"]
+    header = [
+        "",
+        "option",
+        "FRP wall [kg]",
+        f"cost [{cur}]",
+        a_dyn_label(results),
+        "improve-<br/>ment",
+        "capacity /<br/>demand",
+        "meets<br/>target",
+    ]
+    ranked = ranked_options(results)
+    chosen: list[tuple[str, Mapping[str, Any]]] = [("existing", urm_case(results))]
+    rec = case_by_name(results, results.get("recommended"))
+    if rec is not None:
+        chosen.append(("recommended", rec))
+    others = [c for c in ranked if c is not rec][:n_alternatives]
+    chosen += [(f"alternative {i}" if rec else f"best {i}", c) for i, c in enumerate(others, 1)]
+    rows = []
+    for role, c in chosen:
+        lb = is_lower_bound(c)
+        rows.append(
+            [
+                role,
+                c["name"],
+                fmt_mass(c["frp_mass"]),
+                fmt_cost(c["frp_cost"]),
+                bound(fmt_acc(design_a_dyn(c)), lb),
+                bound(fmt_ratio(c["improvement"]), lb),
+                bound(fmt_ratio(c["capacity_demand"]), lb),
+                yes_no(c["meets_target"]),
+            ]
+        )
+    return TableData(header, rows)
+
+
+def wall_rows(results: Results) -> list[list[str]]:
+    w = results["wall"]
+    return [
+        ["thickness B", f"{w['thickness']:.3f} m"],
+        ["height H", f"{w['height']:.3f} m"],
+        ["length L", f"{w['length']:.3f} m"],
+        ["masonry", w.get("masonry_description") or w.get("masonry") or DASH],
+        ["unit weight w", f"{w['unit_weight']:g} kN/m³"],
+        ["mechanism", w["mechanism"]],
+    ]
+
+
+def wall_property_rows(results: Results) -> list[list[str]]:
+    w = results["wall"]
+    return [
+        ["slenderness α (tan α = B/H)", f"{w['alpha']:.4f} rad = {w['alpha_deg']:.2f}°"],
+        ["half diagonal R", f"{w['R']:.3f} m"],
+        ["frequency parameter p", f"{w['p']:.3f} rad/s"],
+        ["mass per metre m", f"{w['mass']:.1f} kg/m"],
+        ["rocking activation a_RM = g·tan α", f"{fmt_acc(w['a_rm'])} g"],
+    ]
+
+
+def materials_table(results: Results) -> TableData:
+    cur = results["costs"]["currency"]
+    header = [
+        "material",
+        "E [GPa]",
+        "ε<sub>u</sub> [–]",
+        "density [kg/m³]",
+        f"price [{cur}/kg]",
+        "source",
+    ]
+    rows = [
+        [
+            name,
+            f"{m['elastic_modulus']:g}",
+            f"{m['ultimate_strain']:g}",
+            f"{m['density']:g}",
+            f"{m['price']:.2f}",
+            m.get("source") or DASH,
+        ]
+        for name, m in sorted(results["materials"].items())
+    ]
+    return TableData(header, rows)
+
+
+def model_rows(results: Results) -> list[list[str]]:
+    m = results["model"]
+    ida = m["ida"]
+    cur = results["costs"]["currency"]
+    rows = [
+        [
+            "restitution at impact",
+            f"{m['restitution']} (velocity ratio applied {m['restitution_ratio']:.3f})",
+        ],
+        ["rupture rule", m["rupture"]],
+        ["collapse criterion", m["collapse"]],
+        ["cyclic strain factor c (ε_max = c·ε_u)", f"{m['strain_factor']:g}"],
+        ["free-vibration tail", f"{m['free_vibration_tail']:g} s"],
+        ["target capacity/demand", f"≥ {m['target']:g}"],
+    ]
+    if m.get("design_value"):
+        rows.append(["design value of a_dyn", str(m["design_value"])])
+    rows += [
+        ["IDA step ratio s", f"{ida['step_ratio']:g}"],
+        ["IDA bisection tolerance", f"{ida['tolerance']:g} (relative)"],
+        ["IDA largest multiplier C_max", f"{ida['max_multiplier']:g} × C₀"],
+        [
+            "installation cost",
+            f"{fmt_cost(results['costs']['installation_per_metre'])} {cur} per metre of wall "
+            "and layer of bars (indicative)",
+        ],
+    ]
+    return rows
+
+
+def software_rows(results: Results) -> list[list[str]]:
+    p = results.get("project", {})
+    sw = results.get("software", {})
+    return [
+        ["project", p.get("name") or DASH],
+        ["location", p.get("location") or DASH],
+        ["engineer", p.get("engineer") or DASH],
+        ["notes", p.get("notes") or DASH],
+        ["project file", results.get("input_file") or DASH],
+        ["date of the run", results.get("created") or DASH],
+        ["software", f"{sw.get('name', 'frp-assess')} {sw.get('version', '?')}"],
+        ["results schema", str(results.get("schema_version", DASH))],
+    ]
+
+
+def spectrum_rows(results: Results) -> list[list[str]]:
+    s = results["seismic"]
+    sp = s["spectrum"]
+    params = ", ".join(f"{k} = {fmt_num(v, 4)}" for k, v in (sp.get("parameters") or {}).items())
+    rows = [
+        ["spectrum", sp.get("name") or sp.get("type") or DASH],
+        ["description", sp.get("description") or DASH],
+        ["parameters", params or DASH],
+        ["zero-period acceleration a_g·S", f"{fmt_acc(sp['ag_S'])} g"],
+    ]
+    corners = [f"{k} = {sp[k]:.3f} s" for k in ("T_B", "T_C", "T_D") if sp.get(k) is not None]
+    if corners:
+        rows.append(["corner periods", ", ".join(corners)])
+    rows.append(["demand a_g·S used for capacity/demand", f"{fmt_acc(results['demand']['pga'])} g"])
+    rows.append(["reference period T1 of the checks", f"{s['t1']:g} s"])
+    gen = s.get("generator")
+    if s.get("records_kind") == "artificial" and gen:
+        rows.append(
+            [
+                "records",
+                f"{gen['count']} artificial ({gen['method']}), seed {gen['seed']}, "
+                f"duration {gen['duration']:g} s, dt {gen['dt']:g} s",
+            ]
+        )
+    else:
+        rows.append(["records", f"{len(results['records'])} recorded accelerograms"])
+    return rows
+
+
+def records_table(results: Results) -> TableData:
+    header = ["record", "source / seed", "PGA [g]", "duration [s]", "dt [s]", "scale factor"]
+    rows = [
+        [
+            r["name"],
+            r.get("source") or DASH,
+            fmt_acc(r["pga"]),
+            f"{r['duration']:.2f}",
+            f"{r['dt']:g}",
+            f"{r.get('scale_factor', 1.0):.3f}",
+        ]
+        for r in results["records"]
+    ]
+    return TableData(header, rows)
+
+
+def fmt_margin(margin: float | None, unit: str | None) -> str:
+    if margin is None:
+        return DASH
+    if not unit:
+        return f"{margin:+.1%}"
+    return f"{margin:+g} {unit}"
+
+
+def compliance_table(results: Results) -> TableData:
+    header = ["code", "clause", "requirement", "found", "margin", "result"]
+    rows = [
+        [
+            c["code"],
+            c["clause"],
+            c["requirement"],
+            c["found"],
+            fmt_margin(c.get("margin"), c.get("unit")),
+            pass_fail(c["passed"]),
+        ]
+        for c in results["compliance"]["checks"]
+    ]
+    return TableData(header, rows)
+
+
+def case_records_table(case: Mapping[str, Any]) -> TableData:
+    header = ["record", "PGA [g]", "collapse multiplier C", "a<sub>dyn</sub> [g]", "q [–]"]
+    rows = [
+        [
+            r["record"],
+            fmt_acc(r["pga"]),
+            fmt_mult(r["collapse_multiplier"]),
+            fmt_acc(r["a_dyn"]),
+            fmt_q(r["q"]),
+        ]
+        for r in case["records"]
+    ]
+    return TableData(header, rows)
+
+
+def case_summary_rows(results: Results, case: Mapping[str, Any]) -> list[list[str]]:
+    lb = is_lower_bound(case)
+    rows = [
+        ["mean a_dyn over the records", bound(f"{fmt_acc(case['mean_a_dyn'])} g", lb)],
+        ["least favourable a_dyn", f"{fmt_acc(case['min_a_dyn'])} g"],
+        ["mean q = a_dyn / a_RM", bound(fmt_q(case["mean_q"]), lb)],
+        [
+            "capacity/demand = a_dyn / a_g·S",
+            bound(fmt_ratio(case["capacity_demand"]), lb)
+            + f" (demand {fmt_acc(results['demand']['pga'])} g)",
+        ],
+        [
+            f"meets the target (≥ {results['model']['target']:g})",
+            yes_no(case["meets_target"]),
+        ],
+    ]
+    if case.get("design_a_dyn") is not None and not uses_mean(results):
+        design = f"{fmt_acc(case['design_a_dyn'])} g"
+        rows.insert(2, ["design a_dyn (fewer than 7 records)", design])
+    return rows
+
+
+def code_check_rows(results: Results) -> list[list[str]]:
+    k = results["code_check"]
+    return [
+        ["α₀ (load multiplier activating the mechanism)", f"{k['alpha0']:.4f}"],
+        ["e* (participating mass fraction)", f"{k['e_star']:.3f}"],
+        ["M* (participating mass)", f"{k['M_star']:.1f} kg/m"],
+        [
+            "confidence factor FC",
+            f"{k['FC']:g} ({k.get('confidence_factor_level') or DASH})",
+        ],
+        ["behaviour factor q", f"{k['behaviour_factor']:g}"],
+        ["a₀* = α₀·g / (e*·FC)", f"{fmt_acc(k['a0_star'])} g"],
+        ["demand a_g·S / q", f"{fmt_acc(k['demand'])} g"],
+        ["ratio a₀* / demand", fmt_ratio(k["ratio"])],
+        ["verdict", "satisfied" if k["passed"] else "NOT satisfied"],
+    ]
+
+
+def comparison_table(results: Results) -> TableData:
+    """The IDA verdict of the unreinforced wall next to the code linear kinematic check."""
+    urm = urm_case(results)
+    k = results["code_check"]
+    lb = is_lower_bound(urm)
+    header = ["assessment", "capacity [g]", "demand [g]", "capacity / demand", "verdict"]
+    rows = [
+        [
+            "IDA, rocking dynamics (this report)",
+            bound(fmt_acc(design_a_dyn(urm)), lb),
+            fmt_acc(results["demand"]["pga"]),
+            bound(fmt_ratio(urm["capacity_demand"]), lb),
+            "satisfied" if urm["meets_target"] else "NOT satisfied",
+        ],
+        [
+            "NTC 2018 / Circ. 2019 §C8.7.1 linear kinematic",
+            fmt_acc(k["a0_star"]),
+            fmt_acc(k["demand"]),
+            fmt_ratio(k["ratio"]),
+            "satisfied" if k["passed"] else "NOT satisfied",
+        ],
+    ]
+    return TableData(header, rows)
+
+
+def design_table(results: Results) -> TableData:
+    cur = results["costs"]["currency"]
+    header = [
+        "material",
+        "position",
+        "smallest ρ [‰]",
+        "capacity / demand",
+        "FRP wall [kg]",
+        f"cost [{cur}]",
+        "note",
+    ]
+    rows = [
+        [
+            d["material"],
+            d["position"],
+            "none in range" if d.get("ratio") is None else fmt_permille(d["ratio"]),
+            fmt_ratio(d.get("capacity_demand")),
+            fmt_mass(d.get("frp_mass")),
+            fmt_cost(d.get("frp_cost")),
+            d.get("message") or "",
+        ]
+        for d in results.get("design") or []
+    ]
+    return TableData(header, rows)
+
+
+def a_dyn_matrix(results: Results) -> TableData:
+    """a_dyn [g] of every case and record, unreinforced wall first then by rank."""
+    names = [r["name"] for r in results["records"]]
+    header = ["option"] + names
+    cases: Sequence[Mapping[str, Any]] = [urm_case(results)] + ranked_options(results)
+    rows = []
+    for c in cases:
+        by_rec = {r["record"]: r for r in c["records"]}
+        cells = []
+        for n in names:
+            r = by_rec.get(n)
+            if r is None:
+                cells.append(DASH)
+            else:
+                cells.append("n.c." if r["a_dyn"] is None else fmt_acc(r["a_dyn"]))
+        rows.append([c["name"], *cells])
+    return TableData(header, rows)
+
+
+def governing_runs_table(results: Results) -> TableData:
+    header = ["run", "multiplier C", "a = C·PGA [g]", "collapsed", "peak θ/α [–]", "peak ε [‰]"]
+    gov = results.get("governing") or {}
+    pga = None
+    for r in results["records"]:
+        if r["name"] == gov.get("record"):
+            pga = r["pga"]
+    rows = []
+    for run in gov.get("runs", []):
+        th = run.get("theta_over_alpha") or [0.0]
+        st = run.get("strain") or [0.0]
+        rows.append(
+            [
+                run["label"],
+                fmt_mult(run["multiplier"]),
+                DASH if pga is None else fmt_acc(run["multiplier"] * pga),
+                yes_no(run["collapsed"]),
+                f"{max(abs(x) for x in th):.2f}",
+                f"{1e3 * max(abs(x) for x in st):.2f}",
+            ]
+        )
+    return TableData(header, rows)
