@@ -26,6 +26,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "records",
     "report",
     "schema",
+    "study",
 )
 
 
