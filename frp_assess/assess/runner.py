@@ -175,11 +175,11 @@ def design_search(
         k = hi
     s = evaluate(k)
     ratio = round(k * res, 6)
-    return DesignResult(
-        material,
-        position,
-        ratio,
-        s,
-        s.design_a_dyn / demand_g,
-        f"ρ = {ratio:g} ‰ is the smallest ratio (to {res:g} ‰) meeting the target",
-    )
+    if k == grid_lo:
+        message = (
+            f"ρ = {ratio:g} ‰, the lower end of ratio_range, already meets the target "
+            f"(a smaller ratio may too: lower ratio_range to find the smallest)"
+        )
+    else:
+        message = f"ρ = {ratio:g} ‰ is the smallest ratio (to {res:g} ‰) meeting the target"
+    return DesignResult(material, position, ratio, s, s.design_a_dyn / demand_g, message)

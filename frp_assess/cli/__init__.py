@@ -21,6 +21,7 @@ from frp_assess.errors import Cancelled, InputError
 COMMAND_MODULES: tuple[str, ...] = (
     "new",
     "validate",
+    "run",
     "simulate",
     "ida",
     "records",

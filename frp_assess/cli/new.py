@@ -9,6 +9,7 @@ from importlib import resources
 from pathlib import Path
 
 from frp_assess.errors import InputError
+from frp_assess.io_utils import atomic_write_text
 
 TEMPLATE_NAME = "Example wall"
 
@@ -41,7 +42,7 @@ def run(args: argparse.Namespace) -> int:
         name = json.dumps(name, ensure_ascii=False)  # a JSON string is a quoted YAML scalar
     text = template_text().replace(f"name: {TEMPLATE_NAME}", f"name: {name}", 1)
     try:
-        path.write_text(text, encoding="utf-8")
+        atomic_write_text(path, text)
     except OSError as exc:
         raise InputError(f"cannot write {path}: {exc.strerror}") from None
     print(f"created {path}: edit it, then 'frp-assess validate {path}' and 'frp-assess run {path}'")

@@ -40,6 +40,9 @@ RECORD_FORMATS = ("auto", "at2", "esm", "two-column", "one-column")
 RecordUnits = Literal["g", "m/s2", "m/s^2", "cm/s2", "cm/s^2", "gal"]
 #: the largest reinforcement ratio accepted [‰]
 MAX_RATIO = 20.0
+#: shortest artificial record [s]: the generator's envelope rise (2.5 s) + stationary part
+#: (10 s) + 1 s of decay (frp_assess.motions.simqke; a test keeps the two equal)
+MIN_ARTIFICIAL_DURATION = 13.5
 
 
 def located_error(message: str, *loc: str | int) -> PydanticCustomError:
@@ -217,7 +220,11 @@ class ArtificialRecords(_Model):
 
     count: Annotated[int, Strict()] = Field(7, ge=1, le=100, description="Number, 1-100 (7).")
     seed: Annotated[int, Strict()] = Field(1, description="Random seed (same seed, same set).")
-    duration: Number = Field(25.0, gt=0, description="Total duration [s] (25, NTC minimum).")
+    duration: Number = Field(
+        25.0,
+        ge=MIN_ARTIFICIAL_DURATION,
+        description=f"Total duration [s], >= {MIN_ARTIFICIAL_DURATION:g} (25, NTC minimum).",
+    )
     dt: Number = Field(0.005, gt=0, le=0.05, description="Time step [s], <= 0.05 (0.005).")
 
 

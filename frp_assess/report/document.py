@@ -6,8 +6,6 @@ Public API: :func:`load_results`, :func:`build_story`, :func:`build_report`.
 from __future__ import annotations
 
 import json
-import os
-import tempfile
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
@@ -18,6 +16,7 @@ from reportlab.pdfgen.canvas import Canvas
 from reportlab.platypus import BaseDocTemplate, Flowable, Frame, PageTemplate, Paragraph
 
 from frp_assess.errors import InputError
+from frp_assess.io_utils import atomic_path
 from frp_assess.report import sections
 from frp_assess.report import styles as st
 
@@ -194,12 +193,6 @@ class ReportTemplate(BaseDocTemplate):
             self.canv.addOutlineEntry(flowable.getPlainText(), key, level=level, closed=True)
 
 
-def _umask() -> int:
-    mask = os.umask(0o022)
-    os.umask(mask)
-    return mask
-
-
 def build_report(results: Mapping[str, Any], out_path: Path | str) -> None:
     """Write the PDF to ``out_path`` atomically (temp file in the same directory, then rename).
 
@@ -208,13 +201,6 @@ def build_report(results: Mapping[str, Any], out_path: Path | str) -> None:
     out_path = Path(out_path)
     out_path.parent.mkdir(parents=True, exist_ok=True)
     story = build_story(results)
-    fd, tmp = tempfile.mkstemp(dir=out_path.parent, prefix=f".{out_path.name}.", suffix=".tmp")
-    os.close(fd)
-    try:
-        doc = ReportTemplate(tmp, results)
+    with atomic_path(out_path) as tmp:
+        doc = ReportTemplate(str(tmp), results)
         doc.build(story, canvasmaker=NumberedCanvas)
-        os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes 0600; give the usual permissions
-        os.replace(tmp, out_path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise

@@ -23,8 +23,6 @@ import datetime as _dt
 import io
 import json
 import math
-import os
-import tempfile
 import threading
 import time
 from collections.abc import Callable, Iterable, Sequence
@@ -37,7 +35,7 @@ from frp_assess.assess.cache import IdaCache, record_digest, task_key
 from frp_assess.assess.runner import summarise
 from frp_assess.dynamics import IdaResult, IdaTask, default_jobs, run_batch
 from frp_assess.errors import Cancelled
-from frp_assess.io_utils import atomic_write_text
+from frp_assess.io_utils import atomic_open, atomic_write_text
 from frp_assess.motions import G, Record, generate_artificial, parse_spectrum
 from frp_assess.study.plan import Case, StudyPlan
 from frp_assess.study.schema import StudyFile
@@ -355,33 +353,14 @@ def _write_chunk(
     atomic_write_text(summary_path, _csv_text(summary_rows))
 
 
-class _AtomicFile:
-    """A text file written to a temporary name and renamed into place on success."""
-
-    def __init__(self, path: Path) -> None:
-        self.path = path
-        fd, self.tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-        self.fh = os.fdopen(fd, "w", encoding="utf-8", newline="")
-
-    def __enter__(self) -> io.TextIOWrapper:
-        return self.fh  # type: ignore[return-value]
-
-    def __exit__(self, exc_type: object, exc: object, tb: object) -> None:
-        self.fh.close()
-        if exc_type is None:
-            os.replace(self.tmp, self.path)
-        else:
-            Path(self.tmp).unlink(missing_ok=True)
-
-
 def _assemble(plan: StudyPlan, parts: Path, n_chunks: int, out_dir: Path) -> None:
     """Stream the part files into long.csv and summary.csv (with the improvement)."""
-    with _AtomicFile(out_dir / "long.csv") as fh:
+    with atomic_open(out_dir / "long.csv", newline="") as fh:
         fh.write(_csv_text([], LONG_COLUMNS))
         for k in range(n_chunks):
             fh.write(_chunk_paths(parts, k)[0].read_text(encoding="utf-8"))
     urm_mean: dict[int, float] = {}
-    with _AtomicFile(out_dir / "summary.csv") as fh:
+    with atomic_open(out_dir / "summary.csv", newline="") as fh:
         w = csv.writer(fh, lineterminator="\n")
         w.writerow(SUMMARY_COLUMNS)
         for k in range(n_chunks):

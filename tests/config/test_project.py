@@ -334,3 +334,17 @@ def test_exponent_without_dot_is_a_number() -> None:
     project = load_project_text(text, "e.yaml").project
     assert project.wall.length == 1.2 and project.analysis.ida.tolerance == 0.005
     assert yaml.safe_load("x: 5e-3") == {"x": "5e-3"}  # what PyYAML alone would give
+
+
+def test_min_artificial_duration_matches_the_generator():
+    """The schema's shortest artificial record equals what the SIMQKE generator accepts
+    (envelope rise + stationary part + 1 s), so no valid file fails later in the run."""
+    from frp_assess.config.schema import MIN_ARTIFICIAL_DURATION
+    from frp_assess.motions import preset_spectrum
+    from frp_assess.motions.simqke import DEFAULT_RISE, generate_artificial
+
+    assert MIN_ARTIFICIAL_DURATION == DEFAULT_RISE + 10.0 + 1.0
+    records = generate_artificial(
+        preset_spectrum("A2"), count=1, seed=1, duration=MIN_ARTIFICIAL_DURATION, dt=0.02
+    )
+    assert records[0].duration >= MIN_ARTIFICIAL_DURATION - 0.02

@@ -1,0 +1,138 @@
+"""From a validated project file (:mod:`frp_assess.config`) to :class:`AssessmentInputs`.
+
+The config layer knows YAML keys and their validation; the assessment knows domain objects.
+This module is the one place where the first is translated into the second, so that the CLI
+and the TUI build exactly the same inputs from the same project.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from frp_assess.assess.inputs import (
+    ArtificialRecords,
+    AssessmentInputs,
+    CodeCheckSettings,
+    Costs,
+    DesignRequest,
+    Material,
+    Option,
+    RecordFile,
+)
+from frp_assess.config import MASONRY, FrpMaterial, Project, load_project
+from frp_assess.config.schema import (
+    Ec8Spectrum,
+    Ntc2018Spectrum,
+    PresetSpectrum,
+    TableSpectrum,
+)
+from frp_assess.dynamics import IdaSettings, ModelOptions
+from frp_assess.motions import (
+    ElasticSpectrum,
+    ec8_spectrum,
+    ntc2018_spectrum,
+    preset_spectrum,
+    table_spectrum,
+)
+
+
+def spectrum_of(
+    spec: Ntc2018Spectrum | Ec8Spectrum | PresetSpectrum | TableSpectrum,
+) -> ElasticSpectrum:
+    """The elastic spectrum described by the ``seismic.spectrum`` block."""
+    if isinstance(spec, Ntc2018Spectrum):
+        return ntc2018_spectrum(
+            spec.ag, spec.F0, spec.Tc_star, spec.soil, spec.topography, spec.damping
+        )
+    if isinstance(spec, Ec8Spectrum):
+        return ec8_spectrum(spec.ag, spec.ground, spec.spectrum_type, spec.damping)
+    if isinstance(spec, PresetSpectrum):
+        return preset_spectrum(spec.name)
+    return table_spectrum(spec.periods, spec.accelerations, name="user table")
+
+
+def material_of(frp: FrpMaterial) -> Material:
+    return Material(
+        frp.name, frp.elastic_modulus, frp.ultimate_strain, frp.density, frp.price, frp.source
+    )
+
+
+def inputs_from_project(project: Project, base_dir: Path, input_file: str = "") -> AssessmentInputs:
+    """Map a validated :class:`Project` onto the assessment's inputs.
+
+    Record file paths are resolved against ``base_dir`` (the project file's folder).
+    """
+    wall, seismic, analysis = project.wall, project.seismic, project.analysis
+    table = {name: material_of(m) for name, m in project.material_table().items()}
+    options = tuple(
+        Option(str(o.name), table[o.material], o.position, float(o.ratio))
+        for o in project.expand_interventions()
+    )
+    spec = seismic.records
+    records: ArtificialRecords | tuple[RecordFile, ...]
+    if spec.artificial is not None:
+        a = spec.artificial
+        records = ArtificialRecords(a.count, a.seed, a.duration, a.dt)
+    else:
+        records = tuple(
+            RecordFile(str((base_dir / f.path).resolve()), f.format, f.units, f.dt, f.name)
+            for f in spec.files or ()
+        )
+    design = None
+    if project.design is not None:
+        d = project.design
+        design = DesignRequest(
+            tuple(table[m] for m in d.materials),
+            tuple(d.positions),
+            (float(d.ratio_range[0]), float(d.ratio_range[1])),
+            d.resolution,
+        )
+    info = project.project
+    masonry_description = ""
+    if wall.masonry is not None and wall.unit_weight is None:
+        masonry_description = MASONRY[wall.masonry].description
+    elif wall.masonry is not None:
+        masonry_description = f"{MASONRY[wall.masonry].description}; unit weight given explicitly"
+    return AssessmentInputs(
+        thickness=wall.thickness,
+        height=wall.height,
+        unit_weight=project.unit_weight_kn(),
+        mechanism=wall.mechanism,
+        spectrum=spectrum_of(seismic.spectrum),
+        records=records,
+        options=options,
+        length=wall.length,
+        masonry=wall.masonry,
+        masonry_description=masonry_description,
+        scale_to_spectrum=spec.scale_to_spectrum,
+        t1=seismic.t1,
+        model=ModelOptions(
+            restitution=analysis.restitution,
+            rupture=analysis.rupture,
+            collapse=analysis.collapse,
+            free_vibration_tail=analysis.free_vibration_tail,
+        ),
+        strain_factor=analysis.strain_factor,
+        ida=IdaSettings(
+            analysis.ida.step_ratio, analysis.ida.tolerance, analysis.ida.max_multiplier
+        ),
+        target=analysis.target,
+        costs=Costs(str(project.costs.currency), project.costs.installation_per_metre),
+        design=design,
+        code_check=CodeCheckSettings(
+            project.code_check.knowledge_level, project.code_check.behaviour_factor
+        ),
+        project={
+            "name": info.name,
+            "location": info.location,
+            "engineer": info.engineer,
+            "notes": info.notes,
+        },
+        input_file=input_file,
+    )
+
+
+def load_inputs(path: str | Path) -> AssessmentInputs:
+    """Load, validate and map a project file; errors are one-line :class:`InputError`."""
+    loaded = load_project(path)
+    return inputs_from_project(loaded.project, loaded.base_dir, str(loaded.path.name))

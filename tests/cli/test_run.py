@@ -1,0 +1,133 @@
+"""`frp-assess run`: a project file end to end, its errors, the cache, the worked examples."""
+
+from __future__ import annotations
+
+import json
+import shutil
+from pathlib import Path
+
+import pytest
+
+from frp_assess.assess.from_project import load_inputs
+from frp_assess.assess.inputs import ArtificialRecords, RecordFile
+from frp_assess.cli import main
+from frp_assess.config import FRP_MATERIALS
+
+ROOT = Path(__file__).resolve().parents[2]
+BROKEN = ROOT / "tests" / "config" / "broken"
+
+SMALL = """\
+project: {name: "Small <&> wall", engineer: Test}
+wall: {thickness: 0.3, height: 3.0, length: 5.0, unit_weight: 18.0, mechanism: one-sided}
+seismic:
+  spectrum: {type: preset, name: A2}
+  records:
+    artificial: {count: 3, seed: 7, duration: 14.0, dt: 0.01}
+materials:
+  GFRP: {price: 9.0}
+interventions:
+  - {material: GFRP, position: external, ratio: 1.0}
+  - {name: my carbon, material: CFRP, position: centred, ratio: 2}
+costs: {currency: EUR, installation_per_metre: 100.0}
+"""
+
+
+def test_small_project_end_to_end_and_instant_rerun(tmp_path, capsys):
+    """The whole run writes every result file; a rerun computes nothing (all from the cache)
+    and gives the same results.json."""
+    project = tmp_path / "small.yaml"
+    project.write_text(SMALL, encoding="utf-8")
+    assert main(["run", str(project), "--no-pdf", "--jobs", "2"]) == 0
+    out_dir = tmp_path / "small-results"
+    names = {p.name for p in out_dir.iterdir()}
+    assert {"results.json", "results.csv", "spectra.csv", "records"} <= names
+    assert "report.pdf" not in names
+    first = json.loads((out_dir / "results.json").read_text())
+    assert [c["name"] for c in first["cases"]] == ["Unreinforced", "GFRP external 1‰", "my carbon"]
+    assert first["demand"]["pga"] == pytest.approx(0.106)
+    assert first["project"]["name"] == "Small <&> wall"
+    gfrp = first["cases"][1]
+    # 1 ‰ of 0.3 m x 5 m on each face, GFRP density 2000 kg/m3, bars 3 m long
+    assert gfrp["frp_mass"] == pytest.approx(2 * 0.001 * 0.3 * 5.0 * 3.0 * 2000.0, rel=1e-9)
+    out = capsys.readouterr().out
+    assert "Spectrum compatibility" in out and "Recommended" in out
+
+    assert main(["run", str(project), "--no-pdf"]) == 0
+    assert "0 IDAs computed" in capsys.readouterr().out
+    second = json.loads((out_dir / "results.json").read_text())
+    first.pop("created"), second.pop("created")
+    assert first == second
+
+
+@pytest.mark.parametrize(
+    "name", ["unknown-key.yaml", "thickness-ge-height.yaml", "yaml-syntax.yaml"]
+)
+def test_broken_project_exit_2_one_line_nothing_written(tmp_path, capsys, name):
+    project = tmp_path / name
+    shutil.copy(BROKEN / name, project)
+    assert main(["run", str(project)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and name in err
+    assert list(tmp_path.iterdir()) == [project]
+
+
+def test_interrupted_run_exits_130_without_results(tmp_path, capsys, monkeypatch):
+    """Ctrl-C during the IDA: exit 130, a message, no results.json."""
+    import frp_assess.cli.run as run_cmd
+
+    def interrupted(*args, **kwargs):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(run_cmd, "run_assessment", interrupted)
+    project = tmp_path / "small.yaml"
+    project.write_text(SMALL, encoding="utf-8")
+    assert main(["run", str(project), "--no-pdf"]) == 130
+    assert "interrupted" in capsys.readouterr().err
+    assert not (tmp_path / "small-results" / "results.json").exists()
+
+
+def test_project_maps_onto_inputs(tmp_path):
+    """Every block of the file reaches the assessment: overrides, names, paths, settings."""
+    (tmp_path / "recs").mkdir()
+    text = (
+        SMALL.replace(
+            "    artificial: {count: 3, seed: 7, duration: 14.0, dt: 0.01}",
+            "    files: [{path: recs/a.txt, format: two-column, units: cm/s2}]\n"
+            "    scale_to_spectrum: false",
+        )
+        + "analysis: {restitution: 0.9, collapse: first-exceedance, strain_factor: 0.4}\n"
+    )
+    (tmp_path / "recs" / "a.txt").write_text("0 0\n0.01 1\n0.02 0\n")
+    project = tmp_path / "p.yaml"
+    project.write_text(text, encoding="utf-8")
+    inputs = load_inputs(project)
+    assert inputs.records == (
+        RecordFile(str((tmp_path / "recs" / "a.txt").resolve()), "two-column", "cm/s2"),
+    )
+    assert inputs.scale_to_spectrum is False
+    assert inputs.model.restitution == 0.9 and inputs.model.collapse == "first-exceedance"
+    assert inputs.strain_factor == 0.4
+    gfrp = inputs.options[0].material
+    assert gfrp.price == 9.0 and gfrp.elastic_modulus == FRP_MATERIALS["GFRP"].elastic_modulus
+    assert inputs.options[1].name == "my carbon" and inputs.options[1].ratio == 2.0
+    assert inputs.costs.installation_per_metre == 100.0
+    assert inputs.input_file == "p.yaml"
+
+
+@pytest.mark.parametrize(
+    "name", ["facade-laquila.yaml", "paper-case.yaml", "boundary-wall-records.yaml"]
+)
+def test_worked_examples_load(name):
+    inputs = load_inputs(ROOT / "projects" / name)
+    assert inputs.options
+    if isinstance(inputs.records, ArtificialRecords):
+        assert inputs.records.count == 7
+    else:
+        assert all(Path(r.path).is_file() for r in inputs.records)
+
+
+def test_ntc_example_spectrum():
+    """facade-laquila: NTC 2018 soil C, a_g = 0.261 g, F0 = 2.36 -> S_S = 1.00 <= 1.70 -
+    0.60*F0*a_g/g = 1.330 (Tab. 3.2.IV), so a_g*S = 0.3472 g."""
+    inputs = load_inputs(ROOT / "projects" / "facade-laquila.yaml")
+    assert inputs.spectrum.pga_g == pytest.approx(0.261 * (1.70 - 0.60 * 2.36 * 0.261), rel=1e-9)
