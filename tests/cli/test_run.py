@@ -131,3 +131,16 @@ def test_ntc_example_spectrum():
     0.60*F0*a_g/g = 1.330 (Tab. 3.2.IV), so a_g*S = 0.3472 g."""
     inputs = load_inputs(ROOT / "projects" / "facade-laquila.yaml")
     assert inputs.spectrum.pga_g == pytest.approx(0.261 * (1.70 - 0.60 * 2.36 * 0.261), rel=1e-9)
+
+
+def test_run_writes_the_report_and_report_rebuilds_it_identically(tmp_path):
+    """`run` writes report.pdf from a real run; `frp-assess report DIR` rebuilds it from
+    results.json alone, byte for byte (reportlab invariant mode, issue 5)."""
+    project = tmp_path / "small.yaml"
+    project.write_text(SMALL, encoding="utf-8")
+    assert main(["run", str(project), "--jobs", "2"]) == 0
+    out_dir = tmp_path / "small-results"
+    pdf = (out_dir / "report.pdf").read_bytes()
+    assert pdf.startswith(b"%PDF")
+    assert main(["report", str(out_dir), "--out", str(tmp_path / "again.pdf")]) == 0
+    assert (tmp_path / "again.pdf").read_bytes() == pdf
