@@ -441,8 +441,9 @@ EQUATIONS = [
     ),
     (
         "Improvement and capacity/demand",
-        "I = mean a<sub>dyn</sub>(retrofitted) / mean a<sub>dyn</sub>(unreinforced); "
-        "capacity/demand = mean a<sub>dyn</sub> / (a<sub>g</sub>·S).",
+        "I = a<sub>dyn,d</sub>(retrofitted) / a<sub>dyn,d</sub>(unreinforced); "
+        "capacity/demand = a<sub>dyn,d</sub> / (a<sub>g</sub>·S), where the design value "
+        "a<sub>dyn,d</sub> is the mean over the records (7 or more), else the least favourable.",
     ),
 ]
 
@@ -464,9 +465,9 @@ ASSUMPTIONS = [
 ]
 
 REFERENCES = [
-    "[1] Masonry Walls Retrofitted with Vertical FRP Rebars. Materials (MDPI). Source paper of "
-    "the model (equations, IDA procedure, material data); for the authors, year and DOI see "
-    "the reference itself.",
+    "[1] Masonry Walls Retrofitted with Vertical FRP Rebars (journal article; authors and year "
+    "are not restated by frp-assess). Source of the model: equation of motion, restitution, "
+    "bar rupture, IDA procedure and parametric study.",
     "[2] Housner, G. W. (1963). The behavior of inverted pendulum structures during "
     "earthquakes. Bulletin of the Seismological Society of America, 53(2), 403–417.",
     "[3] EN 1998-1:2004. Eurocode 8: Design of structures for earthquake resistance – Part 1: "
