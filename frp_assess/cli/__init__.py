@@ -22,6 +22,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "new",
     "validate",
     "run",
+    "tui",
     "simulate",
     "ida",
     "records",

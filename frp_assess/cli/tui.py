@@ -1,0 +1,43 @@
+"""`frp-assess tui [FILE]`: edit, run and read an assessment in the terminal."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from frp_assess.errors import InputError
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser(
+        "tui",
+        help="interactive terminal interface: edit, run, read results, export",
+        description="Open FILE (or a new project from the template) in the terminal "
+        "interface: edit the wall, site, records, materials, retrofits and analysis "
+        "options with live validation, run the assessment with progress and cancel, read "
+        "the ranking, plots and time histories, save the YAML and export the PDF report. "
+        "FILE may not exist yet: the template is then saved there with ctrl+s.",
+    )
+    p.add_argument("file", nargs="?", help="project file (YAML); default: a new project")
+    p.add_argument("--jobs", type=int, default=None, help="worker threads (default: all cores)")
+    p.set_defaults(handler=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    if args.jobs is not None and args.jobs < 1:
+        raise InputError(f"expected at least 1 job, found {args.jobs}", key="--jobs")
+    path = Path(args.file) if args.file else None
+    if path is not None:
+        if path.is_dir():
+            raise InputError(f"{path} is a directory", file=str(path))
+        if path.exists():
+            from frp_assess.config.loader import parse_yaml
+
+            try:
+                text = path.read_text(encoding="utf-8")
+            except (OSError, UnicodeDecodeError) as exc:
+                raise InputError(f"cannot read the project file: {exc}", file=str(path)) from None
+            parse_yaml(text, str(path))  # a YAML syntax error: one line, exit 2
+    from frp_assess.tui.app import run_tui  # Textual is imported only for this command
+
+    return run_tui(path, jobs=args.jobs)

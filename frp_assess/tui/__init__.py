@@ -1,0 +1,18 @@
+"""`frp-assess tui`: the terminal user interface (Textual).
+
+Only this package imports Textual; the numerics (:mod:`frp_assess.dynamics`), the ground
+motions (:mod:`frp_assess.motions`) and the project file (:mod:`frp_assess.config`) never do
+(``tests/tui/test_imports.py``).
+"""
+
+from __future__ import annotations
+
+__all__ = ["FrpAssessApp", "run_tui"]
+
+
+def __getattr__(name: str) -> object:
+    if name in __all__:
+        from frp_assess.tui import app
+
+        return getattr(app, name)
+    raise AttributeError(name)

@@ -1,0 +1,484 @@
+"""The editor panes: wall, site spectrum, records, analysis options.
+
+Every input is a :class:`~frp_assess.tui.fields.FieldRow` bound to a key path of the
+project file; the help text of each field is the schema's own description (units, range).
+Panes only lay fields out; the app collects, validates and shows derived values.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from typing import Any
+
+from pydantic import BaseModel
+from pydantic_core import PydanticUndefined
+from rich.table import Table
+from rich.text import Text
+from textual.app import ComposeResult
+from textual.containers import Horizontal, Vertical, VerticalScroll
+from textual.widgets import Static
+
+from frp_assess.config import MASONRY
+from frp_assess.config.schema import (
+    AnalysisSpec,
+    ArtificialRecords,
+    CodeCheckSpec,
+    CostsSpec,
+    DesignSpec,
+    Ec8Spectrum,
+    IdaSpec,
+    Ntc2018Spectrum,
+    PresetSpectrum,
+    ProjectInfo,
+    RecordsSpec,
+    SeismicSpec,
+    TableSpectrum,
+    WallSpec,
+)
+from frp_assess.tui.fields import FieldRow, FieldSpec
+from frp_assess.tui.model import MISSING, WallDerived
+from frp_assess.tui.plots import PlotView
+from frp_assess.tui.record_files import RecordFilesEditor
+
+
+def _desc(model: type[BaseModel], name: str) -> str:
+    return str(model.model_fields[name].description or "")
+
+
+def _default(model: type[BaseModel], name: str) -> Any:
+    """The schema's default of a field (shown when the file leaves the key out)."""
+    value = model.model_fields[name].get_default(call_default_factory=False)
+    return MISSING if value is PydanticUndefined or value is None else value
+
+
+def num(
+    path: tuple[str, ...], label: str, unit: str, model: type[BaseModel], **kw: Any
+) -> FieldSpec:
+    """A number (or YAML scalar) field with the schema's description as help."""
+    kw.setdefault("default", _default(model, path[-1]))
+    return FieldSpec(path, label, "scalar", unit=unit, help=_desc(model, path[-1]), **kw)
+
+
+def choice(
+    path: tuple[str, ...],
+    label: str,
+    values: tuple[Any, ...] | tuple[tuple[str, Any], ...],
+    model: type[BaseModel] | None,
+    **kw: Any,
+) -> FieldSpec:
+    """A choice among ``values`` (plain values, or (label, value) pairs)."""
+    pairs = tuple(v if isinstance(v, tuple) else (str(v), v) for v in values)
+    help_text = kw.pop("help", None) or (_desc(model, path[-1]) if model else "")
+    if model is not None:
+        kw.setdefault("default", _default(model, path[-1]))
+    return FieldSpec(path, label, "choice", choices=pairs, help=help_text, **kw)
+
+
+def text(path: tuple[str, ...], label: str, model: type[BaseModel], **kw: Any) -> FieldSpec:
+    kw.setdefault("width", 44)
+    kw.setdefault("default", _default(model, path[-1]))
+    return FieldSpec(path, label, "text", help=_desc(model, path[-1]), **kw)
+
+
+W = ("wall",)
+SP = ("seismic", "spectrum")
+REC = ("seismic", "records")
+ART = ("seismic", "records", "artificial")
+AN = ("analysis",)
+
+MASONRY_CHOICES = tuple((f"{k} ({m.unit_weight:g})", k) for k, m in MASONRY.items())
+GROUND = ("A", "B", "C", "D", "E")
+
+PROJECT_FIELDS = (
+    text(("project", "name"), "Name", ProjectInfo),
+    text(("project", "location"), "Location", ProjectInfo),
+    text(("project", "engineer"), "Engineer", ProjectInfo),
+    text(("project", "notes"), "Notes", ProjectInfo),
+)
+WALL_FIELDS = (
+    num((*W, "thickness"), "Thickness B", "m, 0 < B < H", WallSpec),
+    num((*W, "height"), "Height H", "m", WallSpec),
+    num((*W, "length"), "Length L", "m (default 1)", WallSpec, optional=True),
+    choice(
+        (*W, "masonry"),
+        "Masonry",
+        MASONRY_CHOICES,
+        WallSpec,
+        optional=True,
+        width=40,
+        help="Masonry type of Circolare 2019 Tab. C8.5.I (unit weight kN/m³); "
+        "give it or the unit weight.",
+    ),
+    num(
+        (*W, "unit_weight"),
+        "Unit weight w",
+        "kN/m³, 5-30 (wins)",
+        WallSpec,
+        optional=True,
+        placeholder="(masonry)",
+    ),
+    choice((*W, "mechanism"), "Mechanism", ("one-sided", "two-sided"), WallSpec, width=14),
+)
+
+SPECTRUM_TYPES = (
+    ("NTC 2018 (site)", "ntc2018"),
+    ("EN 1998-1", "ec8"),
+    ("paper preset", "preset"),
+    ("table (T, Se)", "table"),
+)
+#: what a spectrum type starts with when chosen (the template's values)
+SPECTRUM_DEFAULTS: dict[str, dict[str, Any]] = {
+    "ntc2018": {
+        "type": "ntc2018",
+        "ag": 0.261,
+        "F0": 2.36,
+        "Tc_star": 0.347,
+        "soil": "B",
+        "topography": "T1",
+        "damping": 0.05,
+    },
+    "ec8": {"type": "ec8", "ag": 0.25, "ground": "B", "spectrum_type": 1, "damping": 0.05},
+    "preset": {"type": "preset", "name": "A2"},
+    "table": {
+        "type": "table",
+        "periods": [0.0, 0.15, 0.5, 2.0, 4.0],
+        "accelerations": [0.3, 0.75, 0.75, 0.19, 0.05],
+    },
+}
+
+
+SITE_TYPE = FieldSpec(
+    (*SP, "type"),
+    "Spectrum",
+    "choice",
+    choices=SPECTRUM_TYPES,
+    width=20,
+    selects="spectrum",
+    help=_desc(SeismicSpec, "spectrum"),
+)
+SITE_FIELDS: dict[str, tuple[FieldSpec, ...]] = {
+    "ntc2018": (
+        num((*SP, "ag"), "a_g", "g, on rock", Ntc2018Spectrum, variant=("spectrum", "ntc2018")),
+        num((*SP, "F0"), "F0", "-", Ntc2018Spectrum, variant=("spectrum", "ntc2018")),
+        num((*SP, "Tc_star"), "T_C*", "s", Ntc2018Spectrum, variant=("spectrum", "ntc2018")),
+        choice(
+            (*SP, "soil"), "Soil", GROUND, Ntc2018Spectrum, variant=("spectrum", "ntc2018"), width=8
+        ),
+        choice(
+            (*SP, "topography"),
+            "Topography",
+            ("T1", "T2", "T3", "T4"),
+            Ntc2018Spectrum,
+            variant=("spectrum", "ntc2018"),
+            width=8,
+            default="T1",
+        ),
+        num(
+            (*SP, "damping"),
+            "Damping ξ",
+            "- (0.05)",
+            Ntc2018Spectrum,
+            variant=("spectrum", "ntc2018"),
+            optional=True,
+        ),
+    ),
+    "ec8": (
+        num((*SP, "ag"), "a_g", "g, ground A", Ec8Spectrum, variant=("spectrum", "ec8")),
+        choice(
+            (*SP, "ground"), "Ground", GROUND, Ec8Spectrum, variant=("spectrum", "ec8"), width=8
+        ),
+        choice(
+            (*SP, "spectrum_type"),
+            "Spectrum type",
+            (1, 2),
+            Ec8Spectrum,
+            variant=("spectrum", "ec8"),
+            width=8,
+            default=1,
+        ),
+        num(
+            (*SP, "damping"),
+            "Damping ξ",
+            "- (0.05)",
+            Ec8Spectrum,
+            variant=("spectrum", "ec8"),
+            optional=True,
+        ),
+    ),
+    "preset": (
+        choice(
+            (*SP, "name"),
+            "Preset",
+            ("A1", "A2", "A3"),
+            PresetSpectrum,
+            variant=("spectrum", "preset"),
+            width=8,
+        ),
+    ),
+    "table": (
+        FieldSpec(
+            (*SP, "periods"),
+            "Periods T",
+            "list",
+            unit="s",
+            width=26,
+            variant=("spectrum", "table"),
+            help=_desc(TableSpectrum, "periods"),
+        ),
+        FieldSpec(
+            (*SP, "accelerations"),
+            "Se(T)",
+            "list",
+            unit="g",
+            width=26,
+            variant=("spectrum", "table"),
+            help=_desc(TableSpectrum, "accelerations"),
+        ),
+    ),
+}
+T1_FIELD = num(("seismic", "t1"), "T1 (checks)", "s (1.0)", SeismicSpec, optional=True)
+
+RECORD_SOURCE = FieldSpec(
+    (*REC, "source"),
+    "Records",
+    "choice",
+    choices=(("artificial (SIMQKE)", "artificial"), ("record files", "files")),
+    width=22,
+    virtual=True,
+    selects="records",
+    help=_desc(RecordsSpec, "artificial") + " / " + _desc(RecordsSpec, "files"),
+)
+ARTIFICIAL_DEFAULTS = {"count": 7, "seed": 1, "duration": 25.0, "dt": 0.005}
+ARTIFICIAL_FIELDS = tuple(
+    replace(f, variant=("records", "artificial"))
+    for f in (
+        num((*ART, "count"), "Count", "records, 1-100 (7)", ArtificialRecords, optional=True),
+        num((*ART, "seed"), "Seed", "same seed, same set", ArtificialRecords, optional=True),
+        num((*ART, "duration"), "Duration", "s, ≥ 13.5 (25)", ArtificialRecords, optional=True),
+        num((*ART, "dt"), "Time step dt", "s, ≤ 0.05 (0.005)", ArtificialRecords, optional=True),
+    )
+)
+SCALE_FIELD = choice(
+    (*REC, "scale_to_spectrum"),
+    "Scale files",
+    (("yes: to a_g·S", True), ("no", False)),
+    RecordsSpec,
+    width=18,
+    default=True,
+)
+
+IDA = (*AN, "ida")
+ANALYSIS_FIELDS = (
+    num((*AN, "restitution"), "Restitution", "or 0-1", AnalysisSpec, optional=True),
+    choice(
+        (*AN, "rupture"),
+        "Bar rupture",
+        ("energy-transfer", "velocity-continuous"),
+        AnalysisSpec,
+        width=22,
+        default="energy-transfer",
+    ),
+    choice(
+        (*AN, "collapse"),
+        "Collapse",
+        ("end-of-record", "first-exceedance"),
+        AnalysisSpec,
+        width=22,
+        default="end-of-record",
+    ),
+    num((*AN, "strain_factor"), "Strain factor c", "- (0.5)", AnalysisSpec, optional=True),
+    num((*AN, "free_vibration_tail"), "Free tail", "s (0)", AnalysisSpec, optional=True),
+    num((*IDA, "step_ratio"), "IDA step ratio", "> 1 (1.10)", IdaSpec, optional=True),
+    num((*IDA, "tolerance"), "IDA tolerance", "0-0.1 (0.005)", IdaSpec, optional=True),
+    num((*IDA, "max_multiplier"), "IDA max C/C0", "(100)", IdaSpec, optional=True),
+    num((*AN, "target"), "Target C/D", "(1)", AnalysisSpec, optional=True),
+)
+CODE_FIELDS = (
+    choice(
+        ("code_check", "knowledge_level"),
+        "Knowledge level",
+        (("LC1 (FC 1.35)", "LC1"), ("LC2 (FC 1.20)", "LC2"), ("LC3 (FC 1.00)", "LC3")),
+        CodeCheckSpec,
+        width=16,
+        default="LC1",
+    ),
+    num(("code_check", "behaviour_factor"), "Behaviour q", "1-4 (2)", CodeCheckSpec, optional=True),
+)
+COST_FIELDS = (
+    text(("costs", "currency"), "Currency", CostsSpec, width=8),
+    num(
+        ("costs", "installation_per_metre"),
+        "Installation",
+        "per m per layer",
+        CostsSpec,
+        optional=True,
+    ),
+)
+DESIGN_MODE = FieldSpec(
+    ("design", "mode"),
+    "Mode",
+    "choice",
+    choices=(("off", "off"), ("on: smallest ρ", "on")),
+    width=18,
+    virtual=True,
+    selects="design",
+    help="Design mode: the smallest ratio meeting the target per material and position.",
+)
+DESIGN_DEFAULTS = {
+    "materials": ["GFRP"],
+    "positions": ["centred", "external"],
+    "ratio_range": [0.5, 5.0],
+    "resolution": 0.05,
+}
+DESIGN_FIELDS = tuple(
+    replace(f, variant=("design", "on"))
+    for f in (
+        FieldSpec(
+            ("design", "materials"),
+            "Materials",
+            "list",
+            width=22,
+            help=_desc(DesignSpec, "materials"),
+        ),
+        FieldSpec(
+            ("design", "positions"),
+            "Positions",
+            "list",
+            width=22,
+            help=_desc(DesignSpec, "positions"),
+        ),
+        FieldSpec(
+            ("design", "ratio_range"),
+            "Ratio range",
+            "list",
+            unit="‰ low, high",
+            width=12,
+            help=_desc(DesignSpec, "ratio_range"),
+        ),
+        num(("design", "resolution"), "Resolution", "‰ (0.05)", DesignSpec, optional=True),
+    )
+)
+
+#: where a problem whose key path is not a field is shown: key path prefix -> section id
+SECTIONS: dict[tuple[str, ...], str] = {
+    ("project",): "err-wall",
+    ("wall",): "err-wall",
+    ("seismic",): "err-site",
+    ("seismic", "spectrum"): "err-site",
+    ("seismic", "records"): "err-records",
+    ("analysis",): "err-analysis",
+    ("code_check",): "err-analysis",
+    ("costs",): "err-analysis",
+    ("design",): "err-analysis",
+}
+
+
+def section_error(section_id: str) -> Static:
+    return Static("", id=section_id, classes="section-error")
+
+
+class WallPane(VerticalScroll):
+    """Project information, the wall and its derived constants."""
+
+    def compose(self) -> ComposeResult:
+        with Horizontal(classes="columns"):
+            with Vertical(classes="col-left"):
+                yield Static("Project", classes="section-title")
+                for spec in PROJECT_FIELDS:
+                    yield FieldRow(spec)
+                yield Static("Wall (rigid rocking block)", classes="section-title")
+                yield section_error("err-wall")
+                for spec in WALL_FIELDS:
+                    yield FieldRow(spec)
+            with Vertical(classes="col-right"):
+                yield Static("", id="derived-wall", classes="derived")
+
+
+class SitePane(VerticalScroll):
+    """The elastic spectrum of the site and its live preview."""
+
+    def compose(self) -> ComposeResult:
+        with Horizontal(classes="columns"):
+            with Vertical(classes="col-left col-narrow"):
+                yield Static("Elastic spectrum (5 % damping)", classes="section-title")
+                yield section_error("err-site")
+                yield FieldRow(SITE_TYPE)
+                for kind, specs in SITE_FIELDS.items():
+                    with Vertical(classes="variant", id=f"var-spectrum-{kind}"):
+                        for spec in specs:
+                            yield FieldRow(spec)
+                yield FieldRow(T1_FIELD)
+                yield Static("", id="spectrum-info", classes="derived")
+            with Vertical(classes="col-right"):
+                yield PlotView(id="spectrum-plot")
+
+
+class RecordsPane(VerticalScroll):
+    """The accelerograms: artificial ones or record files."""
+
+    def compose(self) -> ComposeResult:
+        yield Static("Ground-motion records", classes="section-title")
+        yield section_error("err-records")
+        yield FieldRow(RECORD_SOURCE)
+        with Vertical(classes="variant", id="var-records-artificial"):
+            for spec in ARTIFICIAL_FIELDS:
+                yield FieldRow(spec)
+        with Vertical(classes="variant", id="var-records-files"):
+            yield RecordFilesEditor(id="files-editor")
+        yield FieldRow(SCALE_FIELD)
+        yield Static("", id="records-info", classes="derived")
+
+
+class AnalysisPane(VerticalScroll):
+    """Model options, IDA settings, code check, costs and design mode."""
+
+    def compose(self) -> ComposeResult:
+        yield section_error("err-analysis")
+        with Horizontal(classes="columns"):
+            with Vertical(classes="col-half"):
+                yield Static("Model and IDA", classes="section-title")
+                for spec in ANALYSIS_FIELDS:
+                    yield FieldRow(spec)
+            with Vertical(classes="col-half"):
+                yield Static("Code kinematic check (§C8.7.1)", classes="section-title")
+                for spec in CODE_FIELDS:
+                    yield FieldRow(spec)
+                yield Static("Costs (indicative)", classes="section-title")
+                for spec in COST_FIELDS:
+                    yield FieldRow(spec)
+                yield Static("Design mode", classes="section-title")
+                yield FieldRow(DESIGN_MODE)
+                with Vertical(classes="variant", id="var-design-on"):
+                    for spec in DESIGN_FIELDS:
+                        yield FieldRow(spec)
+
+
+def derived_wall_table(
+    wall: WallDerived | str, pga_g: float | None, n_options: int | None
+) -> Table | Text:
+    """The derived constants as a small table (or the reason they cannot be computed)."""
+    if isinstance(wall, str):
+        return Text.assemble(("Derived values\n", "bold"), (f"— {wall}", "red"))
+    t = Table(
+        title="Derived (as you type)",
+        title_justify="left",
+        box=None,
+        show_header=False,
+        padding=(0, 1, 0, 0),
+    )
+    t.add_column(style="bold cyan", no_wrap=True)
+    t.add_column(justify="right", no_wrap=True)
+    t.add_column(style="dim", no_wrap=True, overflow="ellipsis")
+    t.add_row("α", f"{wall.alpha_deg:.3f}°", f"{wall.alpha:.4f} rad")
+    t.add_row("R", f"{wall.R:.3f} m", "half diagonal")
+    t.add_row("p", f"{wall.p:.3f} rad/s", "frequency")
+    t.add_row("a_RM", f"{wall.a_rm:.4f} g", "g·tan α")
+    t.add_row("mass", f"{wall.mass:.0f} kg/m", "per metre")
+    t.add_row("w", f"{wall.unit_weight:g} kN/m³", "unit weight")
+    if pga_g is not None:
+        t.add_row("a_g·S", f"{pga_g:.4f} g", "demand")
+        ratio = wall.a_rm / pga_g
+        t.add_row("a_RM/a_g·S", f"{ratio:.3f}", "no rocking" if ratio > 1 else "rocks")
+    if n_options is not None:
+        t.add_row("options", str(n_options), "retrofits")
+    return t

@@ -1,0 +1,214 @@
+"""One labelled field of the editor: label, input (or choice), unit, and its error below.
+
+A :class:`FieldRow` is bound to a key path of the project data (``("wall", "thickness")``);
+the editor reads :meth:`FieldRow.data_value` from every active row to build the data the
+loader validates, and shows each problem with :meth:`FieldRow.show_error`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, replace
+from typing import Any, ClassVar, Literal
+
+from textual import events
+from textual.app import ComposeResult
+from textual.containers import Horizontal, Vertical
+from textual.widgets import Input, Label, Select, Static
+
+from frp_assess.config.messages import Loc
+from frp_assess.tui.model import MISSING, format_value, parse_list, parse_scalar
+
+Kind = Literal["scalar", "text", "choice", "list"]
+
+
+class OrderedInput(Input):
+    """An Input that edits with backspace, delete and the cursor keys in typing order.
+
+    Textual runs these keys through bindings, which are checked only after the key has
+    bubbled up to the app, while printable keys are inserted at once: keys that arrive
+    together (a fast typist, a paste of keys, ``tmux send-keys``) then apply out of order
+    (``BSpace 5`` gives ``0.3`` -> ``0.35`` -> ``0.3``).  Here they act immediately.
+    """
+
+    #: key -> Input action, applied as the key arrives
+    EDIT_KEYS: ClassVar[dict[str, str]] = {
+        "backspace": "delete_left",
+        "delete": "delete_right",
+        "left": "cursor_left",
+        "right": "cursor_right",
+        "home": "home",
+        "end": "end",
+        "ctrl+u": "delete_left_all",
+        "ctrl+k": "delete_right_all",
+        "ctrl+w": "delete_left_word",
+    }
+
+    #: ``?`` opens the help instead of typing (fields where ``?`` is never valid)
+    help_key = False
+
+    async def _on_key(self, event: events.Key) -> None:
+        if self.help_key and event.key == "question_mark":
+            event.stop()
+            event.prevent_default()
+            self.app.action_help()  # type: ignore[attr-defined]
+            return
+        action = self.EDIT_KEYS.get(event.key)
+        if action is not None:
+            event.stop()
+            event.prevent_default()
+            self._restart_blink()
+            getattr(self, f"action_{action}")()
+            return
+        await super()._on_key(event)
+
+
+@dataclass(frozen=True)
+class FieldSpec:
+    """What a field edits and how.
+
+    Attributes:
+        path: key path in the project data.
+        label: shown left of the input.
+        kind: ``scalar`` (read as a YAML scalar: numbers, ``energy``...), ``text`` (kept as
+            typed), ``choice`` (one of ``choices``), ``list`` (comma-separated values).
+        unit: shown right of the input, e.g. ``m`` or ``kN/m³``.
+        help: one line shown in the help bar while the field has focus (units, range).
+        choices: (label, value) pairs of a choice.
+        optional: an empty field leaves the key out (the default applies).
+        width: of the input, in cells.
+        variant: (group, value): the row is part of the data only while the editor's
+            variant ``group`` is ``value`` (the spectrum type, the record source...).
+        placeholder: shown in an empty input.
+        default: shown by a choice when the data has no value (the schema's default).
+        virtual: not a data key (a selector of the editor only).
+        selects: the variant group this field's value chooses (``spectrum`` for the type).
+    """
+
+    path: Loc
+    label: str
+    kind: Kind = "scalar"
+    unit: str = ""
+    help: str = ""
+    choices: tuple[tuple[str, Any], ...] = ()
+    optional: bool = False
+    width: int = 14
+    variant: tuple[str, str] | None = None
+    placeholder: str = ""
+    default: Any = MISSING
+    virtual: bool = False
+    selects: str | None = None
+
+    @property
+    def dom_id(self) -> str:
+        """A DOM id derived from the path: ``f-wall-thickness``."""
+        tail = f"-{self.variant[1]}" if self.variant else ""
+        return ("f-" + "-".join(str(p) for p in self.path) + tail).replace("_", "-")
+
+
+class FieldRow(Vertical):
+    """A label, an input or a select, a unit, and the validation message under them."""
+
+    DEFAULT_CSS = """
+    FieldRow { height: auto; }
+    FieldRow > Horizontal { height: 1; }
+    FieldRow .f-label { width: 18; color: $text-muted; }
+    FieldRow .f-unit { width: 1fr; color: $text-muted; padding-left: 1; }
+    FieldRow .f-error { color: $error; padding-left: 18; display: none; }
+    FieldRow.-error .f-error { display: block; }
+    FieldRow.-error .f-label { color: $error; }
+    """
+
+    def __init__(self, spec: FieldSpec, *, id: str | None = None) -> None:
+        super().__init__(id=id or spec.dom_id)
+        self.spec = spec
+        self.error: str | None = None
+
+    def compose(self) -> ComposeResult:
+        s = self.spec
+        with Horizontal():
+            yield Label(s.label, classes="f-label")
+            if s.kind == "choice":
+                select: Select[Any] = Select(
+                    [(label, value) for label, value in s.choices],
+                    allow_blank=s.optional,
+                    compact=True,
+                    prompt="(none)",
+                    id=f"{s.dom_id}-control",
+                    tooltip=s.help or None,
+                )
+                select.styles.width = s.width
+                yield select
+            else:
+                inp = OrderedInput(
+                    compact=True,
+                    placeholder=s.placeholder,
+                    id=f"{s.dom_id}-control",
+                    tooltip=s.help or None,
+                    select_on_focus=False,
+                )
+                inp.styles.width = s.width
+                inp.help_key = s.kind != "text"
+                yield inp
+            yield Label(s.unit, classes="f-unit")
+        yield Static("", classes="f-error")
+
+    @property
+    def control(self) -> Input | Select[Any]:
+        """The input or select of the row."""
+        return self.query_one(f"#{self.spec.dom_id}-control")  # type: ignore[return-value]
+
+    def data_value(self) -> Any:
+        """The value for the data: parsed as the YAML loader would, ``MISSING`` if empty."""
+        c = self.control
+        if isinstance(c, Select):
+            return MISSING if c.value is Select.NULL else c.value
+        text = c.value
+        if self.spec.kind == "text":
+            return MISSING if self.spec.optional and not text.strip() else text
+        if self.spec.kind == "list":
+            return parse_list(text)
+        return parse_scalar(text)
+
+    def set_value(self, value: Any) -> None:
+        """Show a data value (``MISSING``/None: empty)."""
+        c = self.control
+        if isinstance(c, Select):
+            if value is MISSING or value is None:
+                value = self.spec.default
+            if value is MISSING or value is None:
+                if self.spec.optional:
+                    c.clear()
+                return
+            values = [v for _, v in self.spec.choices]
+            if value not in values:  # keep what the file says, so that its error shows
+                c.set_options([*self.spec.choices, (f"{value} (?)", value)])
+            c.value = value
+        else:
+            if value is MISSING or value is None:
+                value = self.spec.default
+            c.value = format_value(value)
+
+    def set_choices(self, choices: Sequence[tuple[str, Any]]) -> None:
+        """Replace the options of a choice, keeping the value (no change event is posted)."""
+        c = self.control
+        if not isinstance(c, Select) or tuple(choices) == self.spec.choices:
+            return
+        current = c.value
+        self.spec = replace(self.spec, choices=tuple(choices))
+        values = [v for _, v in choices]
+        with self.app.prevent(Select.Changed):
+            if current is not Select.NULL and current not in values:
+                c.set_options([*choices, (f"{current} (?)", current)])
+            else:
+                c.set_options(list(choices))
+            if current is not Select.NULL:
+                c.value = current
+
+    def show_error(self, message: str | None) -> None:
+        """Show (or clear) the validation message under the field."""
+        if message == self.error:
+            return
+        self.error = message
+        self.set_class(message is not None, "-error")
+        self.query_one(".f-error", Static).update("" if message is None else f"✗ {message}")

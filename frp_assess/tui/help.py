@@ -1,0 +1,86 @@
+"""The help screen (``?`` or F1): keys and how the editor works."""
+
+from __future__ import annotations
+
+from typing import ClassVar
+
+from textual.app import ComposeResult
+from textual.binding import Binding, BindingType
+from textual.containers import Vertical, VerticalScroll
+from textual.screen import ModalScreen
+from textual.widgets import Markdown, Static
+
+HELP_TEXT = """\
+# frp-assess tui
+
+Edit a project, run the assessment, read the results. Every value is checked as you
+type by the same rules (and messages) as `frp-assess validate`; the message shows under
+the field and the tab is marked **✗**. Derived values update as you type.
+
+## Keys everywhere
+
+| key | action |
+|---|---|
+| `ctrl+s` | save the project (asks for a file name the first time) |
+| `ctrl+r` | run the assessment (in the background; the editor stays usable) |
+| `esc` / `ctrl+c` | cancel the run (finished analyses are kept in the cache) |
+| `ctrl+e` | export the PDF report and the result files |
+| `F2` … `F10` | go to a tab: Wall, Site, Records, Materials, Retrofits, |
+|  | Analysis, Run, Results, History (also `ctrl+pageup/pagedown`) |
+| `tab` / `shift+tab` | next / previous field (the tab bar too: then ←/→) |
+| `?` / `F1` | this help (in a free-text field `?` is typed: use F1 there) |
+| `ctrl+p` | command palette (save as…, theme, keys) |
+| `q` / `ctrl+q` | quit (asks when there are unsaved changes) |
+
+## Fields
+
+Numbers are read as in the YAML file (`0.4`, `1e-3`); optional fields show their
+default, and an emptied one leaves the key out (the default applies). Lists are
+comma-separated (`GFRP, CFRP`). Choices open with `enter`; pick with ↑/↓ and `enter`.
+The line at the bottom shows the field's meaning and units.
+
+## Tables (materials, retrofits, record files)
+
+| key | action |
+|---|---|
+| `a` | add (retrofits: an option) |
+| `s` | add a sweep (retrofits) |
+| `d` | duplicate the selected row |
+| `delete` / `x` | remove the selected row (materials: back to the library) |
+| `enter` | edit the selected row in the form below |
+
+## Results
+
+*Ranking*: ←/→ pick a column, `s` sorts by it (again: reverse), `enter` shows the IDA
+per record of the case. *FRP plot*: improvement or capacity/demand against the FRP
+mass. *Design*: the smallest ratio per material and position (design mode).
+*Compliance*: the code checks of the records and their mean spectrum.
+
+*History*: pick a case and a record; `c` at collapse, `b` just below, `1` for C = 1, or
+type a multiplier and press `enter`.
+
+Runs write `results.json`, `results.csv`, `spectra.csv` and `records/` into
+`<project>-results/` next to the project file and keep every finished analysis in its
+`.cache/`, as `frp-assess run` does; `ctrl+e` adds `report.pdf` (or writes everything
+into another folder).
+"""
+
+
+class HelpScreen(ModalScreen[None]):
+    """Keys and usage; closes with esc, q, ? or F1."""
+
+    BINDINGS: ClassVar[list[BindingType]] = [
+        Binding("escape,q,question_mark,f1", "close", "Close help"),
+    ]
+
+    def compose(self) -> ComposeResult:
+        with Vertical(id="help-box"):
+            with VerticalScroll(id="help-scroll"):
+                yield Markdown(HELP_TEXT)
+            yield Static("↑/↓ scroll · esc close", classes="hint")
+
+    def on_mount(self) -> None:
+        self.query_one("#help-scroll").focus()
+
+    def action_close(self) -> None:
+        self.dismiss(None)

@@ -1,0 +1,187 @@
+"""The retrofit options (``interventions:``): single options and sweeps in one table.
+
+Each row shows the FRP mass per metre of wall of the option (for a sweep, its range), which
+updates as the wall, the materials or the ratio are typed.  Keys: ``a`` add an option,
+``s`` add a sweep, ``d`` duplicate, ``delete``/``x`` remove.
+"""
+
+from __future__ import annotations
+
+from typing import Any, ClassVar
+
+from rich.text import Text
+from textual.binding import Binding, BindingType
+
+from frp_assess.config import FRP_MATERIALS
+from frp_assess.config.schema import Intervention, SweepAxes, option_name
+from frp_assess.tui.fields import FieldSpec
+from frp_assess.tui.item_editor import ItemEditor
+from frp_assess.tui.model import describe_list, expand_item, format_value, frp_mass_per_m
+
+POSITIONS = (("centred", "centred"), ("external", "external"))
+
+
+def _help(model: Any, name: str) -> str:
+    return str(model.model_fields[name].description or "")
+
+
+class InterventionsEditor(ItemEditor):
+    """The ``interventions`` list: options and sweeps."""
+
+    inherit_bindings = False
+    BINDINGS: ClassVar[list[BindingType]] = [
+        Binding("a", "add", "Add"),
+        Binding("s", "add_sweep", "Sweep"),
+        Binding("d", "duplicate", "Dup"),
+        Binding("delete,x", "remove", "Remove", key_display="del"),
+    ]
+    BUTTONS = (
+        ("+ option", "add"),
+        ("+ sweep", "add_sweep"),
+        ("duplicate", "duplicate"),
+        ("remove", "remove"),
+    )
+    ROOT = ("interventions",)
+    FORMS: ClassVar[dict[str, Any]] = {
+        "option": (
+            FieldSpec(
+                ("name",),
+                "Name",
+                "text",
+                optional=True,
+                width=30,
+                placeholder="(generated)",
+                help=_help(Intervention, "name"),
+            ),
+            FieldSpec(
+                ("material",),
+                "Material",
+                "choice",
+                choices=tuple((n, n) for n in FRP_MATERIALS),
+                width=22,
+                help=_help(Intervention, "material"),
+            ),
+            FieldSpec(
+                ("position",),
+                "Position",
+                "choice",
+                choices=POSITIONS,
+                width=14,
+                help=_help(Intervention, "position"),
+            ),
+            FieldSpec(
+                ("ratio",), "Ratio ρ", unit="‰, 0 < ρ ≤ 20", help=_help(Intervention, "ratio")
+            ),
+        ),
+        "sweep": (
+            FieldSpec(
+                ("sweep", "material"),
+                "Materials",
+                "list",
+                width=30,
+                unit="comma-separated",
+                help=_help(SweepAxes, "material"),
+            ),
+            FieldSpec(
+                ("sweep", "position"),
+                "Positions",
+                "list",
+                width=30,
+                unit="centred, external",
+                help=_help(SweepAxes, "position"),
+            ),
+            FieldSpec(
+                ("sweep", "ratio"),
+                "Ratios ρ",
+                "list",
+                width=30,
+                unit="‰, e.g. 1, 2, 3",
+                help=_help(SweepAxes, "ratio"),
+            ),
+        ),
+    }
+
+    def columns(self) -> list[str]:
+        return ["#", "kind", "name", "material", "position", "ρ [‰]", "options", "FRP [kg/m]"]
+
+    def kind_of(self, item: Any) -> str:
+        return "sweep" if isinstance(item, dict) and "sweep" in item else "option"
+
+    def item_label(self, index: int) -> str:
+        item = self.items[index]
+        return f"#{index + 1} {'sweep' if self.kind_of(item) == 'sweep' else 'option'}"
+
+    def new_item(self, action: str) -> Any:
+        if action == "sweep":
+            return {
+                "sweep": {"material": ["GFRP"], "position": ["centred", "external"], "ratio": [1.0]}
+            }
+        return {"material": "GFRP", "position": "external", "ratio": 1.0}
+
+    def action_add_sweep(self) -> None:
+        self.items.append(self.new_item("sweep"))
+        self.refresh_table()
+        self.table.move_cursor(row=len(self.items) - 1)
+        self.changed()
+
+    def set_materials(self, names: list[str]) -> None:
+        """Offer these material names in the option form."""
+        for row in self.form_rows("option"):
+            if row.spec.path == ("material",):
+                row.set_choices([(n, n) for n in names])
+
+    def _mass(self, material: str, position: str, ratio: Any) -> float | None:
+        ctx = self.context
+        return frp_mass_per_m(
+            ctx.get("wall"),  # type: ignore[arg-type]
+            ctx.get("wall_data"),
+            ctx.get("materials", {}).get(material),
+            position,
+            ratio,
+        )
+
+    def row_cells(self, index: int, item: Any) -> list[Any]:
+        combos = expand_item(item)
+        masses = [self._mass(m, p, r) for m, p, r in combos]
+        known = [m for m in masses if m is not None]
+        if not known:
+            mass = "—"
+        elif len(known) == 1:
+            mass = f"{known[0]:.2f}"
+        else:
+            mass = f"{min(known):.2f}–{max(known):.2f}"
+        if self.kind_of(item) == "sweep":
+            ax = item.get("sweep") if isinstance(item.get("sweep"), dict) else {}
+            return [
+                index + 1,
+                Text("sweep", style="magenta"),
+                "",
+                _cell(ax.get("material")),
+                _cell(ax.get("position")),
+                _cell(ax.get("ratio")),
+                len(combos),
+                mass,
+            ]
+        name = item.get("name")
+        if not name:
+            try:
+                name = Text(
+                    option_name(str(item["material"]), str(item["position"]), item["ratio"]),
+                    style="dim",
+                )
+            except (KeyError, TypeError, ValueError):
+                name = ""
+        return [
+            index + 1,
+            "option",
+            name,
+            format_value(item.get("material")),
+            format_value(item.get("position")),
+            format_value(item.get("ratio")),
+            1,
+            mass,
+        ]
+
+
+def _cell(values: Any) -> str:
+    return describe_list(values) if isinstance(values, list) else format_value(values)

@@ -1,0 +1,324 @@
+"""The editing state of the TUI as plain data, without Textual.
+
+The editor holds the project as the same nested ``dict`` the YAML loader produces; every value
+typed in a field is read as a YAML scalar (so ``0.4`` is a number and ``abc`` is text, as in
+the file) and the whole dict is validated by the loader's own models and messages
+(:func:`frp_assess.config.validate_data`).  Everything here is pure and unit-tested.
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+import re
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from pydantic import TypeAdapter, ValidationError
+
+from frp_assess.config import FRP_MATERIALS, FrpMaterial, Project, validate_data
+from frp_assess.config.loader import check_record_files, parse_yaml
+from frp_assess.config.messages import Loc, describe, format_path, locate
+from frp_assess.config.schema import (
+    MaterialSpec,
+    Spectrum,
+    WallSpec,
+)
+from frp_assess.errors import InputError
+
+
+class _Missing:
+    """An empty field: its key is left out of the data (the schema's default applies)."""
+
+    def __repr__(self) -> str:
+        return "MISSING"
+
+
+MISSING: Any = _Missing()
+
+
+# ------------------------------------------------------------------------ values <-> text
+def format_value(value: Any) -> str:
+    """How a data value is shown in a field: YAML-like, floats without a trailing ``.0``.
+
+    Floats use Python's shortest round-trip ``repr`` so that reading the text back gives
+    exactly the same number (the save round trip depends on it).
+    """
+    if value is None or value is MISSING:
+        return ""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        text = repr(value)
+        return text[:-2] if text.endswith(".0") else text
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, list | tuple):
+        return ", ".join(format_value(v) for v in value)
+    return str(value)
+
+
+def parse_scalar(text: str) -> Any:
+    """A field's text as the YAML loader would read it; ``MISSING`` when empty.
+
+    ``"0.4"`` -> 0.4, ``"7"`` -> 7, ``"1e-3"`` -> 0.001, ``"abc"`` -> ``"abc"``; text that
+    is not valid YAML is kept as text (validation then reports it as the wrong type).
+    """
+    stripped = text.strip()
+    if not stripped:
+        return MISSING
+    try:
+        value, _ = parse_yaml(stripped, "<field>")
+    except InputError:
+        return stripped
+    return value
+
+
+def parse_list(text: str) -> Any:
+    """A comma-separated list field (``GFRP, CFRP`` or ``[1, 2]``) as a YAML flow sequence.
+
+    Empty text is an empty list; text that does not read as a list is returned as text.
+    """
+    stripped = text.strip()
+    if not stripped:
+        return []
+    flow = stripped if stripped.startswith("[") else f"[{stripped}]"
+    try:
+        value, _ = parse_yaml(flow, "<field>")
+    except InputError:
+        return stripped
+    return value if isinstance(value, list) else stripped
+
+
+def get_path(data: Any, path: Loc, default: Any = MISSING) -> Any:
+    """The value at a key path of nested dicts/lists, or ``default``."""
+    node = data
+    for key in path:
+        try:
+            node = node[key]
+        except (KeyError, IndexError, TypeError):
+            return default
+    return node
+
+
+def set_path(data: dict[str, Any], path: Loc, value: Any) -> None:
+    """Set (or, for ``MISSING``, leave out) the value at a key path, creating mappings."""
+    if value is MISSING:
+        return
+    node: Any = data
+    for key in path[:-1]:
+        nxt = node.get(key) if isinstance(node, dict) else None
+        if not isinstance(nxt, dict):
+            nxt = {}
+            node[key] = nxt
+        node = nxt
+    node[path[-1]] = value
+
+
+def parse_key(key: str) -> Loc:
+    """``seismic.records.files[0].path`` -> ``("seismic", "records", "files", 0, "path")``."""
+    out: list[str | int] = []
+    for part in key.split("."):
+        m = re.fullmatch(r"([^\[]*)((?:\[\d+\])*)", part)
+        if m is None:  # pragma: no cover - format_path never gives this
+            out.append(part)
+            continue
+        if m.group(1):
+            out.append(m.group(1))
+        out.extend(int(i) for i in re.findall(r"\[(\d+)\]", m.group(2)))
+    return tuple(out)
+
+
+# ---------------------------------------------------------------------------- validation
+@dataclass(frozen=True)
+class Problem:
+    """One validation problem, with the loader's wording.
+
+    Attributes:
+        path: key path the loader reports (``wall`` for a missing ``wall.thickness``).
+        message: the loader's one-line message.
+        target: key path of the field to show it next to (``wall.thickness``).
+    """
+
+    path: Loc
+    message: str
+    target: Loc
+
+    @property
+    def key(self) -> str:
+        """The key path as the loader prints it (``interventions[2].ratio``)."""
+        return format_path(self.path)
+
+    def __str__(self) -> str:
+        return f"{self.key}: {self.message}" if self.path else self.message
+
+
+def validation_problems(data: Any) -> list[Problem]:
+    """Every problem of the data, in the order the loader reports them.
+
+    The first one is exactly what :func:`frp_assess.config.validate_data` raises (a test
+    checks it); the others let the editor mark every faulty field at once.
+    """
+    try:
+        validate_data(data)
+        return []
+    except InputError as exc:
+        first = exc
+    try:
+        Project.model_validate(data)
+    except ValidationError as err:
+        errors = err.errors(include_url=False)
+    except Exception:  # pragma: no cover - validate_data already raised a clean error
+        errors = []
+    else:  # pragma: no cover - validate_data raised for a non-mapping
+        errors = []
+    if not errors:  # not a mapping, or empty
+        return [Problem((), first.message, ())]
+    unknown = [e for e in errors if e["type"] == "extra_forbidden"]
+    ordered = unknown + [e for e in errors if e["type"] != "extra_forbidden"]
+    out: list[Problem] = []
+    for err in ordered:
+        path, message = describe(Project, err)
+        ctx = dict(err.get("ctx") or {})
+        full = locate(Project, tuple(err["loc"]) + tuple(ctx.get("loc", ()))).path
+        out.append(Problem(tuple(path), message, tuple(full) if err["type"] == "missing" else path))
+    return out
+
+
+def record_file_problem(project: Project, base_dir: Path) -> Problem | None:
+    """The loader's message for the first record file that does not exist, if any."""
+    try:
+        check_record_files(project, base_dir, "<project>", {})
+    except InputError as exc:
+        path = parse_key(exc.key or "")
+        return Problem(path, exc.message, path)
+    return None
+
+
+def project_data(project: Project) -> dict[str, Any]:
+    """The editable data of a valid project (the dict that :func:`dump_project` writes)."""
+    return project.model_dump(mode="json", exclude_none=True)
+
+
+# ------------------------------------------------------------------------ derived values
+@dataclass(frozen=True)
+class WallDerived:
+    """Derived constants of the wall (per metre of length; MODEL.md §1)."""
+
+    alpha: float  #: slenderness α [rad]
+    R: float  #: half diagonal [m]  # noqa: N815
+    p: float  #: frequency parameter [rad/s]
+    a_rm: float  #: rocking activation acceleration tan α [g]
+    mass: float  #: [kg/m]
+    unit_weight: float  #: [kN/m³]
+
+    @property
+    def alpha_deg(self) -> float:
+        """α [°]."""
+        return math.degrees(self.alpha)
+
+
+def wall_derived(wall: Any) -> WallDerived | str:
+    """The derived constants of the ``wall`` block, or the loader's message if it is invalid."""
+    from frp_assess.dynamics import Wall
+
+    try:
+        spec = WallSpec.model_validate(wall)
+    except ValidationError as err:
+        path, message = describe(WallSpec, err.errors(include_url=False)[0])
+        return f"{format_path(('wall', *path))}: {message}"
+    w = Wall(spec.thickness, spec.height, spec.unit_weight_kn * 1e3)
+    return WallDerived(w.alpha, w.R, w.p, w.a_rm_g, w.mass, spec.unit_weight_kn)
+
+
+_SPECTRUM = TypeAdapter(Spectrum)
+
+
+def spectrum_preview(spec: Any) -> Any:
+    """The :class:`~frp_assess.motions.ElasticSpectrum` of a ``seismic.spectrum`` block, or
+    a message (text) if the block is invalid."""
+    from frp_assess.assess.from_project import spectrum_of
+
+    try:
+        model = _SPECTRUM.validate_python(spec)
+    except ValidationError as err:
+        e = err.errors(include_url=False)[0]
+        return f"spectrum: {e['msg']}"
+    try:
+        return spectrum_of(model)
+    except (InputError, ValueError) as exc:
+        return f"spectrum: {exc}"
+
+
+def material_table(materials: Any) -> dict[str, FrpMaterial]:
+    """The FRP library merged with the project's valid material entries (by name).
+
+    Invalid entries are skipped, so that derived quantities still show while one is typed.
+    """
+    valid: dict[str, MaterialSpec] = {}
+    if isinstance(materials, Mapping):
+        for name, spec in materials.items():
+            try:
+                ok = MaterialSpec.model_validate(spec)
+            except ValidationError:
+                continue
+            if str(name) in FRP_MATERIALS or all(
+                getattr(ok, f) is not None
+                for f in ("elastic_modulus", "ultimate_strain", "density", "price")
+            ):
+                valid[str(name)] = ok
+    return Project.model_construct(materials=valid).material_table()
+
+
+def frp_mass_per_m(
+    wall: WallDerived | str,
+    wall_data: Any,
+    material: FrpMaterial | None,
+    position: Any,
+    ratio: Any,
+) -> float | None:
+    """Installed FRP [kg per metre of wall] of one option (both faces when external), or None
+    when the wall, the material or the ratio is not valid yet."""
+    from frp_assess.assess.from_project import material_of
+    from frp_assess.assess.inputs import Costs
+    from frp_assess.assess.quantities import frp_quantity
+
+    if isinstance(wall, str) or material is None or position not in ("centred", "external"):
+        return None
+    if isinstance(ratio, bool) or not isinstance(ratio, int | float) or not 0 < ratio <= 20:
+        return None
+    q = frp_quantity(
+        float(wall_data["thickness"]),
+        float(wall_data["height"]),
+        1.0,
+        material_of(material),
+        position,
+        float(ratio),
+        Costs(),
+    )
+    return q.mass_per_m
+
+
+def expand_item(item: Any) -> list[tuple[str, str, Any]]:
+    """The (material, position, ratio) combinations of one ``interventions`` item."""
+    if not isinstance(item, Mapping):
+        return []
+    if "sweep" in item:
+        ax = item["sweep"] if isinstance(item["sweep"], Mapping) else {}
+        mats = ax.get("material") if isinstance(ax.get("material"), list) else []
+        poss = ax.get("position") if isinstance(ax.get("position"), list) else []
+        rats = ax.get("ratio") if isinstance(ax.get("ratio"), list) else []
+        return [(str(m), str(p), r) for m in mats for p in poss for r in rats]
+    return [(str(item.get("material")), str(item.get("position")), item.get("ratio"))]
+
+
+def deep_copy(data: Any) -> Any:
+    """A deep copy of editable data."""
+    return copy.deepcopy(data)
+
+
+def describe_list(values: Sequence[Any]) -> str:
+    """A list for a table cell: ``GFRP, CFRP``."""
+    return ", ".join(format_value(v) for v in values)

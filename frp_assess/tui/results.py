@@ -1,0 +1,426 @@
+"""The Results tab: ranking (sortable), IDA per record, FRP plot, spectrum compliance.
+
+Everything is read from the results dict of the run (docs/results-json.md), as the PDF
+report does.  In the ranking, ←/→ choose a column and ``s`` sorts by it (again: reverse);
+the highlighted row is the case shown in "Per record" and in the History tab.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any, ClassVar
+
+from rich import box
+from rich.table import Table
+from rich.text import Text
+from textual import on
+from textual.app import ComposeResult
+from textual.binding import Binding, BindingType
+from textual.containers import Horizontal, Vertical, VerticalScroll
+from textual.message import Message
+from textual.widgets import DataTable, Label, Select, Static, TabbedContent, TabPane
+
+from frp_assess.tui.plots import PlotView, Rule, Series
+
+MATERIAL_STYLES = ("green", "yellow", "magenta", "cyan", "bright_blue", "red", "white")
+POSITION_MARKERS = {"external": "●", "centred": "▲"}
+
+
+def _text(value: Any) -> Text:
+    """A table cell as plain text (a str cell would be read as Rich markup)."""
+    return value if isinstance(value, Text) else Text(str(value))
+
+
+def _num(value: Any, fmt: str) -> str:
+    return "—" if value is None else format(value, fmt)
+
+
+#: (header, sort key, cell) of the ranking table
+RANKING_COLUMNS: list[tuple[str, Callable[[dict[str, Any]], Any], Callable[..., Any]]] = [
+    ("rank", lambda c: (c["rank"] is None, c["rank"] or 0), lambda c: c["rank"] or "—"),
+    ("option", lambda c: c["name"], lambda c: c["name"]),
+    ("kg/m", lambda c: c["frp_mass_per_m"], lambda c: f"{c['frp_mass_per_m']:.2f}"),
+    ("FRP kg", lambda c: c["frp_mass"], lambda c: f"{c['frp_mass']:.1f}"),
+    ("cost", lambda c: c["frp_cost"], lambda c: f"{c['frp_cost']:.0f}"),
+    ("a_dyn [g]", lambda c: c["design_a_dyn"], lambda c: f"{c['design_a_dyn']:.3f}"),
+    ("q", lambda c: c["mean_q"], lambda c: f"{c['mean_q']:.2f}"),
+    ("impr.", lambda c: c["improvement"], lambda c: f"{c['improvement']:.2f}"),
+    ("C/D", lambda c: c["capacity_demand"], lambda c: f"{c['capacity_demand']:.2f}"),
+    (
+        "meets",
+        lambda c: c["meets_target"],
+        lambda c: Text("yes", "green") if c["meets_target"] else Text("no", "red"),
+    ),
+]
+
+
+def sorted_cases(cases: list[dict[str, Any]], column: int, reverse: bool) -> list[dict[str, Any]]:
+    """The cases ordered by a ranking column (stable; ``rank`` puts the unreinforced last)."""
+    key = RANKING_COLUMNS[column][1]
+    return sorted(cases, key=key, reverse=reverse)
+
+
+class RankingTable(DataTable[Any]):
+    """The options, ranked; ``s`` sorts by the column under the cursor."""
+
+    BINDINGS: ClassVar[list[BindingType]] = [
+        Binding("s", "sort", "Sort"),
+        Binding("enter", "show_case", "Per record", show=False),
+    ]
+
+    class CaseChosen(Message):
+        """A case was highlighted (index in results["cases"])."""
+
+        def __init__(self, index: int) -> None:
+            super().__init__()
+            self.index = index
+
+    def __init__(self, **kw: Any) -> None:
+        super().__init__(cursor_type="cell", zebra_stripes=True, **kw)
+        self.cases: list[dict[str, Any]] = []
+        self.order: list[int] = []
+        self.sort_column = 0
+        self.sort_reverse = False
+        self.currency = ""
+
+    def show(self, cases: list[dict[str, Any]], currency: str) -> None:
+        self.cases = cases
+        self.currency = currency
+        self._fill()
+
+    def _fill(self) -> None:
+        row, col = self.cursor_coordinate
+        self.clear(columns=True)
+        for i, (header, _, _) in enumerate(RANKING_COLUMNS):
+            if header == "cost":
+                header = f"cost [{self.currency}]"
+            mark = (" ▼" if self.sort_reverse else " ▲") if i == self.sort_column else ""
+            self.add_column(Text(header + mark))
+        ordered = sorted_cases(self.cases, self.sort_column, self.sort_reverse)
+        self.order = [self.cases.index(c) for c in ordered]
+        for c in ordered:
+            self.add_row(*[_text(cell(c)) for _, _, cell in RANKING_COLUMNS])
+        if self.cases:
+            self.move_cursor(row=min(row, len(self.cases) - 1), column=col, animate=False)
+
+    def sort_by(self, column: int) -> None:
+        """Sort by ``column``; the same column again reverses the order."""
+        if column == self.sort_column:
+            self.sort_reverse = not self.sort_reverse
+        else:
+            self.sort_column, self.sort_reverse = column, False
+        self._fill()
+
+    def action_sort(self) -> None:
+        self.sort_by(self.cursor_coordinate.column)
+
+    def on_data_table_header_selected(self, event: DataTable.HeaderSelected) -> None:
+        event.stop()
+        self.sort_by(event.column_index)
+
+    def selected_case(self) -> int | None:
+        if not self.order:
+            return None
+        return self.order[min(self.cursor_coordinate.row, len(self.order) - 1)]
+
+    def on_data_table_cell_highlighted(self, event: DataTable.CellHighlighted) -> None:
+        i = self.selected_case()
+        if i is not None:
+            self.post_message(self.CaseChosen(i))
+
+    def action_show_case(self) -> None:
+        i = self.selected_case()
+        if i is not None:
+            self.post_message(self.CaseChosen(i))
+            self.app.query_one("#results-tabs", TabbedContent).active = "res-records"
+            self.app.call_after_refresh(self.app.query_one("#records-table").focus)
+
+
+class Tabbed(TabbedContent):
+    """TabbedContent that follows the focus into a pane only while the focus is still there
+    (a late focus message would otherwise switch back to a tab the user has left)."""
+
+    def _on_tab_pane_focused(self, event: TabPane.Focused) -> None:
+        focused = self.app.focused
+        if focused is not None and event.tab_pane in focused.ancestors:
+            super()._on_tab_pane_focused(event)
+        else:
+            event.stop()
+
+
+class ResultsPane(Vertical):
+    """The results of the last run."""
+
+    def compose(self) -> ComposeResult:
+        yield Static("No results yet: press ctrl+r to run the assessment.", id="results-note")
+        with Tabbed(id="results-tabs"):
+            with TabPane("Ranking", id="res-ranking"):
+                yield Static("", id="results-summary")
+                yield RankingTable(id="ranking-table")
+            with TabPane("Per record", id="res-records"):
+                with Horizontal(classes="control-row"):
+                    yield Label("Case ", classes="f-label-short")
+                    yield Select(
+                        [], id="case-select", compact=True, allow_blank=True, prompt="(run first)"
+                    )
+                yield Static("", id="case-summary")
+                yield DataTable(id="records-table", zebra_stripes=True, cursor_type="row")
+            with TabPane("FRP plot", id="res-plot"):
+                with Horizontal(classes="control-row"):
+                    yield Label("Plot ", classes="f-label-short")
+                    yield Select(
+                        [
+                            ("improvement vs FRP mass", "improvement"),
+                            ("capacity/demand vs FRP mass", "capacity_demand"),
+                            ("capacity/demand vs cost", "capacity_demand_cost"),
+                        ],
+                        id="plot-metric",
+                        value="improvement",
+                        allow_blank=False,
+                        compact=True,
+                    )
+                yield PlotView(id="frp-plot")
+            with TabPane("Design", id="res-design"):
+                with VerticalScroll(id="design-scroll"):
+                    yield Static("", id="design-table")
+            with TabPane("Compliance", id="res-compliance"):
+                with VerticalScroll(id="compliance-scroll"):
+                    yield Static("", id="compliance-summary")
+                    yield Static("", id="compliance-table")
+                    yield PlotView(id="compliance-plot")
+
+    def on_mount(self) -> None:
+        self.results: dict[str, Any] | None = None
+        self.query_one("#records-table", DataTable).add_columns(
+            *map(Text, ("record", "PGA [g]", "C collapse", "a_dyn [g]", "q = a_dyn/a_RM"))
+        )
+        self.query_one("#results-tabs").display = False
+
+    # ------------------------------------------------------------------------- display
+    def show(self, results: dict[str, Any], out_dir: str, stale: bool = False) -> None:
+        """Show a run's results."""
+        self.results = results
+        self._out_dir = out_dir
+        self.mark_stale(stale)
+        self.query_one("#results-tabs").display = True
+        self._summary(results)
+        self.query_one(RankingTable).show(results["cases"], results["costs"]["currency"])
+        sel = self.query_one("#case-select", Select)
+        with self.app.prevent(Select.Changed):
+            sel.set_options([(c["name"], i) for i, c in enumerate(results["cases"])])
+            sel.value = 0
+        self.show_case(0)
+        self.draw_plot()
+        self._compliance(results)
+        self._design(results)
+
+    def mark_stale(self, stale: bool) -> None:
+        """Say whether the project was edited after the run shown."""
+        if self.results is None:
+            return
+        self.query_one("#results-note", Static).update(
+            Text.assemble(
+                ("Results of the last run, in ", "dim"),
+                (f"{self._out_dir}/", ""),
+                ("  (edited since: ctrl+r to rerun)" if stale else "", "yellow"),
+            )
+        )
+
+    def _summary(self, r: dict[str, Any]) -> None:
+        w, urm, cc = r["wall"], r["cases"][0], r["code_check"]
+        demand = r["demand"]["pga"]
+        rec = r.get("recommended")
+        t = Text()
+        t.append(f"Demand a_g·S = {demand:.3f} g;  wall α = {w['alpha_deg']:.2f}°, ")
+        t.append(f"a_RM = {w['a_rm']:.3f} g;  unreinforced a_dyn = {urm['design_a_dyn']:.3f} g, ")
+        t.append(f"C/D = {urm['capacity_demand']:.2f}", "green" if urm["meets_target"] else "red")
+        t.append(f"\nDesign value: {r['model']['design_value']};  target C/D ≥ ")
+        t.append(f"{r['model']['target']:g};  code check (§C8.7.1): a0* = {cc['a0_star']:.3f} g ")
+        t.append(f"vs {cc['demand']:.3f} g → ")
+        t.append(
+            "satisfied" if cc["passed"] else "NOT satisfied", "green" if cc["passed"] else "red"
+        )
+        t.append("\nRecommended: ", "bold")
+        t.append(rec or "none of the options meets the target", "bold green" if rec else "red")
+        self.query_one("#results-summary", Static).update(t)
+
+    def show_case(self, index: int) -> None:
+        """The IDA result per record of case ``index``."""
+        r = self.results
+        if r is None or not 0 <= index < len(r["cases"]):
+            return
+        c = r["cases"][index]
+        sel = self.query_one("#case-select", Select)
+        if sel.value != index:
+            with self.app.prevent(Select.Changed):
+                sel.value = index
+        table = self.query_one("#records-table", DataTable)
+        table.clear()
+        for rec in c["records"]:
+            table.add_row(
+                Text(rec["record"]),
+                f"{rec['pga']:.4f}",
+                _num(rec["collapse_multiplier"], ".4f")
+                if rec["collapse_multiplier"]
+                else Text("no collapse", "yellow"),
+                _num(rec["a_dyn"], ".4f"),
+                _num(rec["q"], ".3f"),
+            )
+        t = Text()
+        t.append(f"{c['name']}: ", "bold")
+        t.append(
+            f"mean a_dyn = {c['mean_a_dyn']:.4f} g, min = {c['min_a_dyn']:.4f} g, "
+            f"design a_dyn = {c['design_a_dyn']:.4f} g, mean q = {c['mean_q']:.2f}\n"
+            f"capacity/demand = {c['capacity_demand']:.3f}, improvement = "
+            f"{c['improvement']:.3f}, FRP {c['frp_mass']:.1f} kg ({c['frp_mass_per_m']:.2f} kg/m)"
+        )
+        if c["lower_bound"]:
+            t.append("\nsome record did not collapse up to C_max: lower bounds", "yellow")
+        self.query_one("#case-summary", Static).update(t)
+
+    @on(Select.Changed, "#case-select")
+    def _case_selected(self, event: Select.Changed) -> None:
+        event.stop()
+        value = event.select.value  # the event may be older than the value shown
+        if isinstance(value, int):
+            self.show_case(value)
+
+    @on(RankingTable.CaseChosen)
+    def _case_chosen(self, event: RankingTable.CaseChosen) -> None:
+        self.show_case(event.index)
+
+    @on(Select.Changed, "#plot-metric")
+    def _metric(self, event: Select.Changed) -> None:
+        event.stop()
+        self.draw_plot()
+
+    def draw_plot(self) -> None:
+        """Improvement or capacity/demand of every case against its FRP quantity."""
+        r = self.results
+        plot = self.query_one("#frp-plot", PlotView)
+        if r is None:
+            return
+        metric = self.query_one("#plot-metric", Select).value
+        by_cost = metric == "capacity_demand_cost"
+        field = "capacity_demand" if by_cost else str(metric)
+        xkey = "frp_cost" if by_cost else "frp_mass"
+        groups: dict[tuple[str, str], list[dict[str, Any]]] = {}
+        for c in r["cases"][1:]:
+            groups.setdefault((c["material"], c["position"]), []).append(c)
+        materials = list(dict.fromkeys(m for m, _ in groups))
+        series: list[Series] = []
+        for (mat, pos), cases in groups.items():
+            cases = sorted(cases, key=lambda c: c[xkey])
+            style = MATERIAL_STYLES[materials.index(mat) % len(MATERIAL_STYLES)]
+            xs = [c[xkey] for c in cases]
+            ys = [c[field] for c in cases]
+            if len(cases) > 1:
+                series.append(Series(xs, ys, style=style))
+            series.append(
+                Series(
+                    xs,
+                    ys,
+                    style=style,
+                    kind="points",
+                    label=f"{mat} {pos}",
+                    marker=POSITION_MARKERS.get(pos, "■"),
+                )
+            )
+        urm = r["cases"][0]
+        series.append(
+            Series(
+                [0.0], [urm[field]], style="white", kind="points", label="unreinforced", marker="○"
+            )
+        )
+        rules = []
+        if field == "capacity_demand":
+            rules.append(Rule(r["model"]["target"], "y", "red", "target"))
+        ys_all = [y for s in series for y in s.y if y is not None]
+        top = max([*ys_all, *(x.value for x in rules)]) if ys_all else 1.0
+        xs_all = [x for s in series for x in s.x if x is not None]
+        cur = r["costs"]["currency"]
+        plot.show(
+            series,
+            x_range=(0.0, max(xs_all) * 1.05 if xs_all and max(xs_all) > 0 else 1.0),
+            y_range=(0.0, top * 1.08),
+            rules=rules,
+            x_label=f"FRP cost [{cur}]" if by_cost else "FRP mass [kg]",
+            y_label="capacity/demand" if field == "capacity_demand" else "improvement",
+        )
+
+    def _design(self, r: dict[str, Any]) -> None:
+        """Design mode: the smallest ratio meeting the target per material and position."""
+        out = self.query_one("#design-table", Static)
+        found = r.get("design")
+        if not found:
+            out.update(Text("Design mode was off for this run (Analysis tab: Design mode).", "dim"))
+            return
+        cur = r["costs"]["currency"]
+        table = Table(
+            title=Text(f"Smallest ratio meeting the target C/D ≥ {r['model']['target']:g}", "bold"),
+            title_justify="left",
+            box=box.SIMPLE_HEAD,
+            expand=True,
+        )
+        table.add_column(Text("material"), no_wrap=True)
+        table.add_column(Text("position"), no_wrap=True)
+        table.add_column(Text("ρ [‰]"), justify="right", no_wrap=True)
+        table.add_column(Text("C/D"), justify="right", no_wrap=True)
+        table.add_column(Text("FRP [kg]"), justify="right", no_wrap=True)
+        table.add_column(Text(f"cost [{cur}]"), justify="right", no_wrap=True)
+        table.add_column(Text("note"), ratio=1)
+        for d in found:
+            table.add_row(
+                Text(d["material"]),
+                Text(d["position"]),
+                Text(_num(d["ratio"], "g")),
+                Text(_num(d["capacity_demand"], ".2f")),
+                Text(_num(d["frp_mass"], ".1f")),
+                Text(_num(d["frp_cost"], ".0f")),
+                Text(d["message"], "dim"),
+            )
+        out.update(table)
+
+    def _compliance(self, r: dict[str, Any]) -> None:
+        comp = r["compliance"]
+        table = Table(box=box.SIMPLE_HEAD, expand=True, padding=(0, 1))
+        table.add_column("", width=1, no_wrap=True)
+        table.add_column("clause", ratio=3)
+        table.add_column("requirement", ratio=4)
+        table.add_column("found", ratio=4)
+        table.add_column("margin", justify="right", no_wrap=True)
+        for c in comp["checks"]:
+            margin = f"{c['margin']:+.1%}" if c["unit"] == "" else f"{c['margin']:+g} {c['unit']}"
+            code = "EC8" if "1998" in c["code"] else "NTC" if "NTC" in c["code"] else c["code"]
+            table.add_row(
+                Text("✓", "green") if c["passed"] else Text("✗", "bold red"),
+                Text(f"{code} {c['clause']}"),
+                Text(c["requirement"]),
+                Text(c["found"]),
+                Text(margin, "green" if c["passed"] else "red"),
+            )
+        self.query_one("#compliance-table", Static).update(table)
+        s = r["seismic"]
+        self.query_one("#compliance-summary", Static).update(
+            Text.assemble(
+                ("Spectrum compatibility of the records ", "bold"),
+                (f"({s['records_kind']}, T1 = {s['t1']:g} s): ", ""),
+                ("all checks passed", "green") if comp["passed"] else ("some checks FAIL", "red"),
+            )
+        )
+        self.query_one("#compliance-plot", PlotView).show(
+            [
+                Series(s["periods"], s["target_sa"], style="white", label="target"),
+                Series(s["periods"], s["mean_sa"], style="cyan", label="mean of records"),
+                Series(
+                    s["periods"],
+                    [0.9 * v for v in s["target_sa"]],
+                    style="grey50",
+                    label="90 % target",
+                ),
+            ],
+            x_range=(0.0, max(s["periods"])),
+            y_range=(0.0, 1.1 * max([*s["target_sa"], *s["mean_sa"]])),
+            x_label="T [s]",
+            y_label="Se [g]",
+        )

@@ -1,0 +1,70 @@
+"""Fixtures of the TUI tests: small project files (2-3 short artificial records)."""
+
+from __future__ import annotations
+
+import asyncio
+from collections.abc import Awaitable, Callable
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+#: a project that runs in about a second: 3 records of 14 s at dt 0.01, two options
+SMALL = """\
+project: {name: Small wall}
+wall: {thickness: 0.3, height: 3.0, length: 5.0, masonry: solid-brick-lime-mortar,
+       mechanism: one-sided}
+seismic:
+  spectrum: {type: preset, name: A2}
+  records:
+    artificial: {count: 3, seed: 7, duration: 14.0, dt: 0.01}
+interventions:
+  - {material: GFRP, position: external, ratio: 1.0}
+  - {material: CFRP, position: centred, ratio: 2.0}
+costs: {currency: EUR, installation_per_metre: 100.0}
+"""
+
+#: a project whose run takes several seconds (to cancel it)
+BIG = """\
+wall: {thickness: 0.3, height: 3.0, unit_weight: 18.0, mechanism: one-sided}
+seismic:
+  spectrum: {type: preset, name: A2}
+  records:
+    artificial: {count: 3, seed: 3, duration: 20.0, dt: 0.01}
+interventions:
+  - sweep:
+      material: [GFRP, BFRP, CFRP]
+      position: [centred, external]
+      ratio: [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16]
+"""
+
+
+@pytest.fixture
+def small_project(tmp_path: Path) -> Path:
+    path = tmp_path / "small.yaml"
+    path.write_text(SMALL, encoding="utf-8")
+    return path
+
+
+@pytest.fixture
+def big_project(tmp_path: Path) -> Path:
+    path = tmp_path / "big.yaml"
+    path.write_text(BIG, encoding="utf-8")
+    return path
+
+
+def run_async(fn: Callable[[], Awaitable[Any]]) -> Any:
+    """Run an async test body (no pytest-asyncio needed)."""
+    return asyncio.run(fn())
+
+
+async def wait_for(
+    pilot: Any, condition: Callable[[], bool], timeout: float = 30.0, step: float = 0.05
+) -> None:
+    """Let the app run until ``condition()`` holds (or fail after ``timeout`` seconds)."""
+    loop = asyncio.get_running_loop()
+    end = loop.time() + timeout
+    while not condition():
+        if loop.time() > end:
+            raise AssertionError("timed out waiting for the app")
+        await pilot.pause(step)

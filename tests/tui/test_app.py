@@ -1,0 +1,372 @@
+"""The TUI driven with Pilot on a 100 x 30 terminal: edit, validate, run, cancel, save, export."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import pytest
+from rich.console import Console
+from textual.widgets import Input, Select, Static, TabbedContent
+
+from frp_assess.api import CACHE_DIR, default_out_dir, run_assessment
+from frp_assess.assess.from_project import inputs_from_project
+from frp_assess.cli.new import template_text
+from frp_assess.config import load_project, load_project_text
+from frp_assess.tui.app import FrpAssessApp
+from frp_assess.tui.help import HelpScreen
+from frp_assess.tui.interventions import InterventionsEditor
+from frp_assess.tui.results import RankingTable
+from frp_assess.tui.run_panel import RunPanel
+from tests.tui.conftest import run_async, wait_for
+
+SIZE = (100, 30)
+
+
+def plain(widget: Static) -> str:
+    """What a Static shows, as plain text."""
+    console = Console(width=100, record=True, file=open("/dev/null", "w"))  # noqa: SIM115
+    console.print(widget.content)
+    return console.export_text()
+
+
+async def type_into(pilot: Any, selector: str, text: str) -> None:
+    """Focus an input, clear it and type ``text`` key by key (as a person would)."""
+    app = pilot.app
+    box = app.query_one(selector, Input)
+    box.focus()
+    box.value = text[:-1]  # as if typed up to the last key...
+    box.cursor_position = len(box.value)
+    await pilot.press(text[-1])  # ...which is pressed
+    await pilot.pause()
+
+
+def row_error(app: FrpAssessApp, path: tuple[str, ...]) -> str | None:
+    row = next(r for r in app.rows if r.spec.path == path)
+    return row.error
+
+
+def test_open_edit_derived_values_and_validation_messages(small_project: Path):
+    async def body() -> None:
+        app = FrpAssessApp(small_project)
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause()
+            assert app.problems == [] and app.project is not None
+            assert app.query_one("#f-wall-thickness-control", Input).value == "0.3"
+            derived = app.query_one("#derived-wall", Static)
+            assert "5.711°" in plain(derived)  # atan(0.3/3)
+            assert "0.1060 g" in plain(derived)  # a_g·S of preset A2
+
+            # a change updates the derived values as it is typed
+            await type_into(pilot, "#f-wall-thickness-control", "0.4")
+            assert "7.595°" in plain(derived)
+            assert "0.1333 g" in plain(derived)  # a_RM = tan α
+            assert app.project is not None and app.project.wall.thickness == 0.4
+
+            # thickness >= height: the loader's own message, under the field
+            await type_into(pilot, "#f-wall-thickness-control", "3.5")
+            message = "expected thickness B < height H = 3 m, found 3.5 (a rocking wall is slender)"
+            assert row_error(app, ("wall", "thickness")) == message
+            assert app.problems[0].message == message and app.project is None
+            assert "Wall ✗" in str(app.query_one("#tabs", TabbedContent).get_tab("tab-wall").label)
+            assert "✗ wall.thickness: expected thickness" in plain(app.query_one("#status", Static))
+
+            # text in a number field
+            await type_into(pilot, "#f-wall-height-control", "abc")
+            assert row_error(app, ("wall", "height")) == "expected a number, found 'abc'"
+
+            # fixing both clears the messages
+            await type_into(pilot, "#f-wall-height-control", "3")
+            await type_into(pilot, "#f-wall-thickness-control", "0.3")
+            assert app.problems == []
+            assert row_error(app, ("wall", "thickness")) is None
+
+            # the site spectrum: switch the type, the preview follows
+            await pilot.press("f3")
+            await pilot.pause()
+            kind = app.query_one("#f-seismic-spectrum-type-control", Select)
+            kind.value = "ntc2018"
+            await pilot.pause()
+            assert app.project is not None
+            assert app.project.seismic.spectrum.type == "ntc2018"
+            assert "a_g·S = 0.3" in plain(app.query_one("#spectrum-info", Static))
+            await type_into(pilot, "#f-seismic-spectrum-ag-ntc2018-control", "2")
+            assert row_error(app, ("seismic", "spectrum", "ag")) == (
+                "expected a number in (0, 1.5], found 2"
+            )
+
+    run_async(body)
+
+
+def test_retrofit_table_add_duplicate_remove_and_errors(small_project: Path):
+    async def body() -> None:
+        app = FrpAssessApp(small_project)
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause()
+            await pilot.press("f6")
+            await pilot.pause()
+            editor = app.query_one(InterventionsEditor)
+            assert len(editor.items) == 2
+            await pilot.press("s")  # a sweep
+            await pilot.pause()
+            assert "sweep" in editor.items[-1] and app.project is not None
+            # GFRP × (centred, external) × 1‰: the external one repeats option 1 (dropped)
+            assert len(app.project.expand_interventions()) == 3
+            await pilot.press("d")  # duplicate: the same options, dropped on expansion
+            await pilot.pause()
+            assert len(editor.items) == 4 and len(app.project.expand_interventions()) == 3
+            await pilot.press("delete")
+            await pilot.press("up")  # back to the CFRP option
+            await pilot.pause()
+            assert len(editor.items) == 3
+            ratio = next(r for r in editor.form_rows("option") if r.spec.path == ("ratio",)).control
+            assert isinstance(ratio, Input) and ratio.value == "2"
+            await type_into(pilot, f"#{ratio.id}", "25")
+            row = next(r for r in editor.form_rows("option") if r.spec.path == ("ratio",))
+            assert row.error == "expected a number in (0, 20], found 25"
+            assert str(app.problems[0]) == (
+                "interventions[1].ratio: expected a number in (0, 20], found 25"
+            )
+            await type_into(pilot, f"#{ratio.id}", "1.5")
+            assert app.problems == []
+            assert app.project.interventions[1].ratio == 1.5
+            # FRP mass per metre of the option, updated as typed: 1.5‰·0.3 m·3 m·1550 kg/m³
+            await pilot.pause()
+            cell = editor.table.get_row_at(1)[7]
+            assert str(cell) == f"{1.5e-3 * 0.3 * 3.0 * 1550:.2f}"
+            await pilot.press("a")  # new option from the table
+            await pilot.pause()
+            assert len(editor.items) == 3  # focus is in the form: 'a' was typed, not a binding
+            editor.table.focus()
+            await pilot.press("a")
+            await pilot.pause()
+            assert len(editor.items) == 4
+
+    run_async(body)
+
+
+def test_run_to_the_end_matches_batch_mode(small_project: Path, tmp_path: Path):
+    async def body() -> dict[str, Any]:
+        app = FrpAssessApp(small_project)
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause()
+            await pilot.press("ctrl+r")
+            await wait_for(pilot, lambda: not app.running and app.outcome is not None)
+            panel = app.query_one(RunPanel)
+            assert [(c.done, c.total) for c in panel.case_counts()] == [(3, 3)] * 3
+            assert app.outcome is not None and app.outcome.stats.computed == 9
+            table = app.query_one(RankingTable)
+            assert table.row_count == 3
+            names = [str(table.get_row_at(i)[1]) for i in range(3)]
+            results = app.outcome.results
+            # rerun: every IDA comes from the cache, as in batch mode
+            await pilot.press("ctrl+r")
+            await wait_for(pilot, lambda: not app.running)
+            assert app.outcome.stats.computed == 0 and app.outcome.stats.reused == 9
+            # results: sorting, per record, history of the highlighted case
+            await pilot.press("f9")
+            await pilot.pause()
+            assert app.focused is table
+            await pilot.press("right", "right", "right", "s")  # by FRP mass
+            assert [app.outcome.results["cases"][i]["frp_mass"] for i in table.order] == sorted(
+                c["frp_mass"] for c in app.outcome.results["cases"]
+            )
+            await pilot.press("enter")
+            await pilot.pause()
+            assert app.query_one("#results-tabs", TabbedContent).active == "res-records"
+            await pilot.press("f10")
+            await wait_for(pilot, lambda: "θ/α" in app.query_one("#hist-theta").render().plain)
+            assert "under art-" in plain(app.query_one("#hist-info", Static))
+        return {"names": names, "results": results}
+
+    got = run_async(body)
+    loaded = load_project(small_project)
+    inputs = inputs_from_project(loaded.project, loaded.base_dir, small_project.name)
+    batch, _ = run_assessment(inputs, tmp_path / "batch", pdf=False, jobs=1)
+    tui = got["results"]
+    assert set(got["names"]) == {c["name"] for c in batch["cases"]}
+    assert got["names"][0] == batch["recommended"]
+    for a, b in zip(tui["cases"], batch["cases"], strict=True):
+        assert a["name"] == b["name"]
+        assert a["records"] == b["records"]
+        for key in ("design_a_dyn", "capacity_demand", "improvement", "frp_mass", "rank"):
+            assert a[key] == b[key]
+    out = default_out_dir(small_project)
+    on_disk = json.loads((out / "results.json").read_text())
+    assert on_disk["cases"] == json.loads(json.dumps(tui["cases"]))
+    assert len(list((out / CACHE_DIR).glob("*.json"))) == 9
+
+
+def test_cancel_a_run_keeps_the_ui_responsive(big_project: Path):
+    async def body() -> None:
+        app = FrpAssessApp(big_project, jobs=1)
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause()
+            panel = app.query_one(RunPanel)
+            derived = app.query_one("#derived-wall", Static)
+            app.action_run()  # ctrl+r (the key itself is tested with the small project)
+            assert app.running
+            await wait_for(pilot, lambda: panel.last_stage == "ida", timeout=40)
+            # the editor works while the run goes on: a new height, derived values follow
+            app.action_tab(0)
+            box = app.query_one("#f-wall-height-control", Input)
+            box.value = "4"
+            await wait_for(pilot, lambda: "4.289°" in plain(derived), timeout=5)
+            assert app.running
+            await pilot.press("escape")
+            await wait_for(pilot, lambda: not app.running, timeout=30)
+            assert "cancelled" in plain(app.query_one("#run-state", Static))
+            assert app.outcome is None
+            done = sum(c.done for c in panel.case_counts())
+            total = sum(c.total for c in panel.case_counts())
+            assert total == 97 * 3 and 0 < done < total
+            cache = default_out_dir(big_project) / CACHE_DIR
+            assert len(list(cache.glob("*.json"))) >= done
+            # still responsive: back to 3 m, typed
+            await type_into(pilot, "#f-wall-height-control", "3")
+            assert "5.711°" in plain(derived)
+
+    run_async(body)
+
+
+def test_save_and_reload_gives_the_same_project(small_project: Path, tmp_path: Path):
+    original = load_project(small_project).project
+
+    async def body() -> None:
+        app = FrpAssessApp(small_project)
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause()
+            assert not app.modified()
+            keys = plain(app.query_one("#keybar", Static))  # the footer
+            for shown in ("^s Save", "^r Run", "^e Export", "? Help", "F2…F10 Tabs", "^q Quit"):
+                assert shown.replace("? ", "?/F1 ") in keys
+            await pilot.press("ctrl+s")  # unchanged: load -> save -> load
+            await pilot.pause()
+            assert load_project(small_project).project == original
+            await type_into(pilot, "#f-project-notes-control", "north facade: rocks")
+            assert app.modified()
+            await pilot.press("ctrl+s")
+            await pilot.pause()
+            assert not app.modified()
+            again = load_project(small_project).project
+            assert again == app.project
+            assert again.project.notes == "north facade: rocks"
+
+    run_async(body)
+
+
+def test_new_project_asks_for_a_file_name(tmp_path: Path, monkeypatch: pytest.MonkeyPatch):
+    monkeypatch.chdir(tmp_path)
+    target = tmp_path / "sub" / "new wall.yaml"
+
+    async def body() -> None:
+        app = FrpAssessApp(None)
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause()
+            # the template, shown field by field, gives back the template's project
+            assert app.project == load_project_text(template_text(), "t.yaml").project
+            assert len(app.project.expand_interventions()) == 19
+            await pilot.press("ctrl+s")
+            await pilot.pause()
+            box = app.screen.query_one("#path-input", Input)
+            box.value = str(target)
+            await pilot.press("enter")
+            await pilot.pause()
+            assert "no such directory" in plain(app.screen.query_one("#path-error", Static))
+            target.parent.mkdir()
+            await pilot.press("enter")
+            await pilot.pause()
+            assert app.path == target and target.exists()
+            assert load_project(target).project == app.project
+
+    run_async(body)
+
+
+def test_export_pdf_and_help(small_project: Path, tmp_path: Path):
+    export = tmp_path / "exported"
+
+    async def body() -> None:
+        app = FrpAssessApp(small_project)
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause()
+            await pilot.press("ctrl+e")  # nothing to export yet: a message, no dialog
+            await pilot.pause()
+            assert not app.screen.query("#path-input")
+            await pilot.press("ctrl+r")
+            await wait_for(pilot, lambda: not app.running and app.outcome is not None)
+            await pilot.press("ctrl+e")
+            await pilot.pause()
+            box = app.screen.query_one("#path-input", Input)
+            assert box.value == str(default_out_dir(small_project))
+            box.value = str(export)
+            await pilot.press("enter")
+            await wait_for(pilot, lambda: (export / "report.pdf").exists(), timeout=30)
+            await wait_for(pilot, lambda: (export / "results.json").exists())
+            # help: F1 anywhere, ? outside free-text fields (also in a number field)
+            await pilot.press("f2")
+            await pilot.press("question_mark")
+            await pilot.pause()
+            assert isinstance(app.screen, HelpScreen)
+            assert app.query_one("#f-wall-thickness-control", Input).value == "0.3"
+            await pilot.press("escape")
+            await pilot.pause()
+            await pilot.press("f1")
+            await pilot.pause()
+            assert isinstance(app.screen, HelpScreen)
+            await pilot.press("escape")
+            await pilot.pause()
+            assert not isinstance(app.screen, HelpScreen)
+            await pilot.press("f5")
+            await pilot.pause()
+            await pilot.press("question_mark")
+            await pilot.pause()
+            assert isinstance(app.screen, HelpScreen)
+
+    run_async(body)
+    assert (export / "report.pdf").read_bytes().startswith(b"%PDF")
+
+
+def test_invalid_file_opens_with_the_error_next_to_the_field(tmp_path: Path):
+    path = tmp_path / "bad.yaml"
+    path.write_text(
+        "wall: {thickness: 0.3, height: 3.0, unit_weight: 40, mechanism: one-sided}\n"
+        "seismic: {spectrum: {type: preset, name: A2}}\n",
+        encoding="utf-8",
+    )
+
+    async def body() -> None:
+        app = FrpAssessApp(path)
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause()
+            assert row_error(app, ("wall", "unit_weight")) == (
+                "expected a number in [5, 30], found 40"
+            )
+            await pilot.press("ctrl+r")
+            await pilot.pause()
+            log = app.query_one("#run-log")
+            assert "cannot run: wall.unit_weight" in "".join(str(line.text) for line in log.lines)
+
+    run_async(body)
+
+
+def test_quit_asks_when_there_are_unsaved_changes(small_project: Path):
+    from frp_assess.tui.dialogs import ConfirmQuit
+
+    async def body() -> None:
+        app = FrpAssessApp(small_project)
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause()
+            await type_into(pilot, "#f-wall-height-control", "4")
+            await pilot.press("ctrl+q")
+            await pilot.pause()
+            assert isinstance(app.screen, ConfirmQuit)
+            await pilot.press("escape")  # stay
+            await pilot.pause()
+            assert not isinstance(app.screen, ConfirmQuit) and app.return_code is None
+            await pilot.press("ctrl+q", "d")  # discard and quit
+            await pilot.pause()
+            assert app.return_code == 0
+        assert load_project(small_project).project.wall.height == 3.0  # not saved
+
+    run_async(body)
