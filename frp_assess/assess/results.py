@@ -122,6 +122,19 @@ def rank_cases(cases: list[dict[str, Any]], target: float) -> str | None:
     return cases[order[0]]["name"] if order and cases[order[0]]["meets_target"] else None
 
 
+def recommendation_text(results: dict[str, Any]) -> str:
+    """One line saying what to do: the recommended option, or that no retrofit is needed.
+
+    ``recommended`` is the cheapest option meeting the target even when the unreinforced wall
+    already meets it; this says so instead of presenting that option as required.
+    """
+    rec = results.get("recommended")
+    if results["cases"][0]["meets_target"]:
+        text = "no retrofit needed: the unreinforced wall already meets the target"
+        return text + (f" (cheapest option for extra margin: {rec})" if rec else "")
+    return rec or "none of the options meets the target"
+
+
 def seismic_dict(inputs: AssessmentInputs, seismic: SeismicInput) -> dict[str, Any]:
     sp = inputs.spectrum
     rep = seismic.compliance
@@ -289,6 +302,7 @@ def build_results(
         "cases": cases,
         "ranking_rule": RANKING_RULE.format(target=inputs.target),
         "recommended": recommended,
+        "retrofit_required": not cases[0]["meets_target"],
         "design": None if design is None else design_dicts(inputs, design),
         "governing": governing,
     }

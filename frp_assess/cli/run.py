@@ -13,6 +13,7 @@ from rich.table import Table
 
 from frp_assess.api import default_out_dir, prepare_records, run_assessment
 from frp_assess.assess.from_project import load_inputs
+from frp_assess.assess.results import recommendation_text
 from frp_assess.errors import Cancelled, InputError
 from frp_assess.motions import ComplianceReport
 
@@ -153,9 +154,7 @@ def run(args: argparse.Namespace) -> int:
     if len(results["cases"]) > 1:
         console.print(ranking_table(results))
         console.print(f"Ranking rule: {results['ranking_rule']}")
-        console.print(
-            "Recommended: " + (results["recommended"] or "none of the options meets the target")
-        )
+        console.print("Recommended: " + recommendation_text(results))
     for d in results["design"] or []:
         console.print(f"design {d['material']} {d['position']}: {d['message']}")
     console.print(

@@ -82,7 +82,7 @@ def summary(results: Results) -> list[Flowable]:
             f"{tb.fmt_acc(w['a_rm'])} g."
         )
     )
-    site = esc(p.get("location") or "the site")
+    site = esc(p.get("location") or "The site")
     comp = results["compliance"]
     out.append(
         markup(
@@ -134,7 +134,15 @@ def summary(results: Results) -> list[Flowable]:
     rec = tb.case_by_name(results, results.get("recommended"))
     ranked = tb.ranked_options(results)
     if rec is not None:
-        out.append(markup("<b>Recommended retrofit.</b> " + _option_sentence(results, rec)))
+        if ok:
+            out.append(
+                markup(
+                    "<b>No retrofit is needed</b> for this demand. If extra margin is wanted, "
+                    "the cheapest option is: " + _option_sentence(results, rec)
+                )
+            )
+        else:
+            out.append(markup("<b>Recommended retrofit.</b> " + _option_sentence(results, rec)))
         out.append(
             markup(
                 "It is the cheapest option that meets the target (ranking rule: "

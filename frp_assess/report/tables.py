@@ -200,7 +200,8 @@ def summary_table(results: Results, n_alternatives: int = 3) -> TableData:
     chosen: list[tuple[str, Mapping[str, Any]]] = [("existing", urm_case(results))]
     rec = case_by_name(results, results.get("recommended"))
     if rec is not None:
-        chosen.append(("recommended", rec))
+        urm_ok = bool(urm_case(results)["meets_target"])
+        chosen.append(("cheapest (optional)" if urm_ok else "recommended", rec))
     others = [c for c in ranked if c is not rec][:n_alternatives]
     chosen += [(f"alternative {i}" if rec else f"best {i}", c) for i, c in enumerate(others, 1)]
     rows = []

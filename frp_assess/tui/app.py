@@ -35,6 +35,7 @@ from textual.widgets import (
 )
 
 from frp_assess.api import default_out_dir
+from frp_assess.assess.results import recommendation_text
 from frp_assess.config import Project, load_project_text, validate_data
 from frp_assess.config.loader import parse_yaml
 from frp_assess.config.messages import Loc, format_path
@@ -842,7 +843,7 @@ class FrpAssessApp(App[None]):
         if message.status == "done" and message.outcome is not None:
             o = message.outcome
             self.outcome = o
-            rec = o.results.get("recommended") or "none meets the target"
+            rec = recommendation_text(o.results)
             panel.finish(
                 "done",
                 f"{o.stats.computed} IDAs computed, {o.stats.reused} reused from the cache; "

@@ -20,6 +20,7 @@ from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.message import Message
 from textual.widgets import DataTable, Label, Select, Static, TabbedContent, TabPane
 
+from frp_assess.assess.results import recommendation_text
 from frp_assess.tui.plots import PlotView, Rule, Series
 
 MATERIAL_STYLES = ("green", "yellow", "magenta", "cyan", "bright_blue", "red", "white")
@@ -241,7 +242,7 @@ class ResultsPane(Vertical):
             "satisfied" if cc["passed"] else "NOT satisfied", "green" if cc["passed"] else "red"
         )
         t.append("\nRecommended: ", "bold")
-        t.append(rec or "none of the options meets the target", "bold green" if rec else "red")
+        t.append(recommendation_text(r), "bold green" if rec or urm["meets_target"] else "red")
         self.query_one("#results-summary", Static).update(t)
 
     def show_case(self, index: int) -> None:

@@ -46,3 +46,18 @@ def test_kinematic_check_by_hand():
     assert simple_overturning_check(0.4, 3.0, 0.15, "LC3").passed is True
     with pytest.raises(ValueError):
         simple_overturning_check(0.4, 3.0, 0.3, "LC4")
+
+
+def test_recommendation_says_when_no_retrofit_is_needed():
+    """The printed recommendation does not present an option as required when the unreinforced
+    wall (case 0) already meets the target; it names the option only as extra margin."""
+    from frp_assess.assess.results import recommendation_text
+
+    def results(urm_ok: bool, rec: str | None) -> dict:
+        return {"recommended": rec, "cases": [{"meets_target": urm_ok}]}
+
+    assert recommendation_text(results(False, "GFRP external 1‰")) == "GFRP external 1‰"
+    assert recommendation_text(results(False, None)) == "none of the options meets the target"
+    ok = recommendation_text(results(True, "GFRP centred 1‰"))
+    assert ok.startswith("no retrofit needed") and "extra margin: GFRP centred 1‰" in ok
+    assert "extra margin" not in recommendation_text(results(True, None))

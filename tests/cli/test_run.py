@@ -10,6 +10,7 @@ import pytest
 
 from frp_assess.assess.from_project import load_inputs
 from frp_assess.assess.inputs import ArtificialRecords, RecordFile
+from frp_assess.assess.results import recommendation_text
 from frp_assess.cli import main
 from frp_assess.config import FRP_MATERIALS
 
@@ -49,8 +50,10 @@ def test_small_project_end_to_end_and_instant_rerun(tmp_path, capsys):
     gfrp = first["cases"][1]
     # 1 ‰ of 0.3 m x 5 m on each face, GFRP density 2000 kg/m3, bars 3 m long
     assert gfrp["frp_mass"] == pytest.approx(2 * 0.001 * 0.3 * 5.0 * 3.0 * 2000.0, rel=1e-9)
+    assert first["retrofit_required"] is (not first["cases"][0]["meets_target"])
     out = capsys.readouterr().out
-    assert "Spectrum compatibility" in out and "Recommended" in out
+    assert "Spectrum compatibility" in out
+    assert "Recommended: " + recommendation_text(first) in " ".join(out.split())
 
     assert main(["run", str(project), "--no-pdf"]) == 0
     assert "0 IDAs computed" in capsys.readouterr().out

@@ -168,6 +168,15 @@ def test_summary_table_recommended_and_alternatives(results: dict[str, Any]) -> 
     assert rows[1][1] == results["recommended"]
 
 
+def test_summary_table_when_no_retrofit_is_needed(results: dict[str, Any]) -> None:
+    """If the unreinforced wall meets the target, the cheapest option is not called
+    'recommended' (the summary says no retrofit is needed)."""
+    r = copy.deepcopy(results)
+    r["cases"][0]["meets_target"] = True
+    rows = tb.summary_table(r).rows
+    assert rows[1][0] == "cheapest (optional)" and rows[1][1] == r["recommended"]
+
+
 def _variant(results: dict[str, Any], kind: str) -> dict[str, Any]:
     r = copy.deepcopy(results)
     if kind == "no-recommendation":
