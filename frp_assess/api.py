@@ -33,6 +33,9 @@ from frp_assess.motions import write_at2
 
 #: progress(stage, done, total); stages: "records", "ida", "design", "writing"
 Progress = Callable[[str, int, int], None]
+#: case_progress(case_index, record_index): one (case, record) IDA of the "ida" stage finished
+#: (case 0 is the unreinforced wall); called from the worker threads
+PairDone = Callable[[int, int], None]
 
 CACHE_DIR = ".cache"
 
@@ -59,12 +62,16 @@ def run_assessment(
     *,
     jobs: int | None = None,
     progress: Progress | None = None,
+    case_progress: PairDone | None = None,
     cancel: threading.Event | None = None,
     seismic: SeismicInput | None = None,
     created: str | None = None,
     pdf: bool = True,
 ) -> tuple[dict[str, Any], RunStats]:
     """Run the assessment and write ``out_dir``; returns (results, stats).
+
+    ``progress`` reports each stage overall; ``case_progress`` additionally names every
+    (case, record) IDA of the "ida" stage as it finishes, for per-case progress bars.
 
     Finished (case, record) IDAs are cached in ``out_dir/.cache`` as they complete, so a
     cancelled run (:class:`~frp_assess.errors.Cancelled`) loses nothing; result files are
@@ -83,7 +90,9 @@ def run_assessment(
     runner = IdaRunner(records, inputs, IdaCache(out_dir / CACHE_DIR), jobs=jobs, cancel=cancel)
 
     models = [inputs.model_for(None)] + [inputs.model_for(o) for o in inputs.options]
-    all_results = runner.run(models, progress=lambda d, n: report("ida", d, n))
+    all_results = runner.run(
+        models, progress=lambda d, n: report("ida", d, n), on_pair=case_progress
+    )
     summaries = [summarise(r, inputs.ida.max_multiplier, a_rm) for r in all_results]
     urm_design = summaries[0].design_a_dyn
     options = [None, *inputs.options]

@@ -73,8 +73,17 @@ class IdaRunner:
         self.reused = 0
 
     def run(
-        self, models: Sequence[RockingModel], progress: Callable[[int, int], None] | None = None
+        self,
+        models: Sequence[RockingModel],
+        progress: Callable[[int, int], None] | None = None,
+        on_pair: Callable[[int, int], None] | None = None,
     ) -> list[list[IdaResult]]:
+        """IDA of every (model, record) pair, from the cache where possible.
+
+        ``progress(done, total)`` counts finished pairs; ``on_pair(model_index, record_index)``
+        is called once per pair as it finishes (cache hits first, then fresh results from the
+        worker threads, each before the matching ``progress`` call).
+        """
         n_rec = len(self.records)
         total = len(models) * n_rec
         out: list[IdaResult | None] = [None] * total
@@ -93,11 +102,18 @@ class IdaRunner:
                     slots.append(m_i * n_rec + r_i)
         hits = total - len(tasks)
         self.reused += hits
+        if on_pair is not None:
+            fresh_slots = set(slots)
+            for slot in range(total):
+                if slot not in fresh_slots:
+                    on_pair(*divmod(slot, n_rec))
         if progress is not None:
             progress(hits, total)
 
         def on_result(i: int, res: IdaResult) -> None:
             self.cache.put(keys[i], res)
+            if on_pair is not None:
+                on_pair(*divmod(slots[i], n_rec))
 
         fresh = run_batch(
             tasks,

@@ -90,14 +90,11 @@ def execute_run(
     )
     if cancel.is_set():
         raise Cancelled("cancelled")
-    tracker = CaseProgress(inputs, seismic.records, out_dir)
-    lock = threading.Lock()
+    tracker = CaseProgress(inputs, len(seismic.records))
 
     def progress(stage: str, done: int, total: int) -> None:
         if stage == "ida":
-            with lock:
-                counts = tuple(tracker.poll())
-            emit(RunEvent(stage, done, total, counts))
+            emit(RunEvent(stage, done, total, tuple(tracker.counts())))
         else:
             emit(RunEvent(stage, done, total))
 
@@ -106,6 +103,7 @@ def execute_run(
         out_dir,
         jobs=jobs,
         progress=progress,
+        case_progress=tracker.mark,
         cancel=cancel,
         seismic=seismic,
         pdf=False,

@@ -100,6 +100,43 @@ def test_rerun_is_served_from_cache_with_same_numbers(tmp_path):
     assert s4.computed == 2 * 3  # only the reinforced cases depend on the strain factor
 
 
+class PairRecorder:
+    """Collects case_progress calls and checks none lags behind the overall "ida" count."""
+
+    def __init__(self) -> None:
+        self.lock = threading.Lock()
+        self.pairs: list[tuple[int, int]] = []
+        self.lagging: list[tuple[int, int]] = []
+
+    def mark(self, case: int, record: int) -> None:
+        with self.lock:
+            self.pairs.append((case, record))
+
+    def progress(self, stage: str, done: int, total: int) -> None:
+        if stage == "ida":
+            with self.lock:
+                if len(self.pairs) < done:
+                    self.lagging.append((len(self.pairs), done))
+
+
+def test_case_progress_names_every_case_record_pair_once(tmp_path):
+    """case_progress gets each (case, record) of the IDA stage exactly once, before the
+    overall count that includes it: on a fresh run, on a partly cached run (after a change
+    that only affects the reinforced cases) and on a fully cached one."""
+    for inputs, computed in (
+        (small_inputs(), 9),
+        (small_inputs(strain_factor=0.4), 6),
+        (small_inputs(strain_factor=0.4), 0),
+    ):
+        rec = PairRecorder()
+        _, stats = run_assessment(
+            inputs, tmp_path, jobs=2, pdf=False, progress=rec.progress, case_progress=rec.mark
+        )
+        assert stats.computed == computed
+        assert sorted(rec.pairs) == [(c, r) for c in range(3) for r in range(3)]
+        assert not rec.lagging
+
+
 def test_cancel_keeps_finished_results(tmp_path):
     inputs = small_inputs()
     stop = threading.Event()

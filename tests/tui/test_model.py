@@ -196,12 +196,18 @@ def test_render_plot_fits_and_draws():
     assert tick(0.000123) == "1.2e-4" and tick(12.5) == "12.5"
 
 
-def test_case_progress_counts_cache_files(tmp_path):
+def test_case_progress_counts_every_pair_once(tmp_path):
+    """Per-case bars from the API's case_progress callback: each (case, record) IDA is counted
+    once, whether computed (first run) or taken from the cache (rerun)."""
     project = load_project_text(SMALL, "small.yaml").project
     inputs = inputs_from_project(project, tmp_path)
     seismic = prepare_records(inputs)
-    tracker = CaseProgress(inputs, seismic.records, tmp_path)
-    assert tracker.names == ["Unreinforced", "GFRP external 1‰", "CFRP centred 2‰"]
-    assert [c.done for c in tracker.poll()] == [0, 0, 0]
-    run_assessment(inputs, tmp_path, seismic=seismic, pdf=False, jobs=1)
-    assert [(c.done, c.total) for c in tracker.poll()] == [(3, 3)] * 3
+    for expected_computed in (9, 0):
+        tracker = CaseProgress(inputs, len(seismic.records))
+        assert tracker.names == ["Unreinforced", "GFRP external 1‰", "CFRP centred 2‰"]
+        assert [c.done for c in tracker.counts()] == [0, 0, 0]
+        _, stats = run_assessment(
+            inputs, tmp_path, seismic=seismic, pdf=False, jobs=2, case_progress=tracker.mark
+        )
+        assert stats.computed == expected_computed
+        assert [(c.done, c.total) for c in tracker.counts()] == [(3, 3)] * 3
