@@ -847,7 +847,7 @@ class FrpAssessApp(App[None]):
             panel.finish(
                 "done",
                 f"{o.stats.computed} IDAs computed, {o.stats.reused} reused from the cache; "
-                f"recommended: {rec}; results in {o.out_dir}/ (ctrl+e: PDF report)",
+                f"recommended: {rec}; results and report.pdf in {o.out_dir}/",
             )
             stale = self.project != o.project
             self.w("#results-pane").show(o.results, str(o.out_dir), stale)

@@ -59,10 +59,9 @@ mass. *Design*: the smallest ratio per material and position (design mode).
 *History*: pick a case and a record; `c` at collapse, `b` just below, `1` for C = 1, or
 type a multiplier and press `enter`.
 
-Runs write `results.json`, `results.csv`, `spectra.csv` and `records/` into
-`<project>-results/` next to the project file and keep every finished analysis in its
-`.cache/`, as `frp-assess run` does; `ctrl+e` adds `report.pdf` (or writes everything
-into another folder).
+Runs write `results.json`, `results.csv`, `spectra.csv`, `records/` and `report.pdf`
+into `<project>-results/` next to the project file and keep every finished analysis in
+its `.cache/`, as `frp-assess run` does; `ctrl+e` writes them all into another folder.
 """
 
 

@@ -68,11 +68,11 @@ def execute_run(
     emit: Emit,
     jobs: int | None = None,
 ) -> RunOutcome:
-    """Records, then every IDA (cached in ``out_dir/.cache``), ranking and result files.
+    """Records, then every IDA (cached in ``out_dir/.cache``), ranking and result files,
+    report.pdf included, as ``frp-assess run`` writes them.
 
     Raises :class:`~frp_assess.errors.Cancelled` when ``cancel`` is set (finished IDAs stay
     in the cache), :class:`~frp_assess.errors.InputError` for a problem the user can fix.
-    The PDF is not built here (``export``, ctrl+e, does it), which keeps a run short.
     """
     inputs = inputs_from_project(project, base_dir, input_file)
     emit(RunEvent("records", 0, 1, message="generating/reading the records"))
@@ -106,7 +106,7 @@ def execute_run(
         case_progress=tracker.mark,
         cancel=cancel,
         seismic=seismic,
-        pdf=False,
+        pdf=True,
     )
     return RunOutcome(results, seismic, inputs, Path(out_dir), stats, project)
 

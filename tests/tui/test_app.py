@@ -196,6 +196,7 @@ def test_run_to_the_end_matches_batch_mode(small_project: Path, tmp_path: Path):
     on_disk = json.loads((out / "results.json").read_text())
     assert on_disk["cases"] == json.loads(json.dumps(tui["cases"]))
     assert len(list((out / CACHE_DIR).glob("*.json"))) == 9
+    assert (out / "report.pdf").read_bytes().startswith(b"%PDF")  # as `frp-assess run` writes
 
 
 def test_cancel_a_run_keeps_the_ui_responsive(big_project: Path):
