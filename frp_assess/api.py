@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from frp_assess.assess.cache import IdaCache
+from frp_assess.assess.cache import IdaCache, cache_file, record_digest, task_key
 from frp_assess.assess.code_check import simple_overturning_check
 from frp_assess.assess.inputs import AssessmentInputs, Material
 from frp_assess.assess.results import (
@@ -67,11 +67,14 @@ def run_assessment(
     seismic: SeismicInput | None = None,
     created: str | None = None,
     pdf: bool = True,
+    write: bool = True,
 ) -> tuple[dict[str, Any], RunStats]:
     """Run the assessment and write ``out_dir``; returns (results, stats).
 
     ``progress`` reports each stage overall; ``case_progress`` additionally names every
     (case, record) IDA of the "ida" stage as it finishes, for per-case progress bars.
+    ``write=False`` returns the results without writing the result files (the cache is
+    still read and filled): how the TUI shows the last run again when it opens a project.
 
     Finished (case, record) IDAs are cached in ``out_dir/.cache`` as they complete, so a
     cancelled run (:class:`~frp_assess.errors.Cancelled`) loses nothing; result files are
@@ -135,9 +138,10 @@ def run_assessment(
         materials=materials,
         created=created or _dt.date.today().isoformat(),
     )
-    report("writing", 0, 1)
-    write_outputs(results, seismic, out_dir, pdf=pdf)
-    report("writing", 1, 1)
+    if write:
+        report("writing", 0, 1)
+        write_outputs(results, seismic, out_dir, pdf=pdf)
+        report("writing", 1, 1)
     return results, RunStats(runner.computed, runner.reused, out_dir)
 
 
@@ -196,6 +200,19 @@ def build_pdf(results: dict[str, Any], path: Path) -> bool:
         return False
     build_report(results, path)
     return True
+
+
+def missing_idas(inputs: AssessmentInputs, seismic: SeismicInput, out_dir: Path) -> int:
+    """How many (case, record) IDAs of a run are not in ``out_dir``'s cache yet (0: the IDA
+    stage of a run computes nothing; design mode may still search new ratios)."""
+    directory = Path(out_dir) / CACHE_DIR
+    hashes = [record_digest(r.acc, r.dt) for r in seismic.records]
+    models = [inputs.model_for(None), *(inputs.model_for(o) for o in inputs.options)]
+    return sum(
+        not cache_file(directory, task_key(m, h, inputs.ida)).is_file()
+        for m in models
+        for h in hashes
+    )
 
 
 def default_out_dir(project_file: Path) -> Path:

@@ -51,6 +51,11 @@ def task_key(model: RockingModel, record_hash: str, settings: IdaSettings) -> st
     return hashlib.sha256(json.dumps(payload, sort_keys=True).encode()).hexdigest()
 
 
+def cache_file(directory: Path, key: str) -> Path:
+    """Where the IDA result of ``key`` is stored in a cache directory."""
+    return directory / f"{key}.json"
+
+
 class IdaCache:
     """A directory of ``<key>.json`` files; ``None`` directory disables caching."""
 
@@ -62,7 +67,7 @@ class IdaCache:
     def get(self, key: str) -> IdaResult | None:
         if self.directory is None:
             return None
-        path = self.directory / f"{key}.json"
+        path = cache_file(self.directory, key)
         try:
             data = json.loads(path.read_text(encoding="utf-8"))
             return IdaResult(**data)
@@ -71,4 +76,4 @@ class IdaCache:
 
     def put(self, key: str, result: IdaResult) -> None:
         if self.directory is not None:
-            atomic_write_text(self.directory / f"{key}.json", json.dumps(asdict(result)))
+            atomic_write_text(cache_file(self.directory, key), json.dumps(asdict(result)))

@@ -82,6 +82,7 @@ from frp_assess.tui.session import (
     case_history,
     execute_run,
     export_outputs,
+    load_previous,
     save_project,
 )
 
@@ -144,6 +145,14 @@ class RunDone(Message):
     def __init__(self, status: str, outcome: RunOutcome | None, message: str) -> None:
         super().__init__()
         self.status, self.outcome, self.message = status, outcome, message
+
+
+class PreviousLoaded(Message):
+    """The results of the last run, rebuilt from the cache at start (None: none match)."""
+
+    def __init__(self, outcome: RunOutcome | None, error: str = "") -> None:
+        super().__init__()
+        self.outcome, self.error = outcome, error
 
 
 class HistoryDone(Message):
@@ -210,6 +219,7 @@ class FrpAssessApp(App[None]):
         self._shown: dict[str, Any] = {}
         self._quitting = False
         self._last_data: Any = None
+        self._previous_event = threading.Event()  #: cancels rebuilding the last run's results
 
     # ------------------------------------------------------------------------ layout
     def compose(self) -> ComposeResult:
@@ -261,6 +271,51 @@ class FrpAssessApp(App[None]):
         if self.load_message:
             self.notify(self.load_message, severity="warning", timeout=8, markup=False)
         self.query_one("#f-wall-thickness-control", Input).focus()
+        if self.path is not None and self.project is not None and not self.problems:
+            if (default_out_dir(self.path) / "results.json").is_file():
+                self._previous_event = threading.Event()
+                self._previous_worker(self.project, self.path.name, default_out_dir(self.path))
+
+    @work(thread=True, exclusive=True, group="previous", exit_on_error=False)
+    def _previous_worker(self, project: Project, input_file: str, out_dir: Path) -> None:
+        try:
+            outcome = load_previous(
+                project,
+                self.base_dir,
+                input_file,
+                out_dir,
+                cancel=self._previous_event,
+                jobs=self.jobs,
+            )
+        except Cancelled:
+            return
+        except Exception as exc:  # noqa: BLE001 - a note in the run log, never a crash
+            self.post_message(PreviousLoaded(None, f"{type(exc).__name__}: {exc}"))
+        else:
+            self.post_message(PreviousLoaded(outcome))
+
+    @on(PreviousLoaded)
+    def _previous_loaded(self, message: PreviousLoaded) -> None:
+        if self._quitting or self.running or self.outcome is not None or self.path is None:
+            return
+        panel = self.w("#run-panel")
+        out_dir = default_out_dir(self.path)
+        o = message.outcome
+        if o is None:
+            why = f" ({message.error})" if message.error else ""
+            panel.log_line(
+                f"the results in {out_dir}/ are not those of the project as it is{why}: "
+                "ctrl+r runs it"
+            )
+            return
+        self.outcome = o
+        panel.log_line(
+            f"results of the run of {o.results.get('created')} shown (rebuilt from the cache in "
+            f"{out_dir}/); recommended: {recommendation_text(o.results)}"
+        )
+        self.w("#results-pane").show(o.results, str(o.out_dir), self.project != o.project)
+        self.w("#history-pane").show_results(o.results)
+        self._update_status()
 
     def _initial_data(self) -> Any:
         if self.path is not None and self.path.exists():
@@ -1001,6 +1056,7 @@ class FrpAssessApp(App[None]):
 
     def _quit_now(self) -> None:
         self._quitting = True
+        self._previous_event.set()
         if self.cancel_event is not None:
             self.cancel_event.set()
         self.exit()

@@ -62,6 +62,8 @@ type a multiplier and press `enter`.
 Runs write `results.json`, `results.csv`, `spectra.csv`, `records/` and `report.pdf`
 into `<project>-results/` next to the project file and keep every finished analysis in
 its `.cache/`, as `frp-assess run` does; `ctrl+e` writes them all into another folder.
+Opening a project that was run before shows that run's results again (rebuilt from the
+cache, nothing recomputed) when they match the project as it is.
 """
 
 

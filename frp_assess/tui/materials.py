@@ -125,7 +125,10 @@ class MaterialsEditor(ItemEditor):
         source = (entry.get("source") if isinstance(entry, dict) else None) or (
             lib.source if lib else ""
         )
-        cells += [origin, Text(str(source)[:40], style="dim")]
+        source = str(source)
+        if len(source) > 40:  # the whole text is in the form below the table
+            source = source[:39] + "…"
+        cells += [origin, Text(source, style="dim")]
         return cells
 
     def item_value(self, index: int, path: Loc) -> Any:

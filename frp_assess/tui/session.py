@@ -7,6 +7,7 @@ be tested without a terminal.  Everything goes through the application API
 
 from __future__ import annotations
 
+import json
 import threading
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -15,7 +16,13 @@ from typing import Any
 
 import numpy as np
 
-from frp_assess.api import RunStats, prepare_records, run_assessment, write_outputs
+from frp_assess.api import (
+    RunStats,
+    missing_idas,
+    prepare_records,
+    run_assessment,
+    write_outputs,
+)
 from frp_assess.assess.from_project import inputs_from_project
 from frp_assess.assess.inputs import AssessmentInputs
 from frp_assess.assess.seismic import SeismicInput
@@ -107,6 +114,36 @@ def execute_run(
         cancel=cancel,
         seismic=seismic,
         pdf=True,
+    )
+    return RunOutcome(results, seismic, inputs, Path(out_dir), stats, project)
+
+
+def load_previous(
+    project: Project,
+    base_dir: Path,
+    input_file: str,
+    out_dir: Path,
+    *,
+    cancel: threading.Event,
+    jobs: int | None = None,
+) -> RunOutcome | None:
+    """The last run into ``out_dir`` again, rebuilt from its cache for the project as it is.
+
+    Nothing is written.  None when there was no run (no ``results.json``) or when some
+    (case, record) IDA of the project is not in the cache (the project changed since the
+    run: ``ctrl+r`` runs it); the date of the results is that of the stored run.
+    """
+    stored = Path(out_dir) / "results.json"
+    try:
+        created = json.loads(stored.read_text(encoding="utf-8")).get("created")
+    except (OSError, ValueError, AttributeError):
+        return None
+    inputs = inputs_from_project(project, base_dir, input_file)
+    seismic = prepare_records(inputs)
+    if missing_idas(inputs, seismic, out_dir):
+        return None
+    results, stats = run_assessment(
+        inputs, out_dir, jobs=jobs, cancel=cancel, seismic=seismic, created=created, write=False
     )
     return RunOutcome(results, seismic, inputs, Path(out_dir), stats, project)
 

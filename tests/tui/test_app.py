@@ -371,3 +371,27 @@ def test_quit_asks_when_there_are_unsaved_changes(small_project: Path):
         assert load_project(small_project).project.wall.height == 3.0  # not saved
 
     run_async(body)
+
+
+def test_opening_a_project_shows_its_last_run(small_project: Path):
+    """Results are not lost between sessions: opening a project that was run before shows
+    that run's ranking (rebuilt from the cache, nothing recomputed or rewritten), and the
+    time-history viewer works on it."""
+    loaded = load_project(small_project)
+    inputs = inputs_from_project(loaded.project, loaded.base_dir, small_project.name)
+    out = default_out_dir(small_project)
+    stored, _ = run_assessment(inputs, out, pdf=False, jobs=2, created="2026-01-02")
+    stamp = (out / "results.json").stat().st_mtime_ns
+
+    async def body() -> None:
+        app = FrpAssessApp(small_project)
+        async with app.run_test(size=SIZE) as pilot:
+            await wait_for(pilot, lambda: app.outcome is not None)
+            assert app.outcome.stats.computed == 0 and not app.running
+            assert app.outcome.results["cases"] == json.loads(json.dumps(stored["cases"]))
+            assert app.query_one(RankingTable).row_count == 3
+            await pilot.press("f10")
+            await wait_for(pilot, lambda: "θ/α" in app.query_one("#hist-theta").render().plain)
+
+    run_async(body)
+    assert (out / "results.json").stat().st_mtime_ns == stamp

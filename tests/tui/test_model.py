@@ -211,3 +211,26 @@ def test_case_progress_counts_every_pair_once(tmp_path):
         )
         assert stats.computed == expected_computed
         assert [(c.done, c.total) for c in tracker.counts()] == [(3, 3)] * 3
+
+
+def test_load_previous_rebuilds_the_last_run_only_when_it_matches(tmp_path):
+    """Opening a project shows its last run again, rebuilt from the cache without writing; a
+    project changed since (an IDA not in the cache) or never run gives None."""
+    import threading
+
+    from frp_assess.tui.session import load_previous
+
+    project = load_project_text(SMALL, "small.yaml").project
+    stop = threading.Event()
+    assert load_previous(project, tmp_path, "small.yaml", tmp_path, cancel=stop) is None
+    inputs = inputs_from_project(project, tmp_path, "small.yaml")
+    stored, _ = run_assessment(inputs, tmp_path, pdf=False, jobs=2, created="2026-01-02")
+    before = {p.name: p.stat().st_mtime_ns for p in tmp_path.iterdir()}
+    got = load_previous(project, tmp_path, "small.yaml", tmp_path, cancel=stop)
+    assert got is not None and got.stats.computed == 0
+    assert got.results == stored  # the same numbers, and the stored run's date
+    assert {p.name: p.stat().st_mtime_ns for p in tmp_path.iterdir()} == before  # nothing written
+    changed = load_project_text(
+        SMALL.replace("seed: 7", "seed: 8"), "small.yaml"
+    ).project  # other records: no cached IDA
+    assert load_previous(changed, tmp_path, "small.yaml", tmp_path, cancel=stop) is None
