@@ -805,8 +805,9 @@ class FrpAssessApp(App[None]):
                 markup=False,
             )
             return False
+        opened = self.path if self.path is not None and self.path.is_file() else None
         try:
-            save_project(self.project, path)
+            kept = save_project(self.project, path, opened_from=opened)
         except InputError as exc:
             self.notify(str(exc), title="Not saved", severity="error", markup=False)
             return False
@@ -814,7 +815,8 @@ class FrpAssessApp(App[None]):
         self.base_dir = self.path.parent  # relative record paths are read from there now
         self.saved_data = self.collect()
         self.revalidate(force=True)
-        self.notify(f"saved {path}", title="Saved", markup=False)
+        how = "only the changes; its comments kept" if kept else "the whole project"
+        self.notify(f"saved {path} ({how})", title="Saved", markup=False)
         return True
 
     # -------------------------------------------------------------------------- run

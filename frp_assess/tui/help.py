@@ -21,7 +21,8 @@ the field and the tab is marked **✗**. Derived values update as you type.
 
 | key | action |
 |---|---|
-| `ctrl+s` | save the project (asks for a file name the first time) |
+| `ctrl+s` | save the project (asks for a file name the first time); only what |
+|  | changed is rewritten: the file's comments and layout stay |
 | `ctrl+r` | run the assessment (in the background; the editor stays usable) |
 | `esc` / `ctrl+c` | cancel the run (finished analyses are kept in the cache) |
 | `ctrl+e` | export the PDF report and the result files |

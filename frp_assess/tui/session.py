@@ -26,7 +26,8 @@ from frp_assess.api import (
 from frp_assess.assess.from_project import inputs_from_project
 from frp_assess.assess.inputs import AssessmentInputs
 from frp_assess.assess.seismic import SeismicInput
-from frp_assess.config import Project, dump_project
+from frp_assess.config import Project, dump_project, load_project_text
+from frp_assess.config.yaml_update import update_project_text
 from frp_assess.errors import Cancelled, InputError
 from frp_assess.io_utils import atomic_write_text
 from frp_assess.tui.progress import CaseCount, CaseProgress
@@ -161,21 +162,42 @@ def export_outputs(outcome: RunOutcome, directory: Path) -> list[Path]:
     return [directory / n for n in names if (directory / n).exists()]
 
 
-def save_project(project: Project, path: Path) -> None:
-    """Write the project as YAML (atomically); loading it gives an equal :class:`Project`."""
+def save_project(project: Project, path: Path, *, opened_from: Path | None = None) -> bool:
+    """Write the project as YAML (atomically); loading it gives an equal :class:`Project`.
+
+    When ``opened_from`` is a valid project file (the one being edited), its text is kept,
+    comments and layout included, and only what changed is rewritten; otherwise (or if that
+    fails) the whole project is dumped.  Returns whether the comments were kept.
+    """
     path = Path(path)
     if path.is_dir():
         raise InputError(f"{path} is a directory")
     if path.suffix.lower() not in (".yaml", ".yml"):
         raise InputError(f"expected a .yaml file name, found {path.name!r}")
-    text = (
-        "# frp-assess project file, saved by `frp-assess tui` (units: see `frp-assess new`)\n"
-        + dump_project(project)
-    )
+    text = _updated_text(opened_from, project, str(path))
+    kept = text is not None
+    if text is None:
+        text = (
+            "# frp-assess project file, saved by `frp-assess tui` (units: see `frp-assess new`)\n"
+            + dump_project(project)
+        )
     try:
         atomic_write_text(path, text)
     except OSError as exc:
         raise InputError(f"cannot write {path}: {exc.strerror or exc}") from None
+    return kept
+
+
+def _updated_text(opened_from: Path | None, project: Project, name: str) -> str | None:
+    """The text of ``opened_from`` changed to hold ``project``, or None (see save_project)."""
+    if opened_from is None:
+        return None
+    try:
+        original_text = Path(opened_from).read_text(encoding="utf-8")
+        original = load_project_text(original_text, name, check_files=False).project
+    except (OSError, UnicodeDecodeError, InputError):
+        return None
+    return update_project_text(original_text, original, project, name)
 
 
 @dataclass(frozen=True)

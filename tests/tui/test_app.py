@@ -232,6 +232,12 @@ def test_cancel_a_run_keeps_the_ui_responsive(big_project: Path):
 
 
 def test_save_and_reload_gives_the_same_project(small_project: Path, tmp_path: Path):
+    """load -> save -> load gives the same project; saving keeps the file's comments and
+    leaves an unchanged file byte for byte as it was."""
+    text = "# North facade, survey of May\n" + small_project.read_text(encoding="utf-8").replace(
+        "installation_per_metre: 100.0}", "installation_per_metre: 100.0}  # price list 2026"
+    )
+    small_project.write_text(text, encoding="utf-8")
     original = load_project(small_project).project
 
     async def body() -> None:
@@ -245,6 +251,7 @@ def test_save_and_reload_gives_the_same_project(small_project: Path, tmp_path: P
             await pilot.press("ctrl+s")  # unchanged: load -> save -> load
             await pilot.pause()
             assert load_project(small_project).project == original
+            assert small_project.read_text(encoding="utf-8") == text
             await type_into(pilot, "#f-project-notes-control", "north facade: rocks")
             assert app.modified()
             await pilot.press("ctrl+s")
@@ -253,6 +260,8 @@ def test_save_and_reload_gives_the_same_project(small_project: Path, tmp_path: P
             again = load_project(small_project).project
             assert again == app.project
             assert again.project.notes == "north facade: rocks"
+            saved = small_project.read_text(encoding="utf-8")
+            assert "# North facade, survey of May" in saved and "}  # price list 2026" in saved
 
     run_async(body)
 
