@@ -273,7 +273,6 @@ class FrpAssessApp(App[None]):
         self.query_one("#f-wall-thickness-control", Input).focus()
         if self.path is not None and self.project is not None and not self.problems:
             if (default_out_dir(self.path) / "results.json").is_file():
-                self._previous_event = threading.Event()
                 self._previous_worker(self.project, self.path.name, default_out_dir(self.path))
 
     @work(thread=True, exclusive=True, group="previous", exit_on_error=False)

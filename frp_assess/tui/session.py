@@ -130,9 +130,10 @@ def load_previous(
 ) -> RunOutcome | None:
     """The last run into ``out_dir`` again, rebuilt from its cache for the project as it is.
 
-    Nothing is written.  None when there was no run (no ``results.json``) or when some
-    (case, record) IDA of the project is not in the cache (the project changed since the
-    run: ``ctrl+r`` runs it); the date of the results is that of the stored run.
+    No result file is written (a design-mode search may add IDAs to the cache).  None when
+    there was no run (no ``results.json``) or when some (case, record) IDA of the project is
+    not in the cache (the project changed since the run: ``ctrl+r`` runs it); the date of
+    the results is that of the stored run.
     """
     stored = Path(out_dir) / "results.json"
     try:
