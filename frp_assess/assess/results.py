@@ -15,7 +15,7 @@ from frp_assess.assess.code_check import KinematicCheck
 from frp_assess.assess.inputs import AssessmentInputs, Material, Option
 from frp_assess.assess.quantities import quantity_for
 from frp_assess.assess.ranking import RANKING_RULE, Rankable, rank_options
-from frp_assess.assess.runner import CaseSummary, DesignResult
+from frp_assess.assess.runner import CaseSummary, DesignResult, design_value_rule
 from frp_assess.assess.seismic import SeismicInput
 from frp_assess.dynamics import RockingModel
 from frp_assess.motions import G
@@ -285,9 +285,7 @@ def build_results(
                 "max_multiplier": inputs.ida.max_multiplier,
             },
             "target": inputs.target,
-            "design_value": "mean of the records"
-            if len(seismic.records) >= 7
-            else "least favourable record (fewer than 7 records)",
+            "design_value": design_value_rule(len(seismic.records)),
         },
         "materials": {k: material_dict(v) for k, v in materials.items()},
         "costs": {

@@ -30,6 +30,18 @@ class CaseSummary:
     lower_bound: bool  #: some record did not collapse up to C_max: values are lower bounds
 
 
+#: with this many records or more the design a_dyn is their mean, with fewer the least
+#: favourable one (EN 1998-1 §4.3.3.4.3, NTC 2018 §7.3.5)
+MEAN_OF_RECORDS_FROM = 7
+
+
+def design_value_rule(n_records: int) -> str:
+    """How the design a_dyn is taken from ``n_records`` records (results.json wording)."""
+    if n_records >= MEAN_OF_RECORDS_FROM:
+        return "mean of the records"
+    return f"least favourable record (fewer than {MEAN_OF_RECORDS_FROM} records)"
+
+
 def summarise(results: Sequence[IdaResult], settings_max: float, a_rm_g: float) -> CaseSummary:
     a_dyn = tuple(None if r.a_dyn is None else r.a_dyn / G for r in results)
     bound = tuple(
@@ -38,7 +50,7 @@ def summarise(results: Sequence[IdaResult], settings_max: float, a_rm_g: float) 
     )
     mean = sum(bound) / len(bound)
     low = min(bound)
-    design = mean if len(bound) >= 7 else low
+    design = mean if len(bound) >= MEAN_OF_RECORDS_FROM else low
     return CaseSummary(
         tuple(results),
         a_dyn,

@@ -11,6 +11,7 @@ from frp_assess.config.loader import (
     dump_project,
     load_project,
     load_project_text,
+    project_data,
     validate_data,
 )
 from frp_assess.config.schema import Intervention, Project
@@ -24,6 +25,7 @@ __all__ = [
     "Masonry",
     "Project",
     "dump_project",
+    "project_data",
     "load_project",
     "load_project_text",
     "validate_data",

@@ -219,7 +219,13 @@ def load_project(path: str | Path) -> LoadedProject:
     return load_project_text(text, str(path), base_dir=path.parent)
 
 
+def project_data(project: Project) -> dict[str, Any]:
+    """The project as the nested dict the YAML loader reads (every value, defaults included);
+    :func:`validate_data` of it gives an equal model."""
+    return project.model_dump(mode="json", exclude_none=True)
+
+
 def dump_project(project: Project) -> str:
     """The project as YAML, keys in schema order; loading it gives an equal model."""
-    data = project.model_dump(mode="json", exclude_none=True)
+    data = project_data(project)
     return yaml.safe_dump(data, sort_keys=False, allow_unicode=True, default_flow_style=False)

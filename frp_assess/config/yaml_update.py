@@ -19,16 +19,11 @@ import io
 from collections.abc import Mapping
 from typing import Any
 
-from frp_assess.config.loader import load_project_text
+from frp_assess.config.loader import load_project_text, project_data
 from frp_assess.config.schema import Project
 from frp_assess.errors import InputError
 
 _MISSING = object()
-
-
-def _full(project: Project) -> dict[str, Any]:
-    """Every value of the project, defaults included (the JSON form the loader accepts)."""
-    return project.model_dump(mode="json", exclude_none=True)
 
 
 def _is_scalar(value: Any) -> bool:
@@ -122,7 +117,7 @@ def update_project_text(
         return None
     if not isinstance(doc, CommentedMap):
         return None
-    _merge(doc, _full(original), _full(project))
+    _merge(doc, project_data(original), project_data(project))
     buf = io.StringIO()
     yaml.dump(doc, buf)
     text = buf.getvalue()

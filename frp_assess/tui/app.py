@@ -8,6 +8,7 @@ to its field, updates derived values and the spectrum preview, and runs the long
 
 from __future__ import annotations
 
+import copy
 import json
 import re
 import threading
@@ -36,7 +37,8 @@ from textual.widgets import (
 
 from frp_assess.api import default_out_dir
 from frp_assess.assess.results import recommendation_text
-from frp_assess.config import Project, load_project_text, validate_data
+from frp_assess.assess.runner import design_value_rule
+from frp_assess.config import Project, load_project_text, project_data
 from frp_assess.config.loader import parse_yaml
 from frp_assess.config.messages import Loc, format_path
 from frp_assess.errors import Cancelled, InputError
@@ -61,14 +63,12 @@ from frp_assess.tui.keybar import KeyBar
 from frp_assess.tui.materials import MaterialsEditor
 from frp_assess.tui.model import (
     Problem,
-    deep_copy,
     get_path,
     material_table,
-    project_data,
     record_file_problem,
     set_path,
     spectrum_preview,
-    validation_problems,
+    validate_edit,
     wall_derived,
 )
 from frp_assess.tui.plots import Rule, Series
@@ -385,7 +385,7 @@ class FrpAssessApp(App[None]):
 
     def populate(self, data: Any) -> None:
         """Show ``data`` (the project as the YAML loader reads it) in every field."""
-        data = deep_copy(data)
+        data = copy.deepcopy(data)
         self.variants = {g: self._variant_of(data, g) for g in ("spectrum", "records", "design")}
         with self.prevent(Input.Changed, Select.Changed):
             for row in self.rows:
@@ -421,10 +421,10 @@ class FrpAssessApp(App[None]):
                 continue
             set_path(data, spec.path, row.data_value())
         if self.variants["records"] == "files":
-            files = deep_copy(self.w("#files-editor").items)
+            files = copy.deepcopy(self.w("#files-editor").items)
             set_path(data, ("seismic", "records", "files"), files)
-        data["materials"] = deep_copy(self.w("#materials-editor").data())
-        data["interventions"] = deep_copy(self.w("#interventions-editor").items)
+        data["materials"] = copy.deepcopy(self.w("#materials-editor").data())
+        data["interventions"] = copy.deepcopy(self.w("#interventions-editor").items)
         return data
 
     # ------------------------------------------------------------------- validation
@@ -437,11 +437,9 @@ class FrpAssessApp(App[None]):
         data = self.collect()
         if not force and data == self._last_data:
             return
-        self._last_data = deep_copy(data)
-        problems = validation_problems(data)
-        project = None
-        if not problems:
-            project = validate_data(data)
+        self._last_data = copy.deepcopy(data)
+        project, problems = validate_edit(data)
+        if project is not None:
             missing = record_file_problem(project, self.base_dir)
             if missing is not None:
                 problems = [missing]
@@ -590,7 +588,7 @@ class FrpAssessApp(App[None]):
             return
         recs = project.seismic.records
         n = self._record_count(project)
-        rule = "mean of the records" if n >= 7 else "least favourable record (< 7 records)"
+        rule = design_value_rule(n)
         if recs.artificial is not None:
             a = recs.artificial
             text = (

@@ -35,14 +35,10 @@ from frp_assess.config.schema import (
     TableSpectrum,
     WallSpec,
 )
-from frp_assess.tui.fields import FieldRow, FieldSpec
+from frp_assess.tui.fields import FieldRow, FieldSpec, field_help
 from frp_assess.tui.model import MISSING, WallDerived
 from frp_assess.tui.plots import PlotView
 from frp_assess.tui.record_files import RecordFilesEditor
-
-
-def _desc(model: type[BaseModel], name: str) -> str:
-    return str(model.model_fields[name].description or "")
 
 
 def _default(model: type[BaseModel], name: str) -> Any:
@@ -56,7 +52,7 @@ def num(
 ) -> FieldSpec:
     """A number (or YAML scalar) field with the schema's description as help."""
     kw.setdefault("default", _default(model, path[-1]))
-    return FieldSpec(path, label, "scalar", unit=unit, help=_desc(model, path[-1]), **kw)
+    return FieldSpec(path, label, "scalar", unit=unit, help=field_help(model, path[-1]), **kw)
 
 
 def choice(
@@ -68,7 +64,7 @@ def choice(
 ) -> FieldSpec:
     """A choice among ``values`` (plain values, or (label, value) pairs)."""
     pairs = tuple(v if isinstance(v, tuple) else (str(v), v) for v in values)
-    help_text = kw.pop("help", None) or (_desc(model, path[-1]) if model else "")
+    help_text = kw.pop("help", None) or (field_help(model, path[-1]) if model else "")
     if model is not None:
         kw.setdefault("default", _default(model, path[-1]))
     return FieldSpec(path, label, "choice", choices=pairs, help=help_text, **kw)
@@ -77,7 +73,7 @@ def choice(
 def text(path: tuple[str, ...], label: str, model: type[BaseModel], **kw: Any) -> FieldSpec:
     kw.setdefault("width", 44)
     kw.setdefault("default", _default(model, path[-1]))
-    return FieldSpec(path, label, "text", help=_desc(model, path[-1]), **kw)
+    return FieldSpec(path, label, "text", help=field_help(model, path[-1]), **kw)
 
 
 W = ("wall",)
@@ -154,7 +150,7 @@ SITE_TYPE = FieldSpec(
     choices=SPECTRUM_TYPES,
     width=20,
     selects="spectrum",
-    help=_desc(SeismicSpec, "spectrum"),
+    help=field_help(SeismicSpec, "spectrum"),
 )
 SITE_FIELDS: dict[str, tuple[FieldSpec, ...]] = {
     "ntc2018": (
@@ -223,7 +219,7 @@ SITE_FIELDS: dict[str, tuple[FieldSpec, ...]] = {
             unit="s",
             width=26,
             variant=("spectrum", "table"),
-            help=_desc(TableSpectrum, "periods"),
+            help=field_help(TableSpectrum, "periods"),
         ),
         FieldSpec(
             (*SP, "accelerations"),
@@ -232,7 +228,7 @@ SITE_FIELDS: dict[str, tuple[FieldSpec, ...]] = {
             unit="g",
             width=26,
             variant=("spectrum", "table"),
-            help=_desc(TableSpectrum, "accelerations"),
+            help=field_help(TableSpectrum, "accelerations"),
         ),
     ),
 }
@@ -246,7 +242,7 @@ RECORD_SOURCE = FieldSpec(
     width=22,
     virtual=True,
     selects="records",
-    help=_desc(RecordsSpec, "artificial") + " / " + _desc(RecordsSpec, "files"),
+    help=field_help(RecordsSpec, "artificial") + " / " + field_help(RecordsSpec, "files"),
 )
 ARTIFICIAL_DEFAULTS = {"count": 7, "seed": 1, "duration": 25.0, "dt": 0.005}
 ARTIFICIAL_FIELDS = tuple(
@@ -338,14 +334,14 @@ DESIGN_FIELDS = tuple(
             "Materials",
             "list",
             width=22,
-            help=_desc(DesignSpec, "materials"),
+            help=field_help(DesignSpec, "materials"),
         ),
         FieldSpec(
             ("design", "positions"),
             "Positions",
             "list",
             width=22,
-            help=_desc(DesignSpec, "positions"),
+            help=field_help(DesignSpec, "positions"),
         ),
         FieldSpec(
             ("design", "ratio_range"),
@@ -353,7 +349,7 @@ DESIGN_FIELDS = tuple(
             "list",
             unit="‰ low, high",
             width=12,
-            help=_desc(DesignSpec, "ratio_range"),
+            help=field_help(DesignSpec, "ratio_range"),
         ),
         num(("design", "resolution"), "Resolution", "‰ (0.05)", DesignSpec, optional=True),
     )

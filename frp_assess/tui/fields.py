@@ -63,6 +63,11 @@ class OrderedInput(Input):
         await super()._on_key(event)
 
 
+def field_help(model: Any, name: str) -> str:
+    """The schema's description of a field (units, range): the help line of its input."""
+    return str(model.model_fields[name].description or "")
+
+
 @dataclass(frozen=True)
 class FieldSpec:
     """What a field edits and how.

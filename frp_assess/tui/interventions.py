@@ -14,15 +14,11 @@ from textual.binding import Binding, BindingType
 
 from frp_assess.config import FRP_MATERIALS
 from frp_assess.config.schema import Intervention, SweepAxes, option_name
-from frp_assess.tui.fields import FieldSpec
+from frp_assess.tui.fields import FieldSpec, field_help
 from frp_assess.tui.item_editor import ItemEditor
-from frp_assess.tui.model import describe_list, expand_item, format_value, frp_mass_per_m
+from frp_assess.tui.model import expand_item, format_value, frp_mass_per_m
 
 POSITIONS = (("centred", "centred"), ("external", "external"))
-
-
-def _help(model: Any, name: str) -> str:
-    return str(model.model_fields[name].description or "")
 
 
 class InterventionsEditor(ItemEditor):
@@ -51,7 +47,7 @@ class InterventionsEditor(ItemEditor):
                 optional=True,
                 width=30,
                 placeholder="(generated)",
-                help=_help(Intervention, "name"),
+                help=field_help(Intervention, "name"),
             ),
             FieldSpec(
                 ("material",),
@@ -59,7 +55,7 @@ class InterventionsEditor(ItemEditor):
                 "choice",
                 choices=tuple((n, n) for n in FRP_MATERIALS),
                 width=22,
-                help=_help(Intervention, "material"),
+                help=field_help(Intervention, "material"),
             ),
             FieldSpec(
                 ("position",),
@@ -67,10 +63,10 @@ class InterventionsEditor(ItemEditor):
                 "choice",
                 choices=POSITIONS,
                 width=14,
-                help=_help(Intervention, "position"),
+                help=field_help(Intervention, "position"),
             ),
             FieldSpec(
-                ("ratio",), "Ratio ρ", unit="‰, 0 < ρ ≤ 20", help=_help(Intervention, "ratio")
+                ("ratio",), "Ratio ρ", unit="‰, 0 < ρ ≤ 20", help=field_help(Intervention, "ratio")
             ),
         ),
         "sweep": (
@@ -80,7 +76,7 @@ class InterventionsEditor(ItemEditor):
                 "list",
                 width=30,
                 unit="comma-separated",
-                help=_help(SweepAxes, "material"),
+                help=field_help(SweepAxes, "material"),
             ),
             FieldSpec(
                 ("sweep", "position"),
@@ -88,7 +84,7 @@ class InterventionsEditor(ItemEditor):
                 "list",
                 width=30,
                 unit="centred, external",
-                help=_help(SweepAxes, "position"),
+                help=field_help(SweepAxes, "position"),
             ),
             FieldSpec(
                 ("sweep", "ratio"),
@@ -96,7 +92,7 @@ class InterventionsEditor(ItemEditor):
                 "list",
                 width=30,
                 unit="‰, e.g. 1, 2, 3",
-                help=_help(SweepAxes, "ratio"),
+                help=field_help(SweepAxes, "ratio"),
             ),
         ),
     }
@@ -156,9 +152,9 @@ class InterventionsEditor(ItemEditor):
                 index + 1,
                 Text("sweep", style="magenta"),
                 "",
-                _cell(ax.get("material")),
-                _cell(ax.get("position")),
-                _cell(ax.get("ratio")),
+                format_value(ax.get("material")),
+                format_value(ax.get("position")),
+                format_value(ax.get("ratio")),
                 len(combos),
                 mass,
             ]
@@ -181,7 +177,3 @@ class InterventionsEditor(ItemEditor):
             1,
             mass,
         ]
-
-
-def _cell(values: Any) -> str:
-    return describe_list(values) if isinstance(values, list) else format_value(values)

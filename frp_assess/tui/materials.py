@@ -20,15 +20,11 @@ from textual.widgets import Button, Input, Label
 from frp_assess.config import FRP_MATERIALS
 from frp_assess.config.messages import Loc
 from frp_assess.config.schema import MaterialSpec
-from frp_assess.tui.fields import FieldSpec, OrderedInput
+from frp_assess.tui.fields import FieldSpec, OrderedInput, field_help
 from frp_assess.tui.item_editor import ItemEditor
 from frp_assess.tui.model import MISSING, format_value, get_path
 
 MATERIAL_FIELDS = ("elastic_modulus", "ultimate_strain", "density", "price", "source")
-
-
-def _help(name: str) -> str:
-    return str(MaterialSpec.model_fields[name].description or "")
 
 
 class MaterialsEditor(ItemEditor):
@@ -44,14 +40,41 @@ class MaterialsEditor(ItemEditor):
     FORMS: ClassVar[dict[str, Any]] = {
         "material": (
             FieldSpec(
-                ("elastic_modulus",), "E", unit="GPa", width=20, help=_help("elastic_modulus")
+                ("elastic_modulus",),
+                "E",
+                unit="GPa",
+                width=20,
+                help=field_help(MaterialSpec, "elastic_modulus"),
             ),
             FieldSpec(
-                ("ultimate_strain",), "ε_u", unit="-", width=20, help=_help("ultimate_strain")
+                ("ultimate_strain",),
+                "ε_u",
+                unit="-",
+                width=20,
+                help=field_help(MaterialSpec, "ultimate_strain"),
             ),
-            FieldSpec(("density",), "Density", unit="kg/m³", width=20, help=_help("density")),
-            FieldSpec(("price",), "Price", unit="currency/kg", width=20, help=_help("price")),
-            FieldSpec(("source",), "Source", "text", optional=True, width=40, help=_help("source")),
+            FieldSpec(
+                ("density",),
+                "Density",
+                unit="kg/m³",
+                width=20,
+                help=field_help(MaterialSpec, "density"),
+            ),
+            FieldSpec(
+                ("price",),
+                "Price",
+                unit="currency/kg",
+                width=20,
+                help=field_help(MaterialSpec, "price"),
+            ),
+            FieldSpec(
+                ("source",),
+                "Source",
+                "text",
+                optional=True,
+                width=40,
+                help=field_help(MaterialSpec, "source"),
+            ),
         )
     }
 

@@ -8,10 +8,9 @@ the file) and the whole dict is validated by the loader's own models and message
 
 from __future__ import annotations
 
-import copy
 import math
 import re
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -155,15 +154,14 @@ class Problem:
         return f"{self.key}: {self.message}" if self.path else self.message
 
 
-def validation_problems(data: Any) -> list[Problem]:
-    """Every problem of the data, in the order the loader reports them.
+def validate_edit(data: Any) -> tuple[Project | None, list[Problem]]:
+    """The project of valid data, else None and every problem, in the loader's order.
 
-    The first one is exactly what :func:`frp_assess.config.validate_data` raises (a test
+    The first problem is exactly what :func:`frp_assess.config.validate_data` raises (a test
     checks it); the others let the editor mark every faulty field at once.
     """
     try:
-        validate_data(data)
-        return []
+        return validate_data(data), []
     except InputError as exc:
         first = exc
     try:
@@ -175,7 +173,7 @@ def validation_problems(data: Any) -> list[Problem]:
     else:  # pragma: no cover - validate_data raised for a non-mapping
         errors = []
     if not errors:  # not a mapping, or empty
-        return [Problem((), first.message, ())]
+        return None, [Problem((), first.message, ())]
     unknown = [e for e in errors if e["type"] == "extra_forbidden"]
     ordered = unknown + [e for e in errors if e["type"] != "extra_forbidden"]
     out: list[Problem] = []
@@ -184,7 +182,7 @@ def validation_problems(data: Any) -> list[Problem]:
         ctx = dict(err.get("ctx") or {})
         full = locate(Project, tuple(err["loc"]) + tuple(ctx.get("loc", ()))).path
         out.append(Problem(tuple(path), message, tuple(full) if err["type"] == "missing" else path))
-    return out
+    return None, out
 
 
 def record_file_problem(project: Project, base_dir: Path) -> Problem | None:
@@ -195,11 +193,6 @@ def record_file_problem(project: Project, base_dir: Path) -> Problem | None:
         path = parse_key(exc.key or "")
         return Problem(path, exc.message, path)
     return None
-
-
-def project_data(project: Project) -> dict[str, Any]:
-    """The editable data of a valid project (the dict that :func:`dump_project` writes)."""
-    return project.model_dump(mode="json", exclude_none=True)
 
 
 # ------------------------------------------------------------------------ derived values
@@ -312,13 +305,3 @@ def expand_item(item: Any) -> list[tuple[str, str, Any]]:
         rats = ax.get("ratio") if isinstance(ax.get("ratio"), list) else []
         return [(str(m), str(p), r) for m in mats for p in poss for r in rats]
     return [(str(item.get("material")), str(item.get("position")), item.get("ratio"))]
-
-
-def deep_copy(data: Any) -> Any:
-    """A deep copy of editable data."""
-    return copy.deepcopy(data)
-
-
-def describe_list(values: Sequence[Any]) -> str:
-    """A list for a table cell: ``GFRP, CFRP``."""
-    return ", ".join(format_value(v) for v in values)

@@ -9,15 +9,11 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from frp_assess.config.schema import RECORD_FORMATS, RecordFile
-from frp_assess.tui.fields import FieldSpec
+from frp_assess.tui.fields import FieldSpec, field_help
 from frp_assess.tui.item_editor import ItemEditor
 from frp_assess.tui.model import format_value
 
 UNITS = ("g", "m/s2", "cm/s2", "gal", "m/s^2", "cm/s^2")
-
-
-def _help(name: str) -> str:
-    return str(RecordFile.model_fields[name].description or "")
 
 
 class RecordFilesEditor(ItemEditor):
@@ -27,7 +23,7 @@ class RecordFilesEditor(ItemEditor):
     BUTTONS = (("+ add", "add"), ("duplicate", "duplicate"), ("remove", "remove"))
     FORMS: ClassVar[dict[str, Any]] = {
         "file": (
-            FieldSpec(("path",), "Path", "text", width=44, help=_help("path")),
+            FieldSpec(("path",), "Path", "text", width=44, help=field_help(RecordFile, "path")),
             FieldSpec(
                 ("format",),
                 "Format",
@@ -35,7 +31,7 @@ class RecordFilesEditor(ItemEditor):
                 choices=tuple((f, f) for f in RECORD_FORMATS),
                 width=16,
                 default="auto",
-                help=_help("format"),
+                help=field_help(RecordFile, "format"),
             ),
             FieldSpec(
                 ("units",),
@@ -44,9 +40,15 @@ class RecordFilesEditor(ItemEditor):
                 choices=tuple((u, u) for u in UNITS),
                 width=12,
                 default="g",
-                help=_help("units"),
+                help=field_help(RecordFile, "units"),
             ),
-            FieldSpec(("dt",), "dt", unit="s (one-column files)", optional=True, help=_help("dt")),
+            FieldSpec(
+                ("dt",),
+                "dt",
+                unit="s (one-column files)",
+                optional=True,
+                help=field_help(RecordFile, "dt"),
+            ),
             FieldSpec(
                 ("name",),
                 "Name",
@@ -54,7 +56,7 @@ class RecordFilesEditor(ItemEditor):
                 optional=True,
                 width=24,
                 placeholder="(file name)",
-                help=_help("name"),
+                help=field_help(RecordFile, "name"),
             ),
         )
     }

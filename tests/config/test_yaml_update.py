@@ -8,7 +8,7 @@ from typing import Any
 import pytest
 
 from frp_assess.cli.new import template_text
-from frp_assess.config import Project, load_project_text
+from frp_assess.config import Project, load_project_text, project_data
 from frp_assess.config.yaml_update import update_project_text
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -24,7 +24,7 @@ def loaded(text: str) -> Project:
 
 
 def edited(project: Project, change: Any) -> Project:
-    data = project.model_dump(mode="json", exclude_none=True)
+    data = project_data(project)
     change(data)
     return Project.model_validate(data)
 

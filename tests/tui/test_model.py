@@ -11,7 +11,7 @@ from rich.text import Text
 
 from frp_assess.api import prepare_records, run_assessment
 from frp_assess.assess.from_project import inputs_from_project
-from frp_assess.config import load_project_text, validate_data
+from frp_assess.config import load_project_text, project_data, validate_data
 from frp_assess.dynamics import Wall
 from frp_assess.errors import InputError
 from frp_assess.tui.model import (
@@ -22,10 +22,9 @@ from frp_assess.tui.model import (
     parse_key,
     parse_list,
     parse_scalar,
-    project_data,
     record_file_problem,
     spectrum_preview,
-    validation_problems,
+    validate_edit,
     wall_derived,
 )
 from frp_assess.tui.plots import BRAILLE_BASE, Rule, Series, data_range, render_plot, tick
@@ -105,8 +104,8 @@ def test_first_problem_is_the_loaders_error(change):
     data = small_data()
     change(data)
     exc = _loader_error(copy.deepcopy(data))
-    problems = validation_problems(data)
-    assert problems, "the editor must see the problem too"
+    project, problems = validate_edit(data)
+    assert project is None and problems, "the editor must see the problem too"
     assert problems[0].message == exc.message
     assert (problems[0].key or None) == exc.key
 
@@ -114,7 +113,7 @@ def test_first_problem_is_the_loaders_error(change):
 def test_missing_key_points_at_its_field():
     data = small_data()
     data["wall"].pop("thickness")
-    (p,) = validation_problems(data)
+    _, (p,) = validate_edit(data)
     assert p.path == ("wall",)
     assert p.target == ("wall", "thickness")
     assert p.message.startswith("missing required key 'thickness'")
@@ -122,8 +121,8 @@ def test_missing_key_points_at_its_field():
 
 def test_valid_data_has_no_problem_and_round_trips():
     data = small_data()
-    assert validation_problems(data) == []
-    project = validate_data(data)
+    project, problems = validate_edit(data)
+    assert problems == [] and project == validate_data(data)
     assert validate_data(project_data(project)) == project
 
 
