@@ -84,6 +84,7 @@ from frp_assess.tui.session import (
     export_outputs,
     load_previous,
     save_project,
+    yaml_path_problem,
 )
 
 #: the tabs, in order (F2 … F10, or alt+1 … alt+9 where the terminal sends them)
@@ -755,15 +756,6 @@ class FrpAssessApp(App[None]):
             self.push_screen(HelpScreen())
 
     # ------------------------------------------------------------------------- save
-    def _check_yaml_path(self, path: Path) -> str | None:
-        if path.suffix.lower() not in (".yaml", ".yml"):
-            return f"expected a .yaml file name, found {path.name!r}"
-        if path.is_dir():
-            return f"{path} is a directory"
-        if not path.parent.exists():
-            return f"no such directory: {path.parent}"
-        return None
-
     def action_save(self) -> None:
         if self.path is None:
             self.action_save_as()
@@ -787,7 +779,7 @@ class FrpAssessApp(App[None]):
                 "Save the project as",
                 default,
                 "a .yaml file; relative record paths are read from its folder",
-                self._check_yaml_path,
+                yaml_path_problem,
             ),
             done,
         )

@@ -18,8 +18,10 @@ from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.widgets import Static
 
+from frp_assess.assess.code_check import CONFIDENCE_FACTORS
 from frp_assess.config import MASONRY
 from frp_assess.config.schema import (
+    MIN_ARTIFICIAL_DURATION,
     AnalysisSpec,
     ArtificialRecords,
     CodeCheckSpec,
@@ -36,22 +38,25 @@ from frp_assess.config.schema import (
     WallSpec,
 )
 from frp_assess.tui.fields import FieldRow, FieldSpec, field_help
-from frp_assess.tui.model import MISSING, WallDerived
+from frp_assess.tui.model import MISSING, WallDerived, format_value
 from frp_assess.tui.plots import PlotView
 from frp_assess.tui.record_files import RecordFilesEditor
 
 
 def _default(model: type[BaseModel], name: str) -> Any:
     """The schema's default of a field (shown when the file leaves the key out)."""
-    value = model.model_fields[name].get_default(call_default_factory=False)
+    value = model.model_fields[name].get_default(call_default_factory=True)
     return MISSING if value is PydanticUndefined or value is None else value
 
 
 def num(
     path: tuple[str, ...], label: str, unit: str, model: type[BaseModel], **kw: Any
 ) -> FieldSpec:
-    """A number (or YAML scalar) field with the schema's description as help."""
+    """A number (or YAML scalar) field with the schema's description as help; an optional
+    one shows the schema's default after its unit, e.g. ``s (25)``."""
     kw.setdefault("default", _default(model, path[-1]))
+    if kw.get("optional") and kw["default"] is not MISSING:
+        unit = f"{unit} ({format_value(kw['default'])})".strip()
     return FieldSpec(path, label, "scalar", unit=unit, help=field_help(model, path[-1]), **kw)
 
 
@@ -94,7 +99,7 @@ PROJECT_FIELDS = (
 WALL_FIELDS = (
     num((*W, "thickness"), "Thickness B", "m, 0 < B < H", WallSpec),
     num((*W, "height"), "Height H", "m", WallSpec),
-    num((*W, "length"), "Length L", "m (default 1)", WallSpec, optional=True),
+    num((*W, "length"), "Length L", "m", WallSpec, optional=True),
     choice(
         (*W, "masonry"),
         "Masonry",
@@ -167,12 +172,11 @@ SITE_FIELDS: dict[str, tuple[FieldSpec, ...]] = {
             Ntc2018Spectrum,
             variant=("spectrum", "ntc2018"),
             width=8,
-            default="T1",
         ),
         num(
             (*SP, "damping"),
             "Damping ξ",
-            "- (0.05)",
+            "-",
             Ntc2018Spectrum,
             variant=("spectrum", "ntc2018"),
             optional=True,
@@ -190,12 +194,11 @@ SITE_FIELDS: dict[str, tuple[FieldSpec, ...]] = {
             Ec8Spectrum,
             variant=("spectrum", "ec8"),
             width=8,
-            default=1,
         ),
         num(
             (*SP, "damping"),
             "Damping ξ",
-            "- (0.05)",
+            "-",
             Ec8Spectrum,
             variant=("spectrum", "ec8"),
             optional=True,
@@ -232,7 +235,7 @@ SITE_FIELDS: dict[str, tuple[FieldSpec, ...]] = {
         ),
     ),
 }
-T1_FIELD = num(("seismic", "t1"), "T1 (checks)", "s (1.0)", SeismicSpec, optional=True)
+T1_FIELD = num(("seismic", "t1"), "T1 (checks)", "s", SeismicSpec, optional=True)
 
 RECORD_SOURCE = FieldSpec(
     (*REC, "source"),
@@ -244,14 +247,21 @@ RECORD_SOURCE = FieldSpec(
     selects="records",
     help=field_help(RecordsSpec, "artificial") + " / " + field_help(RecordsSpec, "files"),
 )
-ARTIFICIAL_DEFAULTS = {"count": 7, "seed": 1, "duration": 25.0, "dt": 0.005}
+#: what artificial records start with when chosen: the schema's defaults
+ARTIFICIAL_DEFAULTS = ArtificialRecords().model_dump(mode="json")
 ARTIFICIAL_FIELDS = tuple(
     replace(f, variant=("records", "artificial"))
     for f in (
-        num((*ART, "count"), "Count", "records, 1-100 (7)", ArtificialRecords, optional=True),
+        num((*ART, "count"), "Count", "records, 1-100", ArtificialRecords, optional=True),
         num((*ART, "seed"), "Seed", "same seed, same set", ArtificialRecords, optional=True),
-        num((*ART, "duration"), "Duration", "s, ≥ 13.5 (25)", ArtificialRecords, optional=True),
-        num((*ART, "dt"), "Time step dt", "s, ≤ 0.05 (0.005)", ArtificialRecords, optional=True),
+        num(
+            (*ART, "duration"),
+            "Duration",
+            f"s, ≥ {MIN_ARTIFICIAL_DURATION:g}",
+            ArtificialRecords,
+            optional=True,
+        ),
+        num((*ART, "dt"), "Time step dt", "s, ≤ 0.05", ArtificialRecords, optional=True),
     )
 )
 SCALE_FIELD = choice(
@@ -260,7 +270,6 @@ SCALE_FIELD = choice(
     (("yes: to a_g·S", True), ("no", False)),
     RecordsSpec,
     width=18,
-    default=True,
 )
 
 IDA = (*AN, "ida")
@@ -272,7 +281,6 @@ ANALYSIS_FIELDS = (
         ("energy-transfer", "velocity-continuous"),
         AnalysisSpec,
         width=22,
-        default="energy-transfer",
     ),
     choice(
         (*AN, "collapse"),
@@ -280,25 +288,23 @@ ANALYSIS_FIELDS = (
         ("end-of-record", "first-exceedance"),
         AnalysisSpec,
         width=22,
-        default="end-of-record",
     ),
-    num((*AN, "strain_factor"), "Strain factor c", "- (0.5)", AnalysisSpec, optional=True),
-    num((*AN, "free_vibration_tail"), "Free tail", "s (0)", AnalysisSpec, optional=True),
-    num((*IDA, "step_ratio"), "IDA step ratio", "> 1 (1.10)", IdaSpec, optional=True),
-    num((*IDA, "tolerance"), "IDA tolerance", "0-0.1 (0.005)", IdaSpec, optional=True),
-    num((*IDA, "max_multiplier"), "IDA max C/C0", "(100)", IdaSpec, optional=True),
-    num((*AN, "target"), "Target C/D", "(1)", AnalysisSpec, optional=True),
+    num((*AN, "strain_factor"), "Strain factor c", "-", AnalysisSpec, optional=True),
+    num((*AN, "free_vibration_tail"), "Free tail", "s", AnalysisSpec, optional=True),
+    num((*IDA, "step_ratio"), "IDA step ratio", "> 1", IdaSpec, optional=True),
+    num((*IDA, "tolerance"), "IDA tolerance", "0-0.1", IdaSpec, optional=True),
+    num((*IDA, "max_multiplier"), "IDA max C/C0", "", IdaSpec, optional=True),
+    num((*AN, "target"), "Target C/D", "", AnalysisSpec, optional=True),
 )
 CODE_FIELDS = (
     choice(
         ("code_check", "knowledge_level"),
         "Knowledge level",
-        (("LC1 (FC 1.35)", "LC1"), ("LC2 (FC 1.20)", "LC2"), ("LC3 (FC 1.00)", "LC3")),
+        tuple((f"{lc} (FC {fc:.2f})", lc) for lc, fc in CONFIDENCE_FACTORS.items()),
         CodeCheckSpec,
         width=16,
-        default="LC1",
     ),
-    num(("code_check", "behaviour_factor"), "Behaviour q", "1-4 (2)", CodeCheckSpec, optional=True),
+    num(("code_check", "behaviour_factor"), "Behaviour q", "1-4", CodeCheckSpec, optional=True),
 )
 COST_FIELDS = (
     text(("costs", "currency"), "Currency", CostsSpec, width=8),
@@ -320,12 +326,8 @@ DESIGN_MODE = FieldSpec(
     selects="design",
     help="Design mode: the smallest ratio meeting the target per material and position.",
 )
-DESIGN_DEFAULTS = {
-    "materials": ["GFRP"],
-    "positions": ["centred", "external"],
-    "ratio_range": [0.5, 5.0],
-    "resolution": 0.05,
-}
+#: what design mode starts with when switched on: GFRP, and the schema's defaults
+DESIGN_DEFAULTS = DesignSpec(materials=["GFRP"]).model_dump(mode="json")
 DESIGN_FIELDS = tuple(
     replace(f, variant=("design", "on"))
     for f in (
@@ -351,7 +353,7 @@ DESIGN_FIELDS = tuple(
             width=12,
             help=field_help(DesignSpec, "ratio_range"),
         ),
-        num(("design", "resolution"), "Resolution", "‰ (0.05)", DesignSpec, optional=True),
+        num(("design", "resolution"), "Resolution", "‰", DesignSpec, optional=True),
     )
 )
 

@@ -163,6 +163,17 @@ def export_outputs(outcome: RunOutcome, directory: Path) -> list[Path]:
     return [directory / n for n in names if (directory / n).exists()]
 
 
+def yaml_path_problem(path: Path) -> str | None:
+    """Why a project cannot be saved as ``path`` (None: it can)."""
+    if path.suffix.lower() not in (".yaml", ".yml"):
+        return f"expected a .yaml file name, found {path.name!r}"
+    if path.is_dir():
+        return f"{path} is a directory"
+    if not path.parent.is_dir():
+        return f"no such directory: {path.parent}"
+    return None
+
+
 def save_project(project: Project, path: Path, *, opened_from: Path | None = None) -> bool:
     """Write the project as YAML (atomically); loading it gives an equal :class:`Project`.
 
@@ -171,10 +182,9 @@ def save_project(project: Project, path: Path, *, opened_from: Path | None = Non
     fails) the whole project is dumped.  Returns whether the comments were kept.
     """
     path = Path(path)
-    if path.is_dir():
-        raise InputError(f"{path} is a directory")
-    if path.suffix.lower() not in (".yaml", ".yml"):
-        raise InputError(f"expected a .yaml file name, found {path.name!r}")
+    problem = yaml_path_problem(path)
+    if problem is not None:
+        raise InputError(problem)
     text = _updated_text(opened_from, project, str(path))
     kept = text is not None
     if text is None:

@@ -233,3 +233,25 @@ def test_load_previous_rebuilds_the_last_run_only_when_it_matches(tmp_path):
         SMALL.replace("seed: 7", "seed: 8"), "small.yaml"
     ).project  # other records: no cached IDA
     assert load_previous(changed, tmp_path, "small.yaml", tmp_path, cancel=stop) is None
+
+
+def test_save_project_refuses_bad_paths_and_says_whether_comments_were_kept(tmp_path):
+    """A bad file name is refused with the same message the save dialog shows; a new file
+    gets the whole project, an opened one keeps its text (here, its comment)."""
+    from frp_assess.config import load_project
+    from frp_assess.tui.session import save_project, yaml_path_problem
+
+    project = load_project_text(SMALL, "small.yaml").project
+    for bad in (tmp_path / "wall.txt", tmp_path / "no-such-dir" / "wall.yaml", tmp_path):
+        with pytest.raises(InputError) as info:
+            save_project(project, bad)
+        assert info.value.message == yaml_path_problem(bad)
+    fresh = tmp_path / "fresh.yaml"
+    assert save_project(project, fresh) is False
+    assert load_project(fresh).project == project
+    opened = tmp_path / "opened.yaml"
+    opened.write_text("# site survey of May\n" + SMALL, encoding="utf-8")
+    changed = validate_data({**project_data(project), "costs": {"currency": "CHF"}})
+    assert save_project(changed, opened, opened_from=opened) is True
+    assert opened.read_text(encoding="utf-8").startswith("# site survey of May\n")
+    assert load_project(opened).project == changed
