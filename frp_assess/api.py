@@ -92,7 +92,7 @@ def run_assessment(
     a_rm = inputs.wall.a_rm_g
     runner = IdaRunner(records, inputs, IdaCache(out_dir / CACHE_DIR), jobs=jobs, cancel=cancel)
 
-    models = [inputs.model_for(None)] + [inputs.model_for(o) for o in inputs.options]
+    models = inputs.case_models()
     all_results = runner.run(
         models, progress=lambda d, n: report("ida", d, n), on_pair=case_progress
     )
@@ -207,10 +207,9 @@ def missing_idas(inputs: AssessmentInputs, seismic: SeismicInput, out_dir: Path)
     stage of a run computes nothing; design mode may still search new ratios)."""
     directory = Path(out_dir) / CACHE_DIR
     hashes = [record_digest(r.acc, r.dt) for r in seismic.records]
-    models = [inputs.model_for(None), *(inputs.model_for(o) for o in inputs.options)]
     return sum(
         not cache_file(directory, task_key(m, h, inputs.ida)).is_file()
-        for m in models
+        for m in inputs.case_models()
         for h in hashes
     )
 

@@ -19,6 +19,9 @@ from frp_assess.dynamics import (
 )
 from frp_assess.motions import ElasticSpectrum
 
+#: the name of case 0, the wall without bars
+UNREINFORCED = "Unreinforced"
+
 
 @dataclass(frozen=True)
 class Material:
@@ -126,3 +129,11 @@ class AssessmentInputs:
             None if option is None else self.rebars(option.material, option.position, option.ratio)
         )
         return RockingModel(self.wall, self.mechanism, bars, self.model)
+
+    def case_models(self) -> list[RockingModel]:
+        """The models of every case of a run: the unreinforced wall, then each option."""
+        return [self.model_for(None), *(self.model_for(o) for o in self.options)]
+
+    def case_names(self) -> list[str]:
+        """The names of the cases, in the order of :meth:`case_models`."""
+        return [UNREINFORCED, *(o.name for o in self.options)]

@@ -12,7 +12,7 @@ import numpy as np
 
 from frp_assess import __version__
 from frp_assess.assess.code_check import KinematicCheck
-from frp_assess.assess.inputs import AssessmentInputs, Material, Option
+from frp_assess.assess.inputs import UNREINFORCED, AssessmentInputs, Material, Option
 from frp_assess.assess.quantities import quantity_for
 from frp_assess.assess.ranking import RANKING_RULE, Rankable, rank_options
 from frp_assess.assess.runner import CaseSummary, DesignResult, design_value_rule
@@ -85,7 +85,7 @@ def case_dict(
         q_mass, q_mass_m, cost = q.mass, q.mass_per_m, q.cost
     cd = summary.design_a_dyn / demand
     return {
-        "name": option.name if option else "Unreinforced",
+        "name": option.name if option else UNREINFORCED,
         "material": option.material.name if option else None,
         "position": option.position if option else None,
         "ratio": option.ratio if option else 0.0,

@@ -36,6 +36,7 @@ from textual.widgets import (
 )
 
 from frp_assess.api import default_out_dir
+from frp_assess.assess.inputs import UNREINFORCED
 from frp_assess.assess.results import recommendation_text
 from frp_assess.assess.runner import design_value_rule
 from frp_assess.config import Project, load_project_text, project_data
@@ -832,11 +833,10 @@ class FrpAssessApp(App[None]):
             return
         project = self.project
         out_dir = default_out_dir(self.path)
-        n = len(project.expand_interventions())
-        names = ["Unreinforced", *(str(o.name) for o in project.expand_interventions())]
+        names = [UNREINFORCED, *(str(o.name) for o in project.expand_interventions())]
         if self.modified():
             panel.log_line("note: running the project as edited (not saved yet)", "yellow")
-        panel.start(names[: n + 1], self._record_count(project), str(out_dir))
+        panel.start(names, self._record_count(project), str(out_dir))
         self.cancel_event = threading.Event()
         self.running = True
         self._update_status()

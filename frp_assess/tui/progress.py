@@ -31,7 +31,7 @@ class CaseProgress:
     """
 
     def __init__(self, inputs: AssessmentInputs, n_records: int):
-        self.names = ["Unreinforced", *(o.name for o in inputs.options)]
+        self.names = inputs.case_names()
         self.per_case = n_records
         self._done = [0] * len(self.names)
         self._lock = threading.Lock()
