@@ -10,7 +10,7 @@ exactly one record source) raise :class:`~pydantic_core.PydanticCustomError` who
 from __future__ import annotations
 
 import datetime as _dt
-from typing import Annotated, Any, Literal
+from typing import Annotated, Any, Literal, get_args
 
 from pydantic import (
     BaseModel,
@@ -35,7 +35,8 @@ GroundType = Literal["A", "B", "C", "D", "E"]
 #: confidence factor FC of Circolare 2019 §C8.5.4 by knowledge level
 CONFIDENCE_FACTORS: dict[str, float] = {"LC1": 1.35, "LC2": 1.20, "LC3": 1.00}
 #: accepted ``format`` of a record file (as frp_assess.motions.readers.FORMATS)
-RECORD_FORMATS = ("auto", "at2", "esm", "two-column", "one-column")
+RecordFormat = Literal["auto", "at2", "esm", "two-column", "one-column"]
+RECORD_FORMATS: tuple[str, ...] = get_args(RecordFormat)
 #: accepted ``units`` of a record file (as frp_assess.motions.readers.UNITS)
 RecordUnits = Literal["g", "m/s2", "m/s^2", "cm/s2", "cm/s^2", "gal"]
 #: the largest reinforcement ratio accepted [‰]
@@ -232,7 +233,7 @@ class RecordFile(_Model):
     """A recorded accelerogram file."""
 
     path: str = Field(description="File path, relative to the project file.")
-    format: Literal["auto", "at2", "esm", "two-column", "one-column"] = Field(
+    format: RecordFormat = Field(
         "auto", description="auto | at2 (PEER NGA) | esm (ESM/ITACA) | two-column | one-column."
     )
     units: RecordUnits = Field("g", description="Units of the samples: g | m/s2 | cm/s2 | gal.")

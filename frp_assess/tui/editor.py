@@ -10,8 +10,6 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import Any
 
-from pydantic import BaseModel
-from pydantic_core import PydanticUndefined
 from rich.table import Table
 from rich.text import Text
 from textual.app import ComposeResult
@@ -37,58 +35,19 @@ from frp_assess.config.schema import (
     TableSpectrum,
     WallSpec,
 )
-from frp_assess.tui.fields import FieldRow, FieldSpec, field_help
-from frp_assess.tui.model import MISSING, WallDerived, format_value
+from frp_assess.tui.fields import FieldRow, FieldSpec, choice, field_help, items, num, text
+from frp_assess.tui.model import WallDerived
 from frp_assess.tui.plots import PlotView
 from frp_assess.tui.record_files import RecordFilesEditor
 
-
-def _default(model: type[BaseModel], name: str) -> Any:
-    """The schema's default of a field (shown when the file leaves the key out)."""
-    value = model.model_fields[name].get_default(call_default_factory=True)
-    return MISSING if value is PydanticUndefined or value is None else value
-
-
-def num(
-    path: tuple[str, ...], label: str, unit: str, model: type[BaseModel], **kw: Any
-) -> FieldSpec:
-    """A number (or YAML scalar) field with the schema's description as help; an optional
-    one shows the schema's default after its unit, e.g. ``s (25)``."""
-    kw.setdefault("default", _default(model, path[-1]))
-    if kw.get("optional") and kw["default"] is not MISSING:
-        unit = f"{unit} ({format_value(kw['default'])})".strip()
-    return FieldSpec(path, label, "scalar", unit=unit, help=field_help(model, path[-1]), **kw)
-
-
-def choice(
-    path: tuple[str, ...],
-    label: str,
-    values: tuple[Any, ...] | tuple[tuple[str, Any], ...],
-    model: type[BaseModel] | None,
-    **kw: Any,
-) -> FieldSpec:
-    """A choice among ``values`` (plain values, or (label, value) pairs)."""
-    pairs = tuple(v if isinstance(v, tuple) else (str(v), v) for v in values)
-    help_text = kw.pop("help", None) or (field_help(model, path[-1]) if model else "")
-    if model is not None:
-        kw.setdefault("default", _default(model, path[-1]))
-    return FieldSpec(path, label, "choice", choices=pairs, help=help_text, **kw)
-
-
-def text(path: tuple[str, ...], label: str, model: type[BaseModel], **kw: Any) -> FieldSpec:
-    kw.setdefault("width", 44)
-    kw.setdefault("default", _default(model, path[-1]))
-    return FieldSpec(path, label, "text", help=field_help(model, path[-1]), **kw)
-
-
 W = ("wall",)
 SP = ("seismic", "spectrum")
+TABLE = ("spectrum", "table")
 REC = ("seismic", "records")
 ART = ("seismic", "records", "artificial")
 AN = ("analysis",)
 
 MASONRY_CHOICES = tuple((f"{k} ({m.unit_weight:g})", k) for k, m in MASONRY.items())
-GROUND = ("A", "B", "C", "D", "E")
 
 PROJECT_FIELDS = (
     text(("project", "name"), "Name", ProjectInfo),
@@ -118,7 +77,7 @@ WALL_FIELDS = (
         optional=True,
         placeholder="(masonry)",
     ),
-    choice((*W, "mechanism"), "Mechanism", ("one-sided", "two-sided"), WallSpec, width=14),
+    choice((*W, "mechanism"), "Mechanism", None, WallSpec, width=14),
 )
 
 SPECTRUM_TYPES = (
@@ -163,12 +122,12 @@ SITE_FIELDS: dict[str, tuple[FieldSpec, ...]] = {
         num((*SP, "F0"), "F0", "-", Ntc2018Spectrum, variant=("spectrum", "ntc2018")),
         num((*SP, "Tc_star"), "T_C*", "s", Ntc2018Spectrum, variant=("spectrum", "ntc2018")),
         choice(
-            (*SP, "soil"), "Soil", GROUND, Ntc2018Spectrum, variant=("spectrum", "ntc2018"), width=8
+            (*SP, "soil"), "Soil", None, Ntc2018Spectrum, variant=("spectrum", "ntc2018"), width=8
         ),
         choice(
             (*SP, "topography"),
             "Topography",
-            ("T1", "T2", "T3", "T4"),
+            None,
             Ntc2018Spectrum,
             variant=("spectrum", "ntc2018"),
             width=8,
@@ -184,13 +143,11 @@ SITE_FIELDS: dict[str, tuple[FieldSpec, ...]] = {
     ),
     "ec8": (
         num((*SP, "ag"), "a_g", "g, ground A", Ec8Spectrum, variant=("spectrum", "ec8")),
-        choice(
-            (*SP, "ground"), "Ground", GROUND, Ec8Spectrum, variant=("spectrum", "ec8"), width=8
-        ),
+        choice((*SP, "ground"), "Ground", None, Ec8Spectrum, variant=("spectrum", "ec8"), width=8),
         choice(
             (*SP, "spectrum_type"),
             "Spectrum type",
-            (1, 2),
+            None,
             Ec8Spectrum,
             variant=("spectrum", "ec8"),
             width=8,
@@ -208,31 +165,15 @@ SITE_FIELDS: dict[str, tuple[FieldSpec, ...]] = {
         choice(
             (*SP, "name"),
             "Preset",
-            ("A1", "A2", "A3"),
+            None,
             PresetSpectrum,
             variant=("spectrum", "preset"),
             width=8,
         ),
     ),
     "table": (
-        FieldSpec(
-            (*SP, "periods"),
-            "Periods T",
-            "list",
-            unit="s",
-            width=26,
-            variant=("spectrum", "table"),
-            help=field_help(TableSpectrum, "periods"),
-        ),
-        FieldSpec(
-            (*SP, "accelerations"),
-            "Se(T)",
-            "list",
-            unit="g",
-            width=26,
-            variant=("spectrum", "table"),
-            help=field_help(TableSpectrum, "accelerations"),
-        ),
+        items((*SP, "periods"), "Periods T", TableSpectrum, unit="s", width=26, variant=TABLE),
+        items((*SP, "accelerations"), "Se(T)", TableSpectrum, unit="g", width=26, variant=TABLE),
     ),
 }
 T1_FIELD = num(("seismic", "t1"), "T1 (checks)", "s", SeismicSpec, optional=True)
@@ -278,14 +219,14 @@ ANALYSIS_FIELDS = (
     choice(
         (*AN, "rupture"),
         "Bar rupture",
-        ("energy-transfer", "velocity-continuous"),
+        None,
         AnalysisSpec,
         width=22,
     ),
     choice(
         (*AN, "collapse"),
         "Collapse",
-        ("end-of-record", "first-exceedance"),
+        None,
         AnalysisSpec,
         width=22,
     ),
@@ -331,28 +272,9 @@ DESIGN_DEFAULTS = DesignSpec(materials=["GFRP"]).model_dump(mode="json")
 DESIGN_FIELDS = tuple(
     replace(f, variant=("design", "on"))
     for f in (
-        FieldSpec(
-            ("design", "materials"),
-            "Materials",
-            "list",
-            width=22,
-            help=field_help(DesignSpec, "materials"),
-        ),
-        FieldSpec(
-            ("design", "positions"),
-            "Positions",
-            "list",
-            width=22,
-            help=field_help(DesignSpec, "positions"),
-        ),
-        FieldSpec(
-            ("design", "ratio_range"),
-            "Ratio range",
-            "list",
-            unit="‰ low, high",
-            width=12,
-            help=field_help(DesignSpec, "ratio_range"),
-        ),
+        items(("design", "materials"), "Materials", DesignSpec, width=22),
+        items(("design", "positions"), "Positions", DesignSpec, width=22),
+        items(("design", "ratio_range"), "Ratio range", DesignSpec, unit="‰ low, high", width=12),
         num(("design", "resolution"), "Resolution", "‰", DesignSpec, optional=True),
     )
 )

@@ -9,8 +9,10 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
-from typing import Any, ClassVar, Literal
+from typing import Any, ClassVar, Literal, get_args, get_origin
 
+from pydantic import BaseModel
+from pydantic_core import PydanticUndefined
 from textual import events
 from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical
@@ -63,11 +65,6 @@ class OrderedInput(Input):
         await super()._on_key(event)
 
 
-def field_help(model: Any, name: str) -> str:
-    """The schema's description of a field (units, range): the help line of its input."""
-    return str(model.model_fields[name].description or "")
-
-
 @dataclass(frozen=True)
 class FieldSpec:
     """What a field edits and how.
@@ -109,6 +106,70 @@ class FieldSpec:
         """A DOM id derived from the path: ``f-wall-thickness``."""
         tail = f"-{self.variant[1]}" if self.variant else ""
         return ("f-" + "-".join(str(p) for p in self.path) + tail).replace("_", "-")
+
+
+# ---------------------------------------------------------------- fields from the schema
+# Each field takes its help line, its default and (for a choice) its values from the pydantic
+# model of the block it edits, by the last key of its path: the schema stays the one source.
+
+
+def field_help(model: type[BaseModel], name: str) -> str:
+    """The schema's description of a field (units, range): the help line of its input."""
+    return str(model.model_fields[name].description or "")
+
+
+def schema_default(model: type[BaseModel], name: str) -> Any:
+    """The schema's default of a field (shown when the file leaves the key out)."""
+    value = model.model_fields[name].get_default(call_default_factory=True)
+    return MISSING if value is PydanticUndefined or value is None else value
+
+
+def literal_values(model: type[BaseModel], name: str) -> tuple[Any, ...]:
+    """The values a ``Literal[...]`` field accepts (``Optional`` allowed)."""
+    annotation = model.model_fields[name].annotation
+    for candidate in (annotation, *get_args(annotation)):
+        if get_origin(candidate) is Literal:
+            return get_args(candidate)
+    raise TypeError(f"{model.__name__}.{name} is not a Literal field")
+
+
+def num(path: Loc, label: str, unit: str, model: type[BaseModel], **kw: Any) -> FieldSpec:
+    """A number (or YAML scalar) field; an optional one shows the schema's default after its
+    unit, e.g. ``s (25)``."""
+    kw.setdefault("default", schema_default(model, str(path[-1])))
+    if kw.get("optional") and kw["default"] is not MISSING:
+        unit = f"{unit} ({format_value(kw['default'])})".strip()
+    return FieldSpec(path, label, "scalar", unit=unit, help=field_help(model, str(path[-1])), **kw)
+
+
+def choice(
+    path: Loc,
+    label: str,
+    values: Sequence[Any] | None,
+    model: type[BaseModel],
+    **kw: Any,
+) -> FieldSpec:
+    """A choice among ``values`` (plain values, or (label, value) pairs); None: the values of
+    the schema's ``Literal``."""
+    name = str(path[-1])
+    if values is None:
+        values = literal_values(model, name)
+    pairs = tuple(v if isinstance(v, tuple) else (str(v), v) for v in values)
+    kw.setdefault("help", field_help(model, name))
+    kw.setdefault("default", schema_default(model, name))
+    return FieldSpec(path, label, "choice", choices=pairs, **kw)
+
+
+def text(path: Loc, label: str, model: type[BaseModel], **kw: Any) -> FieldSpec:
+    """A free-text field (kept as typed)."""
+    kw.setdefault("width", 44)
+    kw.setdefault("default", schema_default(model, str(path[-1])))
+    return FieldSpec(path, label, "text", help=field_help(model, str(path[-1])), **kw)
+
+
+def items(path: Loc, label: str, model: type[BaseModel], **kw: Any) -> FieldSpec:
+    """A list typed as comma-separated values (``GFRP, CFRP`` or ``1, 2, 3``)."""
+    return FieldSpec(path, label, "list", help=field_help(model, str(path[-1])), **kw)
 
 
 class FieldRow(Vertical):

@@ -14,11 +14,9 @@ from textual.binding import Binding, BindingType
 
 from frp_assess.config import FRP_MATERIALS
 from frp_assess.config.schema import Intervention, SweepAxes, option_name
-from frp_assess.tui.fields import FieldSpec, field_help
+from frp_assess.tui.fields import choice, items, num, text
 from frp_assess.tui.item_editor import ItemEditor
 from frp_assess.tui.model import expand_item, format_value, frp_mass_per_m
-
-POSITIONS = (("centred", "centred"), ("external", "external"))
 
 
 class InterventionsEditor(ItemEditor):
@@ -40,60 +38,19 @@ class InterventionsEditor(ItemEditor):
     ROOT = ("interventions",)
     FORMS: ClassVar[dict[str, Any]] = {
         "option": (
-            FieldSpec(
-                ("name",),
-                "Name",
-                "text",
-                optional=True,
-                width=30,
-                placeholder="(generated)",
-                help=field_help(Intervention, "name"),
+            text(
+                ("name",), "Name", Intervention, optional=True, width=30, placeholder="(generated)"
             ),
-            FieldSpec(
-                ("material",),
-                "Material",
-                "choice",
-                choices=tuple((n, n) for n in FRP_MATERIALS),
-                width=22,
-                help=field_help(Intervention, "material"),
-            ),
-            FieldSpec(
-                ("position",),
-                "Position",
-                "choice",
-                choices=POSITIONS,
-                width=14,
-                help=field_help(Intervention, "position"),
-            ),
-            FieldSpec(
-                ("ratio",), "Ratio ρ", unit="‰, 0 < ρ ≤ 20", help=field_help(Intervention, "ratio")
-            ),
+            choice(("material",), "Material", tuple(FRP_MATERIALS), Intervention, width=22),
+            choice(("position",), "Position", None, Intervention, width=14),
+            num(("ratio",), "Ratio ρ", "‰, 0 < ρ ≤ 20", Intervention),
         ),
         "sweep": (
-            FieldSpec(
-                ("sweep", "material"),
-                "Materials",
-                "list",
-                width=30,
-                unit="comma-separated",
-                help=field_help(SweepAxes, "material"),
+            items(("sweep", "material"), "Materials", SweepAxes, width=30, unit="comma-separated"),
+            items(
+                ("sweep", "position"), "Positions", SweepAxes, width=30, unit="centred, external"
             ),
-            FieldSpec(
-                ("sweep", "position"),
-                "Positions",
-                "list",
-                width=30,
-                unit="centred, external",
-                help=field_help(SweepAxes, "position"),
-            ),
-            FieldSpec(
-                ("sweep", "ratio"),
-                "Ratios ρ",
-                "list",
-                width=30,
-                unit="‰, e.g. 1, 2, 3",
-                help=field_help(SweepAxes, "ratio"),
-            ),
+            items(("sweep", "ratio"), "Ratios ρ", SweepAxes, width=30, unit="‰, e.g. 1, 2, 3"),
         ),
     }
 

@@ -20,11 +20,11 @@ from textual.widgets import Button, Input, Label
 from frp_assess.config import FRP_MATERIALS
 from frp_assess.config.messages import Loc
 from frp_assess.config.schema import MaterialSpec
-from frp_assess.tui.fields import FieldSpec, OrderedInput, field_help
+from frp_assess.tui.fields import OrderedInput, num, text
 from frp_assess.tui.item_editor import ItemEditor
 from frp_assess.tui.model import MISSING, format_value, get_path
 
-MATERIAL_FIELDS = ("elastic_modulus", "ultimate_strain", "density", "price", "source")
+MATERIAL_FIELDS = tuple(MaterialSpec.model_fields)
 
 
 class MaterialsEditor(ItemEditor):
@@ -39,42 +39,11 @@ class MaterialsEditor(ItemEditor):
     ROOT = ("materials",)
     FORMS: ClassVar[dict[str, Any]] = {
         "material": (
-            FieldSpec(
-                ("elastic_modulus",),
-                "E",
-                unit="GPa",
-                width=20,
-                help=field_help(MaterialSpec, "elastic_modulus"),
-            ),
-            FieldSpec(
-                ("ultimate_strain",),
-                "ε_u",
-                unit="-",
-                width=20,
-                help=field_help(MaterialSpec, "ultimate_strain"),
-            ),
-            FieldSpec(
-                ("density",),
-                "Density",
-                unit="kg/m³",
-                width=20,
-                help=field_help(MaterialSpec, "density"),
-            ),
-            FieldSpec(
-                ("price",),
-                "Price",
-                unit="currency/kg",
-                width=20,
-                help=field_help(MaterialSpec, "price"),
-            ),
-            FieldSpec(
-                ("source",),
-                "Source",
-                "text",
-                optional=True,
-                width=40,
-                help=field_help(MaterialSpec, "source"),
-            ),
+            num(("elastic_modulus",), "E", "GPa", MaterialSpec, width=20),
+            num(("ultimate_strain",), "ε_u", "-", MaterialSpec, width=20),
+            num(("density",), "Density", "kg/m³", MaterialSpec, width=20),
+            num(("price",), "Price", "currency/kg", MaterialSpec, width=20),
+            text(("source",), "Source", MaterialSpec, optional=True, width=40),
         )
     }
 
