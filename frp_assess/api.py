@@ -18,6 +18,7 @@ from frp_assess.assess.cache import IdaCache, cache_file, record_digest, task_ke
 from frp_assess.assess.code_check import simple_overturning_check
 from frp_assess.assess.inputs import AssessmentInputs, Material
 from frp_assess.assess.results import (
+    below_collapse,
     build_results,
     case_dict,
     history_dict,
@@ -162,7 +163,7 @@ def governing_histories(
     c, k = min(failing)
     model = inputs.model_for(None if idx == 0 else inputs.options[idx - 1])
     rec = records[k]
-    below = c * (1.0 - inputs.ida.tolerance)
+    below = below_collapse(c, res[k].survivor_multiplier, inputs.ida.tolerance)
     runs = [
         history_dict("collapse", c, model.run(rec.acc, rec.dt, c, history=True), model.wall.alpha),
         history_dict(

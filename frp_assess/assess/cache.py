@@ -18,7 +18,7 @@ from frp_assess.dynamics import IdaResult, IdaSettings, RockingModel
 from frp_assess.io_utils import atomic_write_text
 
 #: Bump when the numerics change in a way that changes results.
-CACHE_VERSION = 1
+CACHE_VERSION = 2  # 2: IdaResult.survivor_multiplier
 
 
 def record_digest(acc: np.ndarray, dt: float) -> str:

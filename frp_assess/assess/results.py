@@ -74,6 +74,7 @@ def case_dict(
                 "record": name,
                 "pga": res.pga / G,
                 "collapse_multiplier": res.collapse_multiplier,
+                "survivor_multiplier": res.survivor_multiplier,
                 "a_dyn": a,
                 "q": res.q,
             }
@@ -120,6 +121,17 @@ def rank_cases(cases: list[dict[str, Any]], target: float) -> str | None:
     for rank, idx in enumerate(order, start=1):
         cases[idx]["rank"] = rank
     return cases[order[0]]["name"] if order and cases[order[0]]["meets_target"] else None
+
+
+def below_collapse(collapse: float, survivor: float | None, tolerance: float) -> float:
+    """The multiplier of the "just below collapse" time history.
+
+    It is the largest multiplier the IDA ran without collapse (its bracket's C_lo), so the
+    history shown surely survives; within ``tolerance`` of ``collapse``.  When the IDA's first
+    try, C₀ (the onset of rocking), already collapsed there is none: C₀·(1 − tolerance) is
+    used, below which the wall does not rock at all.
+    """
+    return survivor if survivor is not None else collapse * (1.0 - tolerance)
 
 
 def recommendation_text(results: dict[str, Any]) -> str:

@@ -50,6 +50,9 @@ class IdaResult:
     a_dyn: float | None  #: C·PGA [m/s²] (Eq. 16)
     q: float | None  #: a_dyn / a_RM [-] (Eq. 15)
     runs: int  #: time histories computed
+    #: the largest C run without collapse (the bisection's C_lo, or the last step of the hunt
+    #: when nothing collapsed); None when the first try, C₀, already collapsed [-]
+    survivor_multiplier: float | None
 
 
 def ida(
@@ -65,7 +68,8 @@ def ida(
     1. C₀ = a_RM/PGA; try C = C₀·s^k, k = 0, 1, … until the first collapse, giving up past
        C_max = max_multiplier·C₀;
     2. bisect between the last survivor and the first collapse until
-       (C_hi − C_lo) ≤ tol·C_hi; the result is C_hi, the *first* collapse.
+       (C_hi − C_lo) ≤ tol·C_hi; the result is C_hi, the *first* collapse, and C_lo, the
+       largest multiplier run without collapse (what "just below collapse" means).
 
     ``should_stop`` is polled between time histories; when it returns True the search
     raises :class:`~frp_assess.errors.Cancelled`.
@@ -92,7 +96,7 @@ def ida(
     while True:
         c = c0 * settings.step_ratio**k
         if c > c_max * (1.0 + 1e-12):
-            return IdaResult(pga, c0, None, None, None, runs)
+            return IdaResult(pga, c0, None, None, None, runs, c_lo or None)
         if collapses(c):
             c_hi = c
             break
@@ -105,4 +109,4 @@ def ida(
         else:
             c_lo = c_mid
     a_dyn = c_hi * pga
-    return IdaResult(pga, c0, c_hi, a_dyn, a_dyn / a_rm, runs)
+    return IdaResult(pga, c0, c_hi, a_dyn, a_dyn / a_rm, runs, c_lo or None)

@@ -17,6 +17,7 @@ from textual.containers import Horizontal, Vertical
 from textual.message import Message
 from textual.widgets import Button, Input, Label, Select, Static
 
+from frp_assess.assess.results import below_collapse
 from frp_assess.tui.fields import OrderedInput
 from frp_assess.tui.plots import PlotView, Rule, Series
 from frp_assess.tui.session import HistoryData
@@ -116,11 +117,15 @@ class HistoryPane(Vertical):
             return None
         return c, r
 
-    def collapse_multiplier(self) -> float | None:
+    def _ida_of_record(self) -> dict[str, Any] | None:
         cur = self._current()
         if cur is None or self.results is None:
             return None
-        return self.results["cases"][cur[0]]["records"][cur[1]]["collapse_multiplier"]
+        return self.results["cases"][cur[0]]["records"][cur[1]]
+
+    def collapse_multiplier(self) -> float | None:
+        rec = self._ida_of_record()
+        return None if rec is None else rec["collapse_multiplier"]
 
     def action_preset(self, which: str, quiet: bool = False) -> None:
         """Set the multiplier (collapse, just below collapse, or 1) and compute."""
@@ -137,7 +142,8 @@ class HistoryPane(Vertical):
         elif which == "collapse":
             value = c
         else:
-            value = c * (1.0 - self.tolerance)
+            rec = self._ida_of_record() or {}
+            value = below_collapse(c, rec.get("survivor_multiplier"), self.tolerance)
         inp = self.query_one("#hist-multiplier", Input)
         with self.app.prevent(Input.Changed):
             inp.value = f"{value:.6g}"

@@ -147,3 +147,19 @@ def test_run_writes_the_report_and_report_rebuilds_it_identically(tmp_path):
     assert pdf.startswith(b"%PDF")
     assert main(["report", str(out_dir), "--out", str(tmp_path / "again.pdf")]) == 0
     assert (tmp_path / "again.pdf").read_bytes() == pdf
+
+
+def test_paper_case_just_below_history_survives(tmp_path):
+    """Regression: in projects/paper-case.yaml the governing record collapses at C and also at
+    C·(1 - tol) (the response is not monotonic in C); the report's "just below" history must
+    be one the IDA ran and found standing: its bracket's lower end."""
+    from frp_assess.api import run_assessment
+
+    inputs = load_inputs(ROOT / "projects" / "paper-case.yaml")
+    results, _ = run_assessment(inputs, tmp_path, pdf=False)
+    gov = results["governing"]
+    case = next(c for c in results["cases"] if c["name"] == gov["case"])
+    ida = next(r for r in case["records"] if r["record"] == gov["record"])
+    at, below = gov["runs"]
+    assert at["collapsed"] is True and below["collapsed"] is False
+    assert below["multiplier"] == ida["survivor_multiplier"] < at["multiplier"]

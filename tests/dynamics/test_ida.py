@@ -46,6 +46,25 @@ def test_bisection_brackets_the_threshold():
     assert hunt[:3] == pytest.approx([c0, 1.1 * c0, 1.21 * c0])
 
 
+def test_survivor_is_the_largest_multiplier_run_without_collapse():
+    """MODEL.md §5: the bisection ends with C_lo (survives) and C_hi (first collapse),
+    (C_hi - C_lo) <= tol·C_hi; C_lo is what "just below collapse" shows, so it must be a
+    multiplier actually run and found standing, not C_hi·(1 - tol), which can fall."""
+    c0 = Wall(thickness=0.4, height=3.0, unit_weight=18e3).a_rm / 2.0
+    model = StubModel([(3.3 * c0, np.inf)])
+    res = ida(model, ACC, 0.01, IdaSettings())
+    standing = [c for c in list(model.calls) if not any(lo <= c <= hi for lo, hi in model.bands)]
+    assert res.survivor_multiplier == max(standing)
+    assert res.collapse_multiplier - res.survivor_multiplier <= 0.005 * res.collapse_multiplier
+    # collapse at the first try: nothing below was run
+    assert ida(StubModel([(0.0, np.inf)]), ACC, 0.01).survivor_multiplier is None
+    # no collapse up to C_max: the last (largest) multiplier of the hunt
+    none = StubModel([])
+    assert ida(none, ACC, 0.01, IdaSettings(max_multiplier=10.0)).survivor_multiplier == max(
+        none.calls
+    )
+
+
 def test_first_collapse_not_a_later_one():
     """A wall that falls in a band and 'survives' above it: the first collapse counts."""
     c0 = Wall(thickness=0.4, height=3.0, unit_weight=18e3).a_rm / 2.0
