@@ -237,7 +237,7 @@ def design_dicts(inputs: AssessmentInputs, found: list[DesignResult]) -> list[di
 
 def history_dict(label: str, multiplier: float, res: Any, alpha: float) -> dict[str, Any]:
     h = res.history
-    n = int(np.sum(~np.isnan(h.theta)))
+    n = h.computed
     step = max(1, math.ceil(n / MAX_HISTORY_POINTS))
     sl = slice(0, n, step)
     return {

@@ -75,6 +75,11 @@ class History:
     omega: NDArray[np.float64]  #: angular velocity θ' [rad/s]
     strain: NDArray[np.float64]  #: strain of the acting bar [-] (0 when unreinforced/broken)
 
+    @property
+    def computed(self) -> int:
+        """Samples computed: all of them, or those up to an early stop at collapse."""
+        return int(np.count_nonzero(~np.isnan(self.theta)))
+
 
 @dataclass(frozen=True)
 class Rupture:

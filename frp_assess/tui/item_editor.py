@@ -21,33 +21,7 @@ from textual.widgets import Button, DataTable, Input, Select, Static
 
 from frp_assess.config.messages import Loc, format_path
 from frp_assess.tui.fields import FieldRow, FieldSpec
-from frp_assess.tui.model import MISSING, Problem, get_path
-
-
-def delete_path(data: dict[str, Any], path: Loc) -> None:
-    """Remove the key at ``path`` if present."""
-    node: Any = data
-    for key in path[:-1]:
-        node = node.get(key) if isinstance(node, dict) else None
-        if node is None:
-            return
-    if isinstance(node, dict):
-        node.pop(path[-1], None)
-
-
-def put_path(data: dict[str, Any], path: Loc, value: Any) -> None:
-    """Set the value at ``path`` (``MISSING`` removes the key)."""
-    if value is MISSING:
-        delete_path(data, path)
-        return
-    node: Any = data
-    for key in path[:-1]:
-        nxt = node.get(key)
-        if not isinstance(nxt, dict):
-            nxt = {}
-            node[key] = nxt
-        node = nxt
-    node[path[-1]] = value
+from frp_assess.tui.model import Problem, get_path, set_path
 
 
 class ItemEditor(Vertical):
@@ -266,7 +240,7 @@ class ItemEditor(Vertical):
 
     def apply_field(self, index: int, path: Loc, value: Any) -> None:
         """Store a form value into item ``index``."""
-        put_path(self.items[index], path, value)
+        set_path(self.items[index], path, value)
 
     @on(Button.Pressed)
     def _button(self, event: Button.Pressed) -> None:

@@ -22,7 +22,7 @@ from frp_assess.config.messages import Loc
 from frp_assess.config.schema import MaterialSpec
 from frp_assess.tui.fields import OrderedInput, num, text
 from frp_assess.tui.item_editor import ItemEditor
-from frp_assess.tui.model import MISSING, format_value, get_path
+from frp_assess.tui.model import MISSING, format_value, get_path, set_path
 
 MATERIAL_FIELDS = tuple(MaterialSpec.model_fields)
 
@@ -136,12 +136,10 @@ class MaterialsEditor(ItemEditor):
                 inp.placeholder = "" if lib is None else f"{format_value(value)} (library)"
 
     def apply_field(self, index: int, path: Loc, value: Any) -> None:
-        from frp_assess.tui.item_editor import put_path
-
         name = self.items[index]
         entry = self.entries.setdefault(name, {})
         if isinstance(entry, dict):
-            put_path(entry, path, value)
+            set_path(entry, path, value)
 
     def new_item(self, action: str) -> Any:  # pragma: no cover - adding goes by name
         raise NotImplementedError

@@ -102,9 +102,18 @@ def get_path(data: Any, path: Loc, default: Any = MISSING) -> Any:
     return node
 
 
+def delete_path(data: dict[str, Any], path: Loc) -> None:
+    """Remove the key at ``path`` if present."""
+    parent = get_path(data, path[:-1], None)
+    if isinstance(parent, dict):
+        parent.pop(path[-1], None)
+
+
 def set_path(data: dict[str, Any], path: Loc, value: Any) -> None:
-    """Set (or, for ``MISSING``, leave out) the value at a key path, creating mappings."""
+    """Set the value at a key path, creating mappings; ``MISSING`` removes the key (an empty
+    field leaves it out: the schema's default applies)."""
     if value is MISSING:
+        delete_path(data, path)
         return
     node: Any = data
     for key in path[:-1]:

@@ -55,10 +55,11 @@ RANKING_COLUMNS: list[tuple[str, Callable[[dict[str, Any]], Any], Callable[..., 
 ]
 
 
-def sorted_cases(cases: list[dict[str, Any]], column: int, reverse: bool) -> list[dict[str, Any]]:
-    """The cases ordered by a ranking column (stable; ``rank`` puts the unreinforced last)."""
+def sorted_order(cases: list[dict[str, Any]], column: int, reverse: bool) -> list[int]:
+    """Indices of the cases ordered by a ranking column (stable; ``rank`` puts the
+    unreinforced wall last)."""
     key = RANKING_COLUMNS[column][1]
-    return sorted(cases, key=key, reverse=reverse)
+    return sorted(range(len(cases)), key=lambda i: key(cases[i]), reverse=reverse)
 
 
 class RankingTable(DataTable[Any]):
@@ -97,10 +98,9 @@ class RankingTable(DataTable[Any]):
                 header = f"cost [{self.currency}]"
             mark = (" ▼" if self.sort_reverse else " ▲") if i == self.sort_column else ""
             self.add_column(Text(header + mark))
-        ordered = sorted_cases(self.cases, self.sort_column, self.sort_reverse)
-        self.order = [self.cases.index(c) for c in ordered]
-        for c in ordered:
-            self.add_row(*[_text(cell(c)) for _, _, cell in RANKING_COLUMNS])
+        self.order = sorted_order(self.cases, self.sort_column, self.sort_reverse)
+        for i in self.order:
+            self.add_row(*[_text(cell(self.cases[i])) for _, _, cell in RANKING_COLUMNS])
         if self.cases:
             self.move_cursor(row=min(row, len(self.cases) - 1), column=col, animate=False)
 

@@ -242,7 +242,7 @@ def case_history(
     res = model.run(rec.acc, rec.dt, float(multiplier), history=True)
     h = res.history
     assert h is not None
-    n = int(np.sum(~np.isnan(h.theta)))
+    n = h.computed
     bars = model.rebars
     return HistoryData(
         case=outcome.results["cases"][case_index]["name"],

@@ -10,13 +10,25 @@ import pytest
 from frp_assess.cli.new import template_text
 from frp_assess.config import Project, load_project_text, project_data
 from frp_assess.config.yaml_update import update_project_text
+from frp_assess.errors import InputError
 
 ROOT = Path(__file__).resolve().parents[2]
 FILES = {
     "template": template_text(),
     **{p.name: p.read_text(encoding="utf-8") for p in sorted((ROOT / "projects").glob("*.yaml"))},
 }
-FILES = {k: v for k, v in FILES.items() if "interventions" in v}  # project files, not studies
+
+
+def _is_project(text: str) -> bool:
+    try:
+        load_project_text(text, "p.yaml", check_files=False)
+    except InputError:
+        return False  # a study file
+    return True
+
+
+FILES = {k: v for k, v in FILES.items() if _is_project(v)}
+assert {"template", "facade-laquila.yaml", "paper-case.yaml"} <= set(FILES)
 
 
 def loaded(text: str) -> Project:
