@@ -42,7 +42,6 @@ from frp_assess.tui.record_files import RecordFilesEditor
 
 W = ("wall",)
 SP = ("seismic", "spectrum")
-TABLE = ("spectrum", "table")
 REC = ("seismic", "records")
 ART = ("seismic", "records", "artificial")
 AN = ("analysis",)
@@ -116,64 +115,41 @@ SITE_TYPE = FieldSpec(
     selects="spectrum",
     help=field_help(SeismicSpec, "spectrum"),
 )
+
+
+def in_variant(group: str, value: str, *specs: FieldSpec) -> tuple[FieldSpec, ...]:
+    """Fields that are part of the data only while variant ``group`` is ``value``."""
+    return tuple(replace(f, variant=(group, value)) for f in specs)
+
+
+NTC, EC8 = Ntc2018Spectrum, Ec8Spectrum
 SITE_FIELDS: dict[str, tuple[FieldSpec, ...]] = {
-    "ntc2018": (
-        num((*SP, "ag"), "a_g", "g, on rock", Ntc2018Spectrum, variant=("spectrum", "ntc2018")),
-        num((*SP, "F0"), "F0", "-", Ntc2018Spectrum, variant=("spectrum", "ntc2018")),
-        num((*SP, "Tc_star"), "T_C*", "s", Ntc2018Spectrum, variant=("spectrum", "ntc2018")),
-        choice(
-            (*SP, "soil"), "Soil", None, Ntc2018Spectrum, variant=("spectrum", "ntc2018"), width=8
-        ),
-        choice(
-            (*SP, "topography"),
-            "Topography",
-            None,
-            Ntc2018Spectrum,
-            variant=("spectrum", "ntc2018"),
-            width=8,
-        ),
-        num(
-            (*SP, "damping"),
-            "Damping ξ",
-            "-",
-            Ntc2018Spectrum,
-            variant=("spectrum", "ntc2018"),
-            optional=True,
-        ),
+    "ntc2018": in_variant(
+        "spectrum",
+        "ntc2018",
+        num((*SP, "ag"), "a_g", "g, on rock", NTC),
+        num((*SP, "F0"), "F0", "-", NTC),
+        num((*SP, "Tc_star"), "T_C*", "s", NTC),
+        choice((*SP, "soil"), "Soil", None, NTC, width=8),
+        choice((*SP, "topography"), "Topography", None, NTC, width=8),
+        num((*SP, "damping"), "Damping ξ", "-", NTC, optional=True),
     ),
-    "ec8": (
-        num((*SP, "ag"), "a_g", "g, ground A", Ec8Spectrum, variant=("spectrum", "ec8")),
-        choice((*SP, "ground"), "Ground", None, Ec8Spectrum, variant=("spectrum", "ec8"), width=8),
-        choice(
-            (*SP, "spectrum_type"),
-            "Spectrum type",
-            None,
-            Ec8Spectrum,
-            variant=("spectrum", "ec8"),
-            width=8,
-        ),
-        num(
-            (*SP, "damping"),
-            "Damping ξ",
-            "-",
-            Ec8Spectrum,
-            variant=("spectrum", "ec8"),
-            optional=True,
-        ),
+    "ec8": in_variant(
+        "spectrum",
+        "ec8",
+        num((*SP, "ag"), "a_g", "g, ground A", EC8),
+        choice((*SP, "ground"), "Ground", None, EC8, width=8),
+        choice((*SP, "spectrum_type"), "Spectrum type", None, EC8, width=8),
+        num((*SP, "damping"), "Damping ξ", "-", EC8, optional=True),
     ),
-    "preset": (
-        choice(
-            (*SP, "name"),
-            "Preset",
-            None,
-            PresetSpectrum,
-            variant=("spectrum", "preset"),
-            width=8,
-        ),
+    "preset": in_variant(
+        "spectrum", "preset", choice((*SP, "name"), "Preset", None, PresetSpectrum, width=8)
     ),
-    "table": (
-        items((*SP, "periods"), "Periods T", TableSpectrum, unit="s", width=26, variant=TABLE),
-        items((*SP, "accelerations"), "Se(T)", TableSpectrum, unit="g", width=26, variant=TABLE),
+    "table": in_variant(
+        "spectrum",
+        "table",
+        items((*SP, "periods"), "Periods T", TableSpectrum, unit="s", width=26),
+        items((*SP, "accelerations"), "Se(T)", TableSpectrum, unit="g", width=26),
     ),
 }
 T1_FIELD = num(("seismic", "t1"), "T1 (checks)", "s", SeismicSpec, optional=True)
@@ -190,20 +166,19 @@ RECORD_SOURCE = FieldSpec(
 )
 #: what artificial records start with when chosen: the schema's defaults
 ARTIFICIAL_DEFAULTS = ArtificialRecords().model_dump(mode="json")
-ARTIFICIAL_FIELDS = tuple(
-    replace(f, variant=("records", "artificial"))
-    for f in (
-        num((*ART, "count"), "Count", "records, 1-100", ArtificialRecords, optional=True),
-        num((*ART, "seed"), "Seed", "same seed, same set", ArtificialRecords, optional=True),
-        num(
-            (*ART, "duration"),
-            "Duration",
-            f"s, ≥ {MIN_ARTIFICIAL_DURATION:g}",
-            ArtificialRecords,
-            optional=True,
-        ),
-        num((*ART, "dt"), "Time step dt", "s, ≤ 0.05", ArtificialRecords, optional=True),
-    )
+ARTIFICIAL_FIELDS = in_variant(
+    "records",
+    "artificial",
+    num((*ART, "count"), "Count", "records, 1-100", ArtificialRecords, optional=True),
+    num((*ART, "seed"), "Seed", "same seed, same set", ArtificialRecords, optional=True),
+    num(
+        (*ART, "duration"),
+        "Duration",
+        f"s, ≥ {MIN_ARTIFICIAL_DURATION:g}",
+        ArtificialRecords,
+        optional=True,
+    ),
+    num((*ART, "dt"), "Time step dt", "s, ≤ 0.05", ArtificialRecords, optional=True),
 )
 SCALE_FIELD = choice(
     (*REC, "scale_to_spectrum"),
@@ -269,14 +244,13 @@ DESIGN_MODE = FieldSpec(
 )
 #: what design mode starts with when switched on: GFRP, and the schema's defaults
 DESIGN_DEFAULTS = DesignSpec(materials=["GFRP"]).model_dump(mode="json")
-DESIGN_FIELDS = tuple(
-    replace(f, variant=("design", "on"))
-    for f in (
-        items(("design", "materials"), "Materials", DesignSpec, width=22),
-        items(("design", "positions"), "Positions", DesignSpec, width=22),
-        items(("design", "ratio_range"), "Ratio range", DesignSpec, unit="‰ low, high", width=12),
-        num(("design", "resolution"), "Resolution", "‰", DesignSpec, optional=True),
-    )
+DESIGN_FIELDS = in_variant(
+    "design",
+    "on",
+    items(("design", "materials"), "Materials", DesignSpec, width=22),
+    items(("design", "positions"), "Positions", DesignSpec, width=22),
+    items(("design", "ratio_range"), "Ratio range", DesignSpec, unit="‰ low, high", width=12),
+    num(("design", "resolution"), "Resolution", "‰", DesignSpec, optional=True),
 )
 
 #: where a problem whose key path is not a field is shown: key path prefix -> section id
