@@ -6,10 +6,15 @@ No I/O, no pydantic, yaml or UI imports here (a test checks it).
 from __future__ import annotations
 
 from frp_assess.dynamics.batch import IdaTask, default_jobs, run_batch
-from frp_assess.dynamics.ida import IdaResult, IdaSettings, ida
+from frp_assess.dynamics.ida import IdaPoint, IdaResult, IdaSettings, ida
 from frp_assess.dynamics.rebars import POSITIONS, Position, Rebars
 from frp_assess.dynamics.restitution import housner_two_sided, one_sided, velocity_ratio
 from frp_assess.dynamics.rocking import (
+    COLLAPSE_RULES,
+    DEFAULT_TOLERANCE,
+    RUPTURE_RULES,
+    CollapseRule,
+    Fate,
     History,
     ModelOptions,
     RockingModel,
@@ -19,7 +24,13 @@ from frp_assess.dynamics.rocking import (
 from frp_assess.dynamics.wall import MECHANISMS, Mechanism, Wall
 
 __all__ = [
+    "COLLAPSE_RULES",
+    "DEFAULT_TOLERANCE",
     "MECHANISMS",
+    "RUPTURE_RULES",
+    "CollapseRule",
+    "Fate",
+    "IdaPoint",
     "POSITIONS",
     "History",
     "IdaResult",

@@ -37,6 +37,15 @@ class IdaSettings:
 
 
 @dataclass(frozen=True)
+class IdaPoint:
+    """One time history of an IDA."""
+
+    multiplier: float  #: C [-]
+    collapsed: bool
+    peak_ratio: float  #: peak |θ|/α [-] (the fall itself included when it collapsed)
+
+
+@dataclass(frozen=True)
 class IdaResult:
     """Collapse of one wall under one record.
 
@@ -53,6 +62,9 @@ class IdaResult:
     #: the largest C run without collapse (the bisection's C_lo, or the last step of the hunt
     #: when nothing collapsed); None when the first try, C₀, already collapsed [-]
     survivor_multiplier: float | None
+    #: every time history the search ran, sorted by C: the IDA curve (a wall that stands
+    #: again above its first collapse shows here)
+    curve: tuple[IdaPoint, ...] = ()
 
 
 def ida(
@@ -81,14 +93,20 @@ def ida(
     a_rm = model.wall.a_rm
     c0 = a_rm / pga
     c_max = settings.max_multiplier * c0
-    runs = 0
+    points: list[IdaPoint] = []
 
     def collapses(c: float) -> bool:
-        nonlocal runs
         if should_stop is not None and should_stop():
             raise Cancelled("IDA cancelled")
-        runs += 1
-        return model.run(acc, dt, c).collapsed
+        res = model.run(acc, dt, c)
+        points.append(IdaPoint(c, res.collapsed, res.max_rotation_ratio))
+        return res.collapsed
+
+    def result(c_hi: float | None, c_lo: float) -> IdaResult:
+        curve = tuple(sorted(points, key=lambda p: p.multiplier))
+        a_dyn = None if c_hi is None else c_hi * pga
+        q = None if a_dyn is None else a_dyn / a_rm
+        return IdaResult(pga, c0, c_hi, a_dyn, q, len(points), c_lo or None, curve)
 
     c_lo = 0.0
     c_hi = math.nan
@@ -96,7 +114,7 @@ def ida(
     while True:
         c = c0 * settings.step_ratio**k
         if c > c_max * (1.0 + 1e-12):
-            return IdaResult(pga, c0, None, None, None, runs, c_lo or None)
+            return result(None, c_lo)
         if collapses(c):
             c_hi = c
             break
@@ -108,5 +126,4 @@ def ida(
             c_hi = c_mid
         else:
             c_lo = c_mid
-    a_dyn = c_hi * pga
-    return IdaResult(pga, c0, c_hi, a_dyn, a_dyn / a_rm, runs, c_lo or None)
+    return result(c_hi, c_lo)

@@ -4,7 +4,10 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Literal
+from typing import Literal, overload
+
+import numpy as np
+from numpy.typing import NDArray
 
 from frp_assess.dynamics.wall import Wall
 
@@ -83,12 +86,24 @@ class Rebars:
         arg = self.rupture_strain * wall.height / (2.0 * self.lever_arm(wall))
         return 2.0 * math.asin(arg) if arg < 1.0 else math.inf
 
-    def elongation(self, wall: Wall, theta: float) -> float:
-        """e [m] = 2·b_r·sin(|θ|/2) (Eq. 7)."""
+    @overload
+    def elongation(self, wall: Wall, theta: float) -> float: ...
+    @overload
+    def elongation(self, wall: Wall, theta: NDArray[np.float64]) -> NDArray[np.float64]: ...
+    def elongation(
+        self, wall: Wall, theta: float | NDArray[np.float64]
+    ) -> float | NDArray[np.float64]:
+        """e [m] = 2·b_r·sin(|θ|/2) (Eq. 7); θ [rad], a number or an array."""
+        if isinstance(theta, np.ndarray):
+            return 2.0 * self.lever_arm(wall) * np.sin(0.5 * np.abs(theta))
         return 2.0 * self.lever_arm(wall) * math.sin(0.5 * abs(theta))
 
-    def strain(self, wall: Wall, theta: float) -> float:
-        """Strain of the acting bar e/H [-] (free length H)."""
+    @overload
+    def strain(self, wall: Wall, theta: float) -> float: ...
+    @overload
+    def strain(self, wall: Wall, theta: NDArray[np.float64]) -> NDArray[np.float64]: ...
+    def strain(self, wall: Wall, theta: float | NDArray[np.float64]) -> float | NDArray[np.float64]:
+        """Strain of the acting bar e/H [-] (free length H) at θ [rad], a number or an array."""
         return self.elongation(wall, theta) / wall.height
 
     def stored_energy(self, wall: Wall, theta: float) -> float:

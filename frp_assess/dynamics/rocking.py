@@ -3,72 +3,101 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+from functools import cached_property
 from typing import Literal
 
 import numpy as np
 from numpy.typing import NDArray
 
-from frp_assess.dynamics import kernel as k
+from frp_assess.dynamics.kernel import history_length, simulate
+from frp_assess.dynamics.kernel import params as kp
 from frp_assess.dynamics.rebars import Rebars
 from frp_assess.dynamics.restitution import Restitution, velocity_ratio
 from frp_assess.dynamics.wall import Mechanism, Wall
 from frp_assess.motions.record import G
 
 RuptureRule = Literal["energy-transfer", "velocity-continuous"]
-CollapseRule = Literal["end-of-record", "first-exceedance"]
+CollapseRule = Literal["overturning", "end-of-record", "first-exceedance"]
+Fate = Literal["fell", "at rest", "exceeded", "standing"]
 
-#: Sub-steps are chosen so that h·ω ≤ STEP_FACTOR, ω = p·√(1 + K) the stiffest frequency of
-#: the system (the bar-restrained wall near θ = 0).  RK4's phase error per cycle is then
-#: ~(h·ω)⁴/120·2π ≈ 1e-4 rad; `tests/validation/test_convergence.py` checks that halving the
-#: step changes peak rotations by < 0.1 % and collapse multipliers by < 0.2 %, and
-#: `test_reference.py` compares with an independent rtol-1e-11 solution.
-STEP_FACTOR = 0.2
+RUPTURE_RULES: tuple[RuptureRule, ...] = ("energy-transfer", "velocity-continuous")
+COLLAPSE_RULES: tuple[CollapseRule, ...] = ("overturning", "end-of-record", "first-exceedance")
+
+#: Default local error tolerance of the Dormand–Prince pair [-].  Measured on the convergence
+#: corpus (scripts/validate_accuracy.py; a subset in tests/validation/test_accuracy.py): at
+#: this value a 100× tighter tolerance and RK4 at 0.1 ms move no well-conditioned
+#: first-collapse multiplier by more than 0.2 % and no peak rotation by more than 0.1 %
+#: (1e-7 missed the bar on 2 of 191 multipliers, by up to 3.5 %).
+DEFAULT_TOLERANCE = 1e-8
+#: Bounds of the tolerance a user may ask for [-].
+TOLERANCE_RANGE = (1e-12, 1e-3)
+
+_FATES: dict[int, Fate] = {
+    kp.FATE_FELL: "fell",
+    kp.FATE_AT_REST: "at rest",
+    kp.FATE_EXCEEDED: "exceeded",
+    kp.FATE_STANDING: "standing",
+}
+_STATUS_MESSAGES = {
+    kp.STATUS_EVENT_OVERFLOW: "too many events in one sample interval",
+    kp.STATUS_STEP_UNDERFLOW: "the error control asked for a step below 1e-12·dt",
+    kp.STATUS_FREE_VIBRATION_UNDECIDED: (
+        f"the wall's fate was not certain after {kp.MAX_FREE_VIBRATION:g} s of free vibration"
+    ),
+}
 
 
 @dataclass(frozen=True)
 class ModelOptions:
-    """Model choices of MODEL.md §3 that the user can change.
+    """Model choices of docs/model.md §3–4 that the user can change.
 
     Attributes:
         restitution: ``"energy"`` (|θ'₊| = √r·|θ'₋|, default), ``"velocity"`` (r·|θ'₋|) or a
             velocity ratio in (0, 1].
         rupture: ``"energy-transfer"`` (Eq. 12, default) or ``"velocity-continuous"``.
-        collapse: ``"end-of-record"`` (|θ| ≥ α when the input ends, default) or
-            ``"first-exceedance"`` (|θ| reaches α at any time).
-        free_vibration_tail: zero ground motion appended after the record [s].
-        max_step: largest RK4 step [s]; ``None`` chooses it from the system's stiffest
-            frequency (and never above the record's dt).
+        collapse: ``"overturning"`` (the wall falls, followed into free vibration after the
+            record; default), ``"end-of-record"`` (|θ| ≥ α when the input ends, the paper's
+            convention) or ``"first-exceedance"`` (|θ| reaches α at any time).
+        free_vibration_tail: zero ground motion appended to the record [s]; it cannot change
+            an ``overturning`` verdict.
+        tolerance: local error tolerance of the Dormand–Prince 5(4) pair [-].
+        fixed_step: if set, classical RK4 at this largest fixed step [s] instead of the
+            error-controlled pair (the independent reference of the tests and benchmarks).
     """
 
     restitution: Restitution = "energy"
     rupture: RuptureRule = "energy-transfer"
-    collapse: CollapseRule = "end-of-record"
+    collapse: CollapseRule = "overturning"
     free_vibration_tail: float = 0.0
-    max_step: float | None = None
+    tolerance: float = DEFAULT_TOLERANCE
+    fixed_step: float | None = None
 
     def __post_init__(self) -> None:
-        if self.rupture not in ("energy-transfer", "velocity-continuous"):
+        if self.rupture not in RUPTURE_RULES:
+            raise ValueError(f"rupture rule must be one of {RUPTURE_RULES}, got {self.rupture!r}")
+        if self.collapse not in COLLAPSE_RULES:
             raise ValueError(
-                "rupture rule must be 'energy-transfer' or 'velocity-continuous', "
-                f"got {self.rupture!r}"
-            )
-        if self.collapse not in ("end-of-record", "first-exceedance"):
-            raise ValueError(
-                "collapse rule must be 'end-of-record' or 'first-exceedance', "
-                f"got {self.collapse!r}"
+                f"collapse rule must be one of {COLLAPSE_RULES}, got {self.collapse!r}"
             )
         if not (math.isfinite(self.free_vibration_tail) and self.free_vibration_tail >= 0.0):
             raise ValueError(
                 f"free-vibration tail must be >= 0 s, got {self.free_vibration_tail!r}"
             )
-        if self.max_step is not None and not (math.isfinite(self.max_step) and self.max_step > 0.0):
-            raise ValueError(f"max step must be > 0 s, got {self.max_step!r}")
+        lo, hi = TOLERANCE_RANGE
+        if not (math.isfinite(self.tolerance) and lo <= self.tolerance <= hi):
+            raise ValueError(
+                f"integration tolerance must be in [{lo:g}, {hi:g}], got {self.tolerance!r}"
+            )
+        if self.fixed_step is not None and not (
+            math.isfinite(self.fixed_step) and self.fixed_step > 0.0
+        ):
+            raise ValueError(f"fixed step must be > 0 s, got {self.fixed_step!r}")
 
 
 @dataclass(frozen=True)
 class History:
-    """Time histories at the record's samples (NaN after an early stop at collapse)."""
+    """Time histories at the record's samples, the free vibration after it included."""
 
     time: NDArray[np.float64]  #: [s]
     theta: NDArray[np.float64]  #: rotation θ [rad]
@@ -77,8 +106,8 @@ class History:
 
     @property
     def computed(self) -> int:
-        """Samples computed: all of them, or those up to an early stop at collapse."""
-        return int(np.count_nonzero(~np.isnan(self.theta)))
+        """Samples computed (up to the fall, or to the instant the fate was decided)."""
+        return int(self.theta.size)
 
 
 @dataclass(frozen=True)
@@ -91,23 +120,33 @@ class Rupture:
 class RockingResult:
     """What one time history gives."""
 
-    collapsed: bool
+    fate: Fate  #: fell, at rest (overturning); exceeded, standing (the α-based rules)
+    decided_time: float  #: when the fate became certain [s]
     collapse_time: float | None  #: [s]; None without collapse
-    max_rotation: float  #: peak |θ| [rad]
+    max_rotation: float  #: peak |θ| [rad], the free vibration after the record included
     max_rotation_ratio: float  #: peak |θ| / α [-]
+    peak_strain: float  #: peak strain of an intact acting bar [-] (0 when unreinforced)
+    rupture_strain: float | None  #: ε_max = c·ε_u of the bars [-]; None when unreinforced
     impacts: int
     ruptures: tuple[Rupture, ...]
     final_theta: float  #: [rad]
     final_omega: float  #: [rad/s]
+    steps: int  #: accepted integration steps
+    rejected_steps: int  #: steps the error control rejected
     history: History | None = field(default=None, repr=False)
+
+    @property
+    def collapsed(self) -> bool:
+        """The collapse rule's verdict: the wall fell (or met the α limit of the other rules)."""
+        return self.fate in ("fell", "exceeded")
 
 
 @dataclass(frozen=True)
 class RockingModel:
     """A wall, its mechanism, its rebars (``None``: unreinforced) and the model options.
 
-    Every constant the kernel needs is derived once here, so an IDA can run the same model
-    many times at different scales.
+    Every constant the kernel needs is derived once here (:attr:`params`), so an IDA can run
+    the same model many times at different scales.
     """
 
     wall: Wall
@@ -135,13 +174,47 @@ class RockingModel:
         """Rupture rotation θ_max [rad] (``inf``: unreinforced, or a bar that cannot break)."""
         return math.inf if self.rebars is None else self.rebars.rupture_rotation(self.wall)
 
-    def substeps(self, dt: float) -> int:
-        """RK4 sub-steps per sample interval of length dt [s]."""
-        if self.options.max_step is not None:
-            h = self.options.max_step
+    def with_options(self, **changes: object) -> RockingModel:
+        """The same wall and bars with some options changed."""
+        return replace(self, options=replace(self.options, **changes))  # type: ignore[arg-type]
+
+    @cached_property
+    def params(self) -> kp.KernelParams:
+        """The kernel's constants (docs/model.md §1–4), derived once."""
+        wall, bars, o = self.wall, self.rebars, self.options
+        theta_max = self.theta_max
+        if bars is None:
+            bar_mode, rupture_energy = kp.BAR_NONE, 0.0
         else:
-            h = STEP_FACTOR / (self.wall.p * math.sqrt(1.0 + self.K))
-        return max(1, math.ceil(dt / h - 1e-9))
+            bar_mode = kp.BAR_SHARED if bars.position == "centred" else kp.BAR_PER_SIDE
+            rupture_energy = (
+                bars.stored_energy(wall, theta_max) / wall.I0 if math.isfinite(theta_max) else 0.0
+            )
+        return kp.KernelParams(
+            g=G,
+            p2=wall.p2,
+            p=wall.p,
+            alpha=wall.alpha,
+            sin_a=math.sin(wall.alpha),
+            cos_a=math.cos(wall.alpha),
+            one_sided=self.mechanism == "one-sided",
+            bar_mode=bar_mode,
+            k_bar=self.K,
+            theta_max=theta_max,
+            rupture_energy=rupture_energy,
+            e_impact=self.impact_velocity_ratio,
+            rupture_mode=kp.RUPTURE_ENERGY_TRANSFER
+            if o.rupture == "energy-transfer"
+            else kp.RUPTURE_VELOCITY_CONTINUOUS,
+            collapse_mode={
+                "overturning": kp.COLLAPSE_OVERTURNING,
+                "end-of-record": kp.COLLAPSE_END_OF_RECORD,
+                "first-exceedance": kp.COLLAPSE_FIRST_EXCEEDANCE,
+            }[o.collapse],
+            method=kp.METHOD_DOPRI5 if o.fixed_step is None else kp.METHOD_RK4,
+            tolerance=o.tolerance,
+            fixed_step=math.inf if o.fixed_step is None else o.fixed_step,
+        )
 
     def run(
         self,
@@ -159,63 +232,47 @@ class RockingModel:
             raise ValueError("the record needs at least two samples")
         if not (math.isfinite(dt) and dt > 0.0):
             raise ValueError(f"dt must be > 0 s, got {dt!r}")
+        prm = self.params
         n_tail = int(math.ceil(self.options.free_vibration_tail / dt - 1e-9))
-        n_total = acc.size + n_tail
-        size = n_total if history else 1
+        size = history_length(acc.size + n_tail, dt, prm.collapse_mode) if history else 1
         h_theta = np.empty(size)
         h_omega = np.empty(size)
-        h_strain = np.empty(size)
+        h_bar = np.empty(size)
         r_time = np.zeros(2)
         r_side = np.zeros(2, dtype=np.int64)
-        if self.rebars is None:
-            bar_mode, lever_over_h = k.BAR_NONE, 0.0
-        else:
-            bar_mode = k.BAR_SHARED if self.rebars.position == "centred" else k.BAR_PER_SIDE
-            lever_over_h = self.rebars.lever_arm(self.wall) / self.wall.height
-        status, collapsed, t_c, peak, impacts, n_rup, th_f, om_f = k.simulate_kernel(
-            acc,
-            float(dt),
-            float(scale),
-            n_tail,
-            self.substeps(dt),
-            G,
-            self.wall.p2,
-            self.wall.alpha,
-            self.mechanism == "one-sided",
-            bar_mode,
-            self.K,
-            self.theta_max,
-            lever_over_h,
-            self.impact_velocity_ratio,
-            k.RUPTURE_ENERGY_TRANSFER
-            if self.options.rupture == "energy-transfer"
-            else k.RUPTURE_VELOCITY_CONTINUOUS,
-            k.COLLAPSE_END_OF_RECORD
-            if self.options.collapse == "end-of-record"
-            else k.COLLAPSE_FIRST_EXCEEDANCE,
-            float(theta0),
-            float(omega0),
-            history,
-            h_theta,
-            h_omega,
-            h_strain,
-            r_time,
-            r_side,
-        )
-        if status != k.STATUS_OK:
-            raise RuntimeError("rocking kernel: too many impacts in one sample interval")
+        out = simulate(
+            acc, float(dt), float(scale), n_tail, prm, float(theta0), float(omega0),
+            history, h_theta, h_omega, h_bar, r_time, r_side,
+        )  # fmt: skip
+        if out.status != kp.STATUS_OK:
+            raise RuntimeError(
+                f"rocking kernel at scale {scale:.6g}: {_STATUS_MESSAGES[out.status]}"
+            )
         hist = None
         if history:
-            hist = History(np.arange(n_total) * dt, h_theta, h_omega, h_strain)
-        ruptures = tuple(Rupture(float(r_time[i]), int(r_side[i])) for i in range(min(n_rup, 2)))
+            n = out.samples
+            theta = h_theta[:n].copy()
+            strain = np.zeros(n)
+            if self.rebars is not None:
+                strain = self.rebars.strain(self.wall, theta) * h_bar[:n]
+            hist = History(np.arange(n) * dt, theta, h_omega[:n].copy(), strain)
+        ruptures = tuple(
+            Rupture(float(r_time[i]), int(r_side[i])) for i in range(min(out.ruptures, 2))
+        )
+        bars = self.rebars
         return RockingResult(
-            collapsed=bool(collapsed),
-            collapse_time=None if math.isnan(t_c) else float(t_c),
-            max_rotation=float(peak),
-            max_rotation_ratio=float(peak) / self.wall.alpha,
-            impacts=int(impacts),
+            fate=_FATES[out.fate],
+            decided_time=float(out.decided_time),
+            collapse_time=None if math.isnan(out.collapse_time) else float(out.collapse_time),
+            max_rotation=float(out.peak),
+            max_rotation_ratio=float(out.peak) / self.wall.alpha,
+            peak_strain=0.0 if bars is None else float(bars.strain(self.wall, out.peak_with_bar)),
+            rupture_strain=None if bars is None else bars.rupture_strain,
+            impacts=int(out.impacts),
             ruptures=ruptures,
-            final_theta=float(th_f),
-            final_omega=float(om_f),
+            final_theta=float(out.final_theta),
+            final_omega=float(out.final_omega),
+            steps=int(out.steps),
+            rejected_steps=int(out.rejected),
             history=hist,
         )

@@ -1,4 +1,4 @@
-"""The IDA search rule of MODEL.md §5 on stand-in models with a known collapse set."""
+"""The IDA search rule of docs/model.md §5 on stand-in models with a known collapse set."""
 
 from __future__ import annotations
 
@@ -16,6 +16,7 @@ from tests.conftest import synthetic_record
 @dataclass
 class _Outcome:
     collapsed: bool
+    max_rotation_ratio: float = 0.0
 
 
 class StubModel:
@@ -63,6 +64,17 @@ def test_survivor_is_the_largest_multiplier_run_without_collapse():
     assert ida(none, ACC, 0.01, IdaSettings(max_multiplier=10.0)).survivor_multiplier == max(
         none.calls
     )
+
+
+def test_curve_keeps_every_run_sorted():
+    """The IDA curve holds every multiplier the search ran, in order, with its verdict."""
+    c0 = Wall(0.4, 3.0, 18e3).a_rm / 2.0
+    model = StubModel([(2.0 * c0, 2.2 * c0), (5.0 * c0, np.inf)])
+    res = ida(model, ACC, 0.01)  # type: ignore[arg-type]
+    assert [p.multiplier for p in res.curve] == sorted(model.calls)
+    assert len(res.curve) == res.runs
+    for p in res.curve:
+        assert p.collapsed == any(lo <= p.multiplier <= hi for lo, hi in model.bands)
 
 
 def test_first_collapse_not_a_later_one():

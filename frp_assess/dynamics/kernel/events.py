@@ -1,0 +1,186 @@
+"""Events inside an accepted step: bracketed on the step's dense output, located on the integrator.
+
+The dense output of a step is the cubic Hermite interpolant of y = s·θ through both ends
+(values θ and slopes θ' of the 5th-order solution).  It is monotone between its critical
+points, so the *first* crossing of a level is found exactly on the cubic; that bracket is then
+refined on the integrator itself — Newton iterations on the length τ of one step taken from
+the start of the step — until the level is hit to EVENT_TOLERANCE.  The state returned is the
+integrator's, never the interpolant's.
+"""
+
+from __future__ import annotations
+
+import math
+
+from numba import njit
+
+from frp_assess.dynamics.kernel.params import EVENT_ITERATIONS, EVENT_TOLERANCE, KernelParams
+from frp_assess.dynamics.kernel.steppers import acceleration, step
+
+#: Bisection on the cubic stops at this fraction of the step: Newton on the integrator does
+#: the rest.
+_BRACKET_FRACTION = 1e-9
+
+
+@njit(cache=True, nogil=True)
+def hermite(y0: float, y1: float, m0: float, m1: float) -> tuple[float, float, float, float]:
+    """Coefficients of the cubic through (0, y0) and (1, y1) with slopes m0, m1 (per unit u)."""
+    return y0, m0, 3.0 * (y1 - y0) - 2.0 * m0 - m1, 2.0 * (y0 - y1) + m0 + m1
+
+
+@njit(cache=True, nogil=True)
+def cubic(c0: float, c1: float, c2: float, c3: float, u: float) -> float:
+    return c0 + u * (c1 + u * (c2 + u * c3))
+
+
+@njit(cache=True, nogil=True)
+def critical_points(c1: float, c2: float, c3: float) -> tuple[float, float]:
+    """Roots in (0, 1) of the derivative c1 + 2c2·u + 3c3·u², sorted; −1 where absent."""
+    r1 = -1.0
+    r2 = -1.0
+    qa = 3.0 * c3
+    qb = 2.0 * c2
+    qc = c1
+    if abs(qa) <= 1e-14 * (abs(qb) + abs(qc)):
+        if qb != 0.0:
+            r = -qc / qb
+            if 0.0 < r < 1.0:
+                r1 = r
+        return r1, r2
+    disc = qb * qb - 4.0 * qa * qc
+    if disc < 0.0:
+        return r1, r2
+    sq = math.sqrt(disc)
+    q = -0.5 * (qb + math.copysign(sq, qb))  # numerically stable quadratic roots
+    x1 = q / qa
+    x2 = qc / q if q != 0.0 else x1
+    lo = min(x1, x2)
+    hi = max(x1, x2)
+    if 0.0 < lo < 1.0:
+        r1 = lo
+        if 0.0 < hi < 1.0 and hi > lo:
+            r2 = hi
+    elif 0.0 < hi < 1.0:
+        r1 = hi
+    return r1, r2
+
+
+@njit(cache=True, nogil=True)
+def _crossing_in_piece(
+    c0: float, c1: float, c2: float, c3: float, ua: float, ub: float, level: float, up: bool
+) -> float:
+    """Crossing of ``level`` inside [ua, ub], where the cubic is monotone, or −1."""
+    ya = cubic(c0, c1, c2, c3, ua) - level
+    yb = cubic(c0, c1, c2, c3, ub) - level
+    hit = (ya < 0.0 and yb >= 0.0) if up else (ya > 0.0 and yb <= 0.0)
+    if not hit:
+        return -1.0
+    lo = ua
+    hi = ub
+    while hi - lo > _BRACKET_FRACTION:
+        mid = 0.5 * (lo + hi)
+        if (cubic(c0, c1, c2, c3, mid) - level >= 0.0) == up:
+            hi = mid
+        else:
+            lo = mid
+    return hi
+
+
+@njit(cache=True, nogil=True)
+def first_crossing(
+    c0: float, c1: float, c2: float, c3: float, r1: float, r2: float, level: float, up: bool
+) -> float:
+    """First u in (0, 1] where the cubic crosses ``level`` (upwards if ``up``), or −1.
+
+    The cubic is monotone between the breakpoints 0, r1, r2, 1 (r1 < r2; −1 where absent),
+    so the first piece whose ends straddle the level holds the first crossing.
+    """
+    start = 0.0
+    if r1 > 0.0:
+        u = _crossing_in_piece(c0, c1, c2, c3, start, r1, level, up)
+        if u >= 0.0:
+            return u
+        start = r1
+    if r2 > 0.0:
+        u = _crossing_in_piece(c0, c1, c2, c3, start, r2, level, up)
+        if u >= 0.0:
+            return u
+        start = r2
+    return _crossing_in_piece(c0, c1, c2, c3, start, 1.0, level, up)
+
+
+@njit(cache=True, nogil=True)
+def locate_level(
+    theta: float,
+    omega: float,
+    a1: float,
+    h: float,
+    tau: float,
+    u0: float,
+    slope: float,
+    s: float,
+    k_s: float,
+    level: float,
+    prm: KernelParams,
+) -> tuple[float, float, float]:
+    """Step length τ ∈ (0, h] at which s·θ reaches ``level``, starting from the guess ``tau``.
+
+    Newton on τ with one integrator step from (θ, θ') per iteration (slope s·θ').  Returns
+    (τ, θ' there, s·θ there − level).
+    """
+    om_e = omega
+    resid = math.nan
+    for _ in range(EVENT_ITERATIONS):
+        th_e, om_e, _a, _err = step(theta, omega, tau, u0, slope, s, k_s, a1, prm)
+        resid = s * th_e - level
+        if abs(resid) <= EVENT_TOLERANCE:
+            break
+        dy = s * om_e
+        if dy == 0.0:
+            break
+        tau_new = tau - resid / dy
+        if tau_new <= 0.0:
+            tau_new = 0.5 * tau
+        elif tau_new > h:
+            tau_new = 0.5 * (tau + h)
+        if abs(tau_new - tau) <= 1e-15 * h:
+            tau = tau_new
+            break
+        tau = tau_new
+    return tau, om_e, resid
+
+
+@njit(cache=True, nogil=True)
+def turning_point(
+    theta: float,
+    omega: float,
+    a1: float,
+    h: float,
+    tau: float,
+    u0: float,
+    slope: float,
+    s: float,
+    k_s: float,
+    prm: KernelParams,
+) -> float:
+    """s·θ at the turning point (θ' = 0) inside the step, from the guess ``tau``.
+
+    Newton on τ with one integrator step per iteration (slope θ'' at the end of the step).
+    """
+    best = s * theta
+    for _ in range(EVENT_ITERATIONS):
+        th_e, om_e, a_e, _err = step(theta, omega, tau, u0, slope, s, k_s, a1, prm)
+        best = max(best, s * th_e)
+        if math.isnan(a_e):  # a method without FSAL: evaluate the end acceleration
+            a_e = acceleration(th_e, s, u0 + slope * tau, k_s, prm)
+        if a_e == 0.0:
+            break
+        tau_new = tau - om_e / a_e
+        if tau_new <= 0.0:
+            tau_new = 0.5 * tau
+        elif tau_new > h:
+            tau_new = 0.5 * (tau + h)
+        if abs(tau_new - tau) <= 1e-13 * h:
+            break
+        tau = tau_new
+    return best

@@ -1,0 +1,74 @@
+"""Constants of one time history, packed once for the compiled kernel (docs/model.md §3–4).
+
+:class:`KernelParams` is a plain named tuple of numbers: numba passes it to every compiled
+piece as one typed record, so a constant is named where it is used and two floats can never
+be swapped silently.  The codes below are shared by the kernel and its Python face
+(:mod:`frp_assess.dynamics.rocking`).
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+BAR_NONE = 0  #: unreinforced
+BAR_SHARED = 1  #: centred bar: acts for both signs of θ, one rupture removes it for both
+BAR_PER_SIDE = 2  #: external bars: the bar opposite the pivot acts; each side breaks on its own
+
+RUPTURE_ENERGY_TRANSFER = 0  #: Eq. 12: ½I0θ'₊² = ½I0θ'₋² + U_r(θ_max)
+RUPTURE_VELOCITY_CONTINUOUS = 1  #: θ' unchanged at rupture (the bar's energy is lost)
+
+COLLAPSE_OVERTURNING = 0  #: the wall falls (|θ| = π/2), followed into free vibration
+COLLAPSE_END_OF_RECORD = 1  #: |θ| ≥ α when the input ends (or |θ| reaches π/2 earlier)
+COLLAPSE_FIRST_EXCEEDANCE = 2  #: |θ| reaches α at any time
+
+METHOD_DOPRI5 = 0  #: Dormand–Prince 5(4) with local error control (the default)
+METHOD_RK4 = 1  #: classical RK4 at a fixed step (the independent reference)
+
+FATE_FELL = 0  #: |θ| reached π/2
+FATE_AT_REST = 1  #: `overturning`: the wall can no longer fall
+FATE_EXCEEDED = 2  #: `end-of-record`/`first-exceedance`: the rule's limit |θ| ≥ α was met
+FATE_STANDING = 3  #: `end-of-record`/`first-exceedance`: the input ended below the limit
+
+STATUS_OK = 0
+STATUS_EVENT_OVERFLOW = 1  #: too many events in one sample interval (Zeno chatter guard)
+STATUS_STEP_UNDERFLOW = 2  #: the error control asked for a step below MIN_STEP_FRACTION·dt
+STATUS_FREE_VIBRATION_UNDECIDED = 3  #: the fate was not certain after MAX_FREE_VIBRATION
+
+#: After an impact, |θ'| below REST_VELOCITY·p [rad/s] means the wall is at rest.
+REST_VELOCITY = 1e-7
+#: Most events tolerated in one sample interval before giving up (never seen in practice).
+MAX_EVENTS_PER_INTERVAL = 100_000
+#: An event level is hit when |s·θ − level| ≤ EVENT_TOLERANCE [rad].
+EVENT_TOLERANCE = 1e-13
+#: Newton iterations allowed to locate one event on the integrator.
+EVENT_ITERATIONS = 30
+#: The error control gives up below this fraction of the sample interval.
+MIN_STEP_FRACTION = 1e-12
+#: Longest free vibration after the input before the fate must be certain [s].
+MAX_FREE_VIBRATION = 300.0
+#: Step-size controller of the embedded pair: safety factor and the bounds of one change.
+STEP_SAFETY = 0.9
+STEP_GROWTH_MAX = 5.0
+STEP_SHRINK_MIN = 0.2
+
+
+class KernelParams(NamedTuple):
+    """Everything the kernel needs besides the record and the state (SI units)."""
+
+    g: float  #: gravity [m/s²]
+    p2: float  #: p² [1/s²]
+    p: float  #: frequency parameter p [1/s]
+    alpha: float  #: slenderness α [rad]
+    sin_a: float  #: sin α
+    cos_a: float  #: cos α
+    one_sided: bool  #: only θ ≥ 0, rebound at θ = 0
+    bar_mode: int  #: BAR_NONE, BAR_SHARED or BAR_PER_SIDE
+    k_bar: float  #: K of Eq. 10 while the acting bar is intact [-]
+    theta_max: float  #: rupture rotation θ_max [rad] (inf: never)
+    rupture_energy: float  #: U_r(θ_max)/I0 [rad²/s²], the energy Eq. 12 hands to the wall
+    e_impact: float  #: velocity ratio |θ'₊/θ'₋| at an impact [-]
+    rupture_mode: int  #: RUPTURE_ENERGY_TRANSFER or RUPTURE_VELOCITY_CONTINUOUS
+    collapse_mode: int  #: COLLAPSE_OVERTURNING, COLLAPSE_END_OF_RECORD or COLLAPSE_FIRST_EXCEEDANCE
+    method: int  #: METHOD_DOPRI5 or METHOD_RK4
+    tolerance: float  #: local error tolerance of the embedded pair [-]
+    fixed_step: float  #: largest RK4 step [s] (METHOD_RK4 only)

@@ -1,0 +1,446 @@
+"""The time-stepping driver: one wall under one scaled record (paper Eq. 10, docs/model.md §3–4).
+
+A newcomer's map:
+
+* The input is the record (plus ``n_tail`` zero samples).  Between two samples the ground
+  acceleration is linear; steps never cross a sample, so every step sees a smooth input.
+* At rest nothing is integrated: the instant when the linear ground acceleration exceeds
+  g·tan α is solved for exactly (:func:`_uplift`) and rocking starts there.
+* Rocking: one step of the chosen method (:mod:`.steppers`), rejected and retried smaller
+  while its error estimate exceeds the tolerance.  An accepted step is scanned for events on
+  its dense output and each event is located on the integrator (:mod:`.events`); the jump is
+  applied there (:func:`_impact`, :func:`_rupture`) and the step restarts from that instant.
+* Collapse ``overturning``: after the input the wall moves freely until it falls or can no
+  longer fall (:mod:`.fate`).  ``end-of-record`` and ``first-exceedance`` judge |θ| against α.
+
+Everything here is numbers and arrays; the Python face is :mod:`frp_assess.dynamics.rocking`.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from numba import njit
+
+from frp_assess.dynamics.kernel import events as ev
+from frp_assess.dynamics.kernel.fate import cannot_fall, remaining_peak
+from frp_assess.dynamics.kernel.params import (
+    BAR_NONE,
+    BAR_SHARED,
+    COLLAPSE_END_OF_RECORD,
+    COLLAPSE_FIRST_EXCEEDANCE,
+    COLLAPSE_OVERTURNING,
+    FATE_AT_REST,
+    FATE_EXCEEDED,
+    FATE_FELL,
+    FATE_STANDING,
+    MAX_EVENTS_PER_INTERVAL,
+    MAX_FREE_VIBRATION,
+    METHOD_DOPRI5,
+    MIN_STEP_FRACTION,
+    REST_VELOCITY,
+    RUPTURE_ENERGY_TRANSFER,
+    STATUS_EVENT_OVERFLOW,
+    STATUS_FREE_VIBRATION_UNDECIDED,
+    STATUS_OK,
+    STATUS_STEP_UNDERFLOW,
+    STEP_GROWTH_MAX,
+    STEP_SAFETY,
+    STEP_SHRINK_MIN,
+    KernelParams,
+)
+from frp_assess.dynamics.kernel.steppers import acceleration, step
+
+_NO_EVENT = 0
+_IMPACT = 1
+_RUPTURE = 2
+_LIMIT = 3  #: the collapse level: π/2 (fell) or α (first exceedance)
+#: A step that would leave less than this fraction of itself before the next sample is
+#: stretched to the sample (no slivers).
+_SLIVER = 0.01
+
+
+class Outcome(NamedTuple):
+    """What the kernel returns (units: s, rad, rad/s)."""
+
+    status: int  #: STATUS_*
+    fate: int  #: FATE_*
+    decided_time: float  #: when the fate became certain [s]
+    collapse_time: float  #: when the wall fell / met the rule's limit [s]; NaN otherwise
+    peak: float  #: peak |θ| [rad], the free vibration included
+    peak_with_bar: float  #: peak |θ| while the acting bar was intact [rad]
+    impacts: int
+    ruptures: int
+    final_theta: float  #: [rad]
+    final_omega: float  #: [rad/s]
+    samples: int  #: history samples written
+    steps: int  #: accepted integration steps
+    rejected: int  #: rejected integration steps
+
+
+def history_length(n_input: int, dt: float, collapse_mode: int) -> int:
+    """Samples a history array needs: the input, plus the longest free vibration followed."""
+    if collapse_mode != COLLAPSE_OVERTURNING:
+        return n_input
+    return n_input + int(math.ceil(MAX_FREE_VIBRATION / dt)) + 1
+
+
+@njit(cache=True, nogil=True)
+def _uplift(
+    ua: float, slope: float, x: float, x_end: float, prm: KernelParams
+) -> tuple[float, float]:
+    """From rest at x, the instant in [x, x_end) the wall uplifts, and its side (0: none).
+
+    It starts with s = +1 when ü_g/g < −tan α and (two-sided only) with s = −1 when
+    ü_g/g > tan α; the input is linear, so the instant is exact.
+    """
+    tan_a = prm.sin_a / prm.cos_a
+    ux = ua + slope * x
+    ue = ua + slope * x_end
+    if ux < -tan_a:
+        return x, 1.0
+    if (not prm.one_sided) and ux > tan_a:
+        return x, -1.0
+    if ue < -tan_a:
+        return x + (-tan_a - ux) / slope, 1.0
+    if (not prm.one_sided) and ue > tan_a:
+        return x + (tan_a - ux) / slope, -1.0
+    return x_end, 0.0
+
+
+@njit(cache=True, nogil=True)
+def _impact(omega: float, s: float, prm: KernelParams) -> tuple[float, float, bool]:
+    """Jump at θ = 0: (θ'₊, new s, at rest).  Two-sided: the pivot changes; one-sided: rebound."""
+    if prm.one_sided:
+        omega_new = -prm.e_impact * omega
+        s_new = s
+    else:
+        omega_new = prm.e_impact * omega
+        s_new = -s
+    if abs(omega_new) < REST_VELOCITY * prm.p:
+        return 0.0, s_new, True
+    return omega_new, s_new, False
+
+
+@njit(cache=True, nogil=True)
+def _rupture(
+    omega: float, s: float, intact_pos: bool, intact_neg: bool, prm: KernelParams
+) -> tuple[float, bool, bool]:
+    """Jump at θ_max: (θ'₊, bar for s = +1 intact, bar for s = −1 intact)."""
+    if prm.bar_mode == BAR_SHARED:
+        intact_pos = False
+        intact_neg = False
+    elif s > 0.0:
+        intact_pos = False
+    else:
+        intact_neg = False
+    if prm.rupture_mode == RUPTURE_ENERGY_TRANSFER:  # Eq. 12
+        omega = math.copysign(math.sqrt(omega * omega + 2.0 * prm.rupture_energy), omega)
+    return omega, intact_pos, intact_neg
+
+
+@njit(cache=True, nogil=True)
+def _turning_peak(
+    theta: float,
+    omega: float,
+    a1: float,
+    h: float,
+    u_end: float,
+    u0: float,
+    slope: float,
+    s: float,
+    k_s: float,
+    floor: float,
+    c: tuple[float, float, float, float],
+    r1: float,
+    r2: float,
+    prm: KernelParams,
+) -> float:
+    """Largest s·θ at a turning point inside u ∈ (0, u_end) of a step, or −inf.
+
+    Only a maximum that the dense output puts above ``floor`` is located on the integrator
+    (:func:`.events.turning_point`): the others cannot change a peak.
+    """
+    c0, c1, c2, c3 = c
+    best = -math.inf
+    for r in (r1, r2):
+        is_max = 2.0 * c2 + 6.0 * c3 * r < 0.0
+        if 0.0 < r < u_end and is_max and ev.cubic(c0, c1, c2, c3, r) > floor:
+            best = max(best, ev.turning_point(theta, omega, a1, h, r * h, u0, slope, s, k_s, prm))
+    return best
+
+
+@njit(cache=True, nogil=True)
+def simulate(
+    acc: np.ndarray,
+    dt: float,
+    scale: float,
+    n_tail: int,
+    prm: KernelParams,
+    theta0: float,
+    omega0: float,
+    record_history: bool,
+    hist_theta: np.ndarray,
+    hist_omega: np.ndarray,
+    hist_bar: np.ndarray,
+    rupture_time: np.ndarray,
+    rupture_side: np.ndarray,
+) -> Outcome:
+    """Integrate Eq. 10 under scale·acc (acc [m/s²] every dt [s], then n_tail zero samples).
+
+    hist_* (length :func:`history_length`, if ``record_history``) receive θ [rad], θ' [rad/s]
+    and whether the acting bar is intact and stretched (1.0/0.0) at every sample;
+    rupture_time/rupture_side (length ≥ 2) the first ruptures.
+    """
+    n_rec = acc.shape[0]
+    n_input = n_rec + n_tail
+    n_free_max = int(math.ceil(MAX_FREE_VIBRATION / dt))
+    overturning = prm.collapse_mode == COLLAPSE_OVERTURNING
+    limit = prm.alpha if prm.collapse_mode == COLLAPSE_FIRST_EXCEEDANCE else 0.5 * math.pi
+    inv_g = scale / prm.g
+    adaptive = prm.method == METHOD_DOPRI5
+    h_fixed = dt / max(1, int(math.ceil(dt / prm.fixed_step - 1e-9))) if not adaptive else dt
+
+    theta = theta0
+    omega = omega0
+    resting = theta0 == 0.0 and omega0 == 0.0
+    s = -1.0 if (theta0 < 0.0 or (theta0 == 0.0 and omega0 < 0.0)) else 1.0
+    intact_pos = prm.bar_mode != BAR_NONE
+    intact_neg = prm.bar_mode != BAR_NONE
+
+    peak = abs(theta)
+    peak_bar = abs(theta) if intact_pos else 0.0
+    n_impacts = 0
+    n_ruptures = 0
+    n_steps = 0
+    n_rejected = 0
+    status = STATUS_OK
+    fate = -1
+    decided_time = math.nan
+    collapse_time = math.nan
+    last_alpha_up = math.nan
+    h = h_fixed if not adaptive else min(dt, 0.05 / prm.p)
+    a1 = math.nan
+    need_a = True
+    samples = 1
+    if record_history:
+        hist_theta[0] = theta
+        hist_omega[0] = omega
+        hist_bar[0] = 0.0
+
+    i = 0
+    while fate < 0 and status == STATUS_OK:
+        free = i >= n_input - 1  # zero ground motion from here on
+        if free:
+            if not overturning:
+                break
+            if i - (n_input - 1) >= n_free_max:
+                status = STATUS_FREE_VIBRATION_UNDECIDED
+                break
+            if resting or cannot_fall(theta, omega, s, intact_pos, intact_neg, prm):
+                fate = FATE_AT_REST
+                decided_time = i * dt
+                if not resting:
+                    extra, with_bar = remaining_peak(theta, omega, s, intact_pos, intact_neg, prm)
+                    peak = max(peak, extra)
+                    if with_bar:
+                        peak_bar = max(peak_bar, extra)
+                break
+        t_i = i * dt
+        ua = acc[i] * inv_g if i < n_rec else 0.0
+        ub = acc[i + 1] * inv_g if i + 1 < n_rec else 0.0
+        slope = (ub - ua) / dt  # [g/s]
+        x = 0.0
+        events = 0
+        while x < dt:
+            if resting:
+                x, side = _uplift(ua, slope, x, dt, prm)
+                if side != 0.0:
+                    resting = False
+                    s = side
+                    theta = 0.0
+                    omega = 0.0
+                    need_a = True
+                continue
+
+            bar_on = intact_pos if s > 0.0 else intact_neg
+            k_s = prm.k_bar if bar_on else 0.0
+            u0 = ua + slope * x
+            if need_a:
+                a1 = acceleration(theta, s, u0, k_s, prm)
+                need_a = False
+            rest_of_interval = dt - x
+            hh = h if adaptive else h_fixed
+            if hh >= rest_of_interval * (1.0 - _SLIVER):
+                hh = rest_of_interval
+            th1, om1, a_end, err = step(theta, omega, hh, u0, slope, s, k_s, a1, prm)
+            if adaptive:
+                if not err <= 1.0:  # also NaN
+                    n_rejected += 1
+                    shrink = STEP_SHRINK_MIN
+                    if err < 1e300:
+                        shrink = max(STEP_SHRINK_MIN, STEP_SAFETY * err**-0.2)
+                    h = hh * shrink
+                    if h < MIN_STEP_FRACTION * dt:
+                        status = STATUS_STEP_UNDERFLOW
+                        break
+                    continue
+                grow = STEP_GROWTH_MAX
+                if err > 0.0:
+                    grow = min(STEP_GROWTH_MAX, max(STEP_SHRINK_MIN, STEP_SAFETY * err**-0.2))
+                h = hh * grow if hh < h else max(h, hh * grow)
+            n_steps += 1
+
+            # dense output of y = s·θ on the step, u ∈ [0, 1]
+            c = ev.hermite(s * theta, s * th1, s * omega * hh, s * om1 * hh)
+            c0, c1, c2, c3 = c
+            r1, r2 = ev.critical_points(c1, c2, c3)
+            y0 = s * theta
+            y1 = s * th1
+            ymin = min(y0, y1)
+            ymax = max(y0, y1)
+            if r1 > 0.0:
+                yr = ev.cubic(c0, c1, c2, c3, r1)
+                ymin = min(ymin, yr)
+                ymax = max(ymax, yr)
+            if r2 > 0.0:
+                yr = ev.cubic(c0, c1, c2, c3, r2)
+                ymin = min(ymin, yr)
+                ymax = max(ymax, yr)
+
+            event = _NO_EVENT
+            u_event = 2.0
+            level = 0.0
+            if ymin <= 0.0:
+                u = ev.first_crossing(c0, c1, c2, c3, r1, r2, 0.0, False)
+                if u >= 0.0:
+                    event, u_event, level = _IMPACT, u, 0.0
+            if bar_on and ymax >= prm.theta_max:
+                u = ev.first_crossing(c0, c1, c2, c3, r1, r2, prm.theta_max, True)
+                if 0.0 <= u < u_event:
+                    event, u_event, level = _RUPTURE, u, prm.theta_max
+            if ymax >= limit:
+                u = ev.first_crossing(c0, c1, c2, c3, r1, r2, limit, True)
+                if 0.0 <= u < u_event:
+                    event, u_event, level = _LIMIT, u, limit
+
+            if event == _NO_EVENT:
+                floor = peak_bar if bar_on else peak
+                step_max = max(
+                    y0,
+                    y1,
+                    _turning_peak(
+                        theta, omega, a1, hh, 1.0, u0, slope, s, k_s, floor, c, r1, r2, prm
+                    ),
+                )
+                peak = max(peak, step_max)
+                if bar_on:
+                    peak_bar = max(peak_bar, step_max)
+                if y0 < prm.alpha <= y1:
+                    last_alpha_up = t_i + x + hh * (prm.alpha - y0) / (y1 - y0)
+                if y1 < 0.0:
+                    # s·θ left its regime without a located crossing: only possible at
+                    # round-off level right after an uplift; the wall is at rest.
+                    theta = 0.0
+                    omega = 0.0
+                    resting = True
+                else:
+                    theta = th1
+                    omega = om1
+                    a1 = a_end
+                    need_a = not adaptive
+                x = x + hh
+                if free and cannot_fall(theta, omega, s, intact_pos, intact_neg, prm):
+                    fate = FATE_AT_REST
+                    decided_time = t_i + min(x, dt)
+                    extra, with_bar = remaining_peak(theta, omega, s, intact_pos, intact_neg, prm)
+                    peak = max(peak, extra)
+                    if with_bar:
+                        peak_bar = max(peak_bar, extra)
+                    break
+                continue
+
+            # --- an event inside the step: locate it on the integrator, jump, restart ---------
+            events += 1
+            if events > MAX_EVENTS_PER_INTERVAL:
+                status = STATUS_EVENT_OVERFLOW
+                break
+            floor = peak_bar if bar_on else peak
+            step_max = max(
+                y0,
+                level,
+                _turning_peak(
+                    theta, omega, a1, hh, u_event, u0, slope, s, k_s, floor, c, r1, r2, prm
+                ),
+            )
+            peak = max(peak, step_max)
+            if bar_on:
+                peak_bar = max(peak_bar, step_max)
+            tau, om_e, _resid = ev.locate_level(
+                theta, omega, a1, hh, u_event * hh, u0, slope, s, k_s, level, prm
+            )
+            if y0 < prm.alpha <= level:
+                last_alpha_up = t_i + x + tau * (prm.alpha - y0) / (level - y0)
+            x = x + tau
+            t_event = t_i + x
+            theta = s * level
+            omega = om_e
+            need_a = True
+            if event == _IMPACT:
+                n_impacts += 1
+                theta = 0.0
+                omega, s, resting = _impact(om_e, s, prm)
+            elif event == _RUPTURE:
+                if n_ruptures < rupture_time.shape[0]:
+                    rupture_time[n_ruptures] = t_event
+                    rupture_side[n_ruptures] = int(s)
+                n_ruptures += 1
+                omega, intact_pos, intact_neg = _rupture(om_e, s, intact_pos, intact_neg, prm)
+            else:
+                fate = FATE_FELL if level >= 0.5 * math.pi else FATE_EXCEEDED
+                collapse_time = t_event
+                decided_time = t_event
+                break
+            if free and (resting or cannot_fall(theta, omega, s, intact_pos, intact_neg, prm)):
+                fate = FATE_AT_REST
+                decided_time = t_event
+                if not resting:
+                    extra, with_bar = remaining_peak(theta, omega, s, intact_pos, intact_neg, prm)
+                    peak = max(peak, extra)
+                    if with_bar:
+                        peak_bar = max(peak_bar, extra)
+                break
+        if status != STATUS_OK or fate >= 0:
+            break
+        if record_history and i + 1 < hist_theta.shape[0]:
+            hist_theta[i + 1] = theta
+            hist_omega[i + 1] = omega
+            on = intact_pos if s > 0.0 else intact_neg
+            hist_bar[i + 1] = 1.0 if on and not resting else 0.0
+            samples = i + 2
+        i += 1
+
+    if fate < 0 and status == STATUS_OK:
+        decided_time = (n_input - 1) * dt
+        if prm.collapse_mode == COLLAPSE_END_OF_RECORD and abs(theta) >= prm.alpha:
+            fate = FATE_EXCEEDED
+            collapse_time = last_alpha_up
+        else:
+            fate = FATE_STANDING
+    return Outcome(
+        status,
+        fate,
+        decided_time,
+        collapse_time,
+        peak,
+        peak_bar,
+        n_impacts,
+        n_ruptures,
+        theta,
+        omega,
+        samples,
+        n_steps,
+        n_rejected,
+    )
