@@ -64,6 +64,8 @@ class ModelOptions:
         tolerance: local error tolerance of the Dormand–Prince 5(4) pair [-].
         fixed_step: if set, classical RK4 at this largest fixed step [s] instead of the
             error-controlled pair (the independent reference of the tests and benchmarks).
+        method: the embedded pair, ``"dopri5"`` (Dormand–Prince 5(4), default) or ``"bs3"``
+            (Bogacki–Shampine 3(2); kept for the benchmark that chose the default).
     """
 
     restitution: Restitution = "energy"
@@ -72,6 +74,7 @@ class ModelOptions:
     free_vibration_tail: float = 0.0
     tolerance: float = DEFAULT_TOLERANCE
     fixed_step: float | None = None
+    method: Literal["dopri5", "bs3"] = "dopri5"
 
     def __post_init__(self) -> None:
         if self.rupture not in RUPTURE_RULES:
@@ -211,7 +214,9 @@ class RockingModel:
                 "end-of-record": kp.COLLAPSE_END_OF_RECORD,
                 "first-exceedance": kp.COLLAPSE_FIRST_EXCEEDANCE,
             }[o.collapse],
-            method=kp.METHOD_DOPRI5 if o.fixed_step is None else kp.METHOD_RK4,
+            method=kp.METHOD_RK4
+            if o.fixed_step is not None
+            else (kp.METHOD_DOPRI5 if o.method == "dopri5" else kp.METHOD_BS3),
             tolerance=o.tolerance,
             fixed_step=math.inf if o.fixed_step is None else o.fixed_step,
         )

@@ -23,6 +23,7 @@ COLLAPSE_FIRST_EXCEEDANCE = 2  #: |θ| reaches α at any time
 
 METHOD_DOPRI5 = 0  #: Dormand–Prince 5(4) with local error control (the default)
 METHOD_RK4 = 1  #: classical RK4 at a fixed step (the independent reference)
+METHOD_BS3 = 2  #: Bogacki–Shampine 3(2) with local error control
 
 FATE_FELL = 0  #: |θ| reached π/2
 FATE_AT_REST = 1  #: `overturning`: the wall can no longer fall

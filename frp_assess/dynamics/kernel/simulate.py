@@ -39,6 +39,7 @@ from frp_assess.dynamics.kernel.params import (
     MAX_EVENTS_PER_INTERVAL,
     MAX_FREE_VIBRATION,
     METHOD_DOPRI5,
+    METHOD_RK4,
     MIN_STEP_FRACTION,
     REST_VELOCITY,
     RUPTURE_ENERGY_TRANSFER,
@@ -58,7 +59,7 @@ _IMPACT = 1
 _RUPTURE = 2
 _LIMIT = 3  #: the collapse level: π/2 (fell) or α (first exceedance)
 #: A step that would leave less than this fraction of itself before the next sample is
-#: stretched to the sample (no slivers).
+#: stretched to the sample; shorter steps divide the rest of the interval equally.
 _SLIVER = 0.01
 
 
@@ -200,7 +201,9 @@ def simulate(
     overturning = prm.collapse_mode == COLLAPSE_OVERTURNING
     limit = prm.alpha if prm.collapse_mode == COLLAPSE_FIRST_EXCEEDANCE else 0.5 * math.pi
     inv_g = scale / prm.g
-    adaptive = prm.method == METHOD_DOPRI5
+    adaptive = prm.method != METHOD_RK4
+    # step-size exponent: 1/(q + 1), q the order of the embedded error estimate
+    exponent = -1.0 / 5.0 if prm.method == METHOD_DOPRI5 else -1.0 / 3.0
     h_fixed = dt / max(1, int(math.ceil(dt / prm.fixed_step - 1e-9))) if not adaptive else dt
 
     theta = theta0
@@ -275,13 +278,16 @@ def simulate(
             hh = h if adaptive else h_fixed
             if hh >= rest_of_interval * (1.0 - _SLIVER):
                 hh = rest_of_interval
+            elif adaptive:
+                # equal steps to the next sample: no sliver left before it
+                hh = rest_of_interval / math.ceil(rest_of_interval / hh)
             th1, om1, a_end, err = step(theta, omega, hh, u0, slope, s, k_s, a1, prm)
             if adaptive:
                 if not err <= 1.0:  # also NaN
                     n_rejected += 1
                     shrink = STEP_SHRINK_MIN
                     if err < 1e300:
-                        shrink = max(STEP_SHRINK_MIN, STEP_SAFETY * err**-0.2)
+                        shrink = max(STEP_SHRINK_MIN, STEP_SAFETY * err**exponent)
                     h = hh * shrink
                     if h < MIN_STEP_FRACTION * dt:
                         status = STATUS_STEP_UNDERFLOW
@@ -289,8 +295,8 @@ def simulate(
                     continue
                 grow = STEP_GROWTH_MAX
                 if err > 0.0:
-                    grow = min(STEP_GROWTH_MAX, max(STEP_SHRINK_MIN, STEP_SAFETY * err**-0.2))
-                h = hh * grow if hh < h else max(h, hh * grow)
+                    grow = min(STEP_GROWTH_MAX, max(STEP_SHRINK_MIN, STEP_SAFETY * err**exponent))
+                h = hh * grow
             n_steps += 1
 
             # dense output of y = s·θ on the step, u ∈ [0, 1]

@@ -11,7 +11,7 @@ import math
 
 from numba import njit
 
-from frp_assess.dynamics.kernel.params import METHOD_DOPRI5, KernelParams
+from frp_assess.dynamics.kernel.params import METHOD_BS3, METHOD_DOPRI5, KernelParams
 
 
 @njit(cache=True, nogil=True)
@@ -23,6 +23,28 @@ def acceleration(theta: float, s: float, u: float, k_s: float, prm: KernelParams
     ct = math.cos(theta)
     # sin(α s − θ) = s sinα cosθ − cosα sinθ ;  cos(α s − θ) = cosα cosθ + s sinα sinθ
     return -prm.p2 * (s * sin_a * ct - cos_a * st + u * (cos_a * ct + s * sin_a * st) + k_s * st)
+
+
+#: The error norm measures θ against ERROR_FLOOR·α + |θ| and θ' against ERROR_FLOOR·p·α + |θ'|:
+#: relative down to rocking a thousand times smaller than α, so small-amplitude rocking between
+#: impacts is resolved too (with the floor at α it was not: docs/model.md §4).
+ERROR_FLOOR = 1e-3
+
+
+@njit(cache=True, nogil=True)
+def error_norm(
+    theta: float,
+    omega: float,
+    theta1: float,
+    omega1: float,
+    err_t: float,
+    err_w: float,
+    prm: KernelParams,
+) -> float:
+    """Local error of a step in units of the tolerance (≤ 1 accepts the step)."""
+    scale_t = prm.tolerance * (ERROR_FLOOR * prm.alpha + max(abs(theta), abs(theta1)))
+    scale_w = prm.tolerance * (ERROR_FLOOR * prm.p * prm.alpha + max(abs(omega), abs(omega1)))
+    return max(abs(err_t) / scale_t, abs(err_w) / scale_w)
 
 
 # Dormand & Prince (1980), "A family of embedded Runge-Kutta formulae", J. Comp. Appl. Math.
@@ -56,8 +78,8 @@ def dopri5(
 
     Returns (θ, θ', θ'' at the end, error norm): the 5th-order solution (local
     extrapolation), the end acceleration (the first stage of the next step, FSAL), and the
-    estimated local error of the embedded 4th-order solution in units of the tolerance,
-    max(|e_θ| / (tol·(α + |θ|)), |e_θ'| / (tol·(p·α + |θ'|))): ≤ 1 accepts the step.
+    estimated local error of the embedded 4th-order solution in units of the tolerance
+    (:func:`error_norm`).
     """
     w1 = omega
     t2 = theta + h * _A21 * w1
@@ -81,10 +103,41 @@ def dopri5(
     w7 = omega1
     err_t = h * (_E1 * w1 + _E3 * w3 + _E4 * w4 + _E5 * w5 + _E6 * w6 + _E7 * w7)
     err_w = h * (_E1 * a1 + _E3 * a3 + _E4 * a4 + _E5 * a5 + _E6 * a6 + _E7 * a7)
-    scale_t = prm.tolerance * (1e-3 * prm.alpha + max(abs(theta), abs(theta1)))
-    scale_w = prm.tolerance * (1e-3 * prm.p * prm.alpha + max(abs(omega), abs(omega1)))
-    err = max(abs(err_t) / scale_t, abs(err_w) / scale_w)
-    return theta1, omega1, a7, err
+    return theta1, omega1, a7, error_norm(theta, omega, theta1, omega1, err_t, err_w, prm)
+
+
+# Bogacki & Shampine (1989), "A 3(2) pair of Runge-Kutta formulas", Appl. Math. Lett.
+# 2(4):321-325 (FSAL; the 3rd-order solution is kept).
+_BS_E1, _BS_E2, _BS_E3, _BS_E4 = -5.0 / 72.0, 1.0 / 12.0, 1.0 / 9.0, -1.0 / 8.0
+
+
+@njit(cache=True, nogil=True)
+def bs3(
+    theta: float,
+    omega: float,
+    h: float,
+    u0: float,
+    slope: float,
+    s: float,
+    k_s: float,
+    a1: float,
+    prm: KernelParams,
+) -> tuple[float, float, float, float]:
+    """One Bogacki–Shampine 3(2) step (same signature and returns as :func:`dopri5`)."""
+    w1 = omega
+    t2 = theta + 0.5 * h * w1
+    w2 = omega + 0.5 * h * a1
+    a2 = acceleration(t2, s, u0 + slope * 0.5 * h, k_s, prm)
+    t3 = theta + 0.75 * h * w2
+    w3 = omega + 0.75 * h * a2
+    a3 = acceleration(t3, s, u0 + slope * 0.75 * h, k_s, prm)
+    theta1 = theta + h * (2.0 / 9.0 * w1 + 1.0 / 3.0 * w2 + 4.0 / 9.0 * w3)
+    omega1 = omega + h * (2.0 / 9.0 * a1 + 1.0 / 3.0 * a2 + 4.0 / 9.0 * a3)
+    a4 = acceleration(theta1, s, u0 + slope * h, k_s, prm)
+    w4 = omega1
+    err_t = h * (_BS_E1 * w1 + _BS_E2 * w2 + _BS_E3 * w3 + _BS_E4 * w4)
+    err_w = h * (_BS_E1 * a1 + _BS_E2 * a2 + _BS_E3 * a3 + _BS_E4 * a4)
+    return theta1, omega1, a4, error_norm(theta, omega, theta1, omega1, err_t, err_w, prm)
 
 
 @njit(cache=True, nogil=True)
@@ -127,4 +180,6 @@ def step(
     """One step of the method chosen in ``prm`` (see :func:`dopri5` for the returns)."""
     if prm.method == METHOD_DOPRI5:
         return dopri5(theta, omega, h, u0, slope, s, k_s, a1, prm)
+    if prm.method == METHOD_BS3:
+        return bs3(theta, omega, h, u0, slope, s, k_s, a1, prm)
     return rk4(theta, omega, h, u0, slope, s, k_s, a1, prm)
