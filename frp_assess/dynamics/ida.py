@@ -1,4 +1,4 @@
-"""Incremental dynamic analysis of one wall under one record (MODEL.md §5; paper Eqs. 15–16)."""
+"""Incremental dynamic analysis of one wall under one record (docs/model.md §5; paper Eqs. 15–16)."""
 
 from __future__ import annotations
 
@@ -15,7 +15,7 @@ from frp_assess.errors import Cancelled
 
 @dataclass(frozen=True)
 class IdaSettings:
-    """Search rule of MODEL.md §5.
+    """Search rule of docs/model.md §5.
 
     Attributes:
         step_ratio: s, the hunt tries C₀·s^k, k = 0, 1, 2, …

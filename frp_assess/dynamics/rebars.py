@@ -1,4 +1,4 @@
-"""Unbonded vertical FRP rebars restraining the rocking wall (MODEL.md §2; paper Eqs. 6–11)."""
+"""Unbonded vertical FRP rebars restraining the rocking wall (docs/model.md §2; paper Eqs. 6–11)."""
 
 from __future__ import annotations
 

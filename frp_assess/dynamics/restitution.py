@@ -1,4 +1,4 @@
-"""Energy loss at impacts (MODEL.md §3; paper Eqs. 13–14)."""
+"""Energy loss at impacts (docs/model.md §3; paper Eqs. 13–14)."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""The rigid rocking wall (MODEL.md §1; paper Eqs. 2–5).
+"""The rigid rocking wall (docs/model.md §1; paper Eqs. 2–5).
 
 Everything is per metre of wall length and in SI units (m, kg, N, s, rad).
 """

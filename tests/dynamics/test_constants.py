@@ -1,4 +1,4 @@
-"""Wall and rebar constants of MODEL.md §1–2 and the paper's Eqs. 6–11, 13–14, by hand."""
+"""Wall and rebar constants of docs/model.md §1–2 and the paper's Eqs. 6–11, 13–14, by hand."""
 
 from __future__ import annotations
 
@@ -57,12 +57,12 @@ def test_bar_that_cannot_break():
 
 
 def test_restitution_values_at_7_5_degrees():
-    """MODEL.md §3: at α = 7.5°, √r = 0.974 (two-sided) and 0.450 (one-sided)."""
+    """docs/model.md §3: at α = 7.5°, √r = 0.974 (two-sided) and 0.450 (one-sided)."""
     a = math.radians(7.5)
     assert velocity_ratio("energy", "two-sided", a) == pytest.approx(0.974, abs=5e-4)
     assert velocity_ratio("energy", "one-sided", a) == pytest.approx(
         0.450, abs=1e-3
-    )  # 0.45050: MODEL.md truncates
+    )  # 0.45050: docs/model.md truncates
     assert velocity_ratio("velocity", "two-sided", a) == pytest.approx(housner_two_sided(a))
     assert velocity_ratio("velocity", "one-sided", a) == pytest.approx(one_sided(a))
     assert velocity_ratio(0.8, "one-sided", a) == 0.8

@@ -48,7 +48,7 @@ def test_bisection_brackets_the_threshold():
 
 
 def test_survivor_is_the_largest_multiplier_run_without_collapse():
-    """MODEL.md §5: the bisection ends with C_lo (survives) and C_hi (first collapse),
+    """docs/model.md §5: the bisection ends with C_lo (survives) and C_hi (first collapse),
     (C_hi - C_lo) <= tol·C_hi; C_lo is what "just below collapse" shows, so it must be a
     multiplier actually run and found standing, not C_hi·(1 - tol), which can fall."""
     c0 = Wall(thickness=0.4, height=3.0, unit_weight=18e3).a_rm / 2.0

@@ -1,4 +1,4 @@
-"""A slow, obviously-correct solution of MODEL.md §3, independent of the compiled kernel.
+"""A slow, obviously-correct solution of docs/model.md §3, independent of the compiled kernel.
 
 scipy's DOP853 (8th order, rtol 1e-11) integrates Eq. 10 one sample interval at a time
 (where ü_g is linear, hence smooth), with scipy's own event location for impacts, ruptures

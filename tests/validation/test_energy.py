@@ -1,7 +1,7 @@
 """Energy balance of the restrained rocking wall and the rupture jump.
 
 Sources: the paper, Eqs. 4–6 (potential energy of block and bar) and Eq. 12 (energy handed
-over at rupture); MODEL.md §3.  Per unit I0, between impacts and without ground motion,
+over at rupture); docs/model.md §3.  Per unit I0, between impacts and without ground motion,
     E = θ'²/2 + p²·cos(α − |θ|) + p²·K·(1 − cos θ)
 is conserved.  With rupture `energy-transfer` (Eq. 12) ½θ'₊² = ½θ'₋² + U_r(θ_max)/I0, so the
 unreinforced energy after the rupture equals the total energy before it; with

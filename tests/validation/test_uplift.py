@@ -1,7 +1,7 @@
 """Uplift from rest: a rigid block starts rocking when the ground acceleration exceeds g·tan α.
 
 Source: Housner, G.W. (1963) "The behavior of inverted pendulum structures during
-earthquakes", BSSA 53(2) — the static overturning condition ü_g > g·B/H; MODEL.md §3 (uplift).
+earthquakes", BSSA 53(2) — the static overturning condition ü_g > g·B/H; docs/model.md §3 (uplift).
 """
 
 from __future__ import annotations
@@ -36,7 +36,7 @@ def test_no_motion_just_below_threshold(mechanism, rebars):
 @pytest.mark.parametrize("mechanism", ["one-sided", "two-sided"])
 @pytest.mark.parametrize("rebars", [None, Rebars(150e9, 0.013, "external", 2.0)])
 def test_motion_just_above_threshold(mechanism, rebars):
-    """Bars are unstressed at rest, so they do not change a_RM (MODEL.md §3)."""
+    """Bars are unstressed at rest, so they do not change a_RM (docs/model.md §3)."""
     model = RockingModel(WALL, mechanism, rebars)
     res = model.run(pulse(-1.01 * WALL.a_rm_g), 0.001, history=True)
     assert res.max_rotation > 0.0
