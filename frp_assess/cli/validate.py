@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import argparse
+import sys
 
 from frp_assess.config import LoadedProject, load_project
 from frp_assess.config.library import MASONRY
+from frp_assess.config.problems import problems_of
 from frp_assess.config.schema import (
     Ec8Spectrum,
     Ntc2018Spectrum,
@@ -13,6 +15,7 @@ from frp_assess.config.schema import (
     Project,
     TableSpectrum,
 )
+from frp_assess.errors import InputError
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -83,7 +86,17 @@ def summary(loaded: LoadedProject) -> list[str]:
     return lines
 
 
+def print_problems(error: InputError) -> None:
+    """Every problem of ``error`` on stderr, one line each, as the CLI prints an error."""
+    for problem in problems_of(error):
+        print(f"frp-assess: error: {problem}", file=sys.stderr)
+
+
 def run(args: argparse.Namespace) -> int:
-    loaded = load_project(args.file)  # InputError -> one line, exit 2
+    try:
+        loaded = load_project(args.file)
+    except InputError as exc:
+        print_problems(exc)
+        return 2
     print("\n".join(summary(loaded)))
     return 0

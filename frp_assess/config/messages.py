@@ -10,16 +10,17 @@ from __future__ import annotations
 
 import types
 import typing
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, Literal, Union, get_args, get_origin
 
 import annotated_types as at
-from pydantic import BaseModel
+from pydantic import BaseModel, ValidationError
 from pydantic.fields import FieldInfo
 from pydantic_core import ErrorDetails
 
 from frp_assess.config.library import did_you_mean
+from frp_assess.errors import InputError
 
 Loc = tuple[str | int, ...]
 
@@ -250,3 +251,52 @@ def _tag_names(located: Located) -> str:
     if not _is_union(bare):
         return "?"
     return ", ".join(str(_tag_of(m)) for m in get_args(bare) if _tag_of(m))
+
+
+def _line_of(lines: Mapping[Loc, int], path: Loc) -> int | None:
+    for n in range(len(path), 0, -1):
+        if path[:n] in lines:
+            return lines[path[:n]]
+    return None
+
+
+def schema_problems(
+    root: type[BaseModel],
+    exc: ValidationError,
+    *,
+    file: str,
+    lines: Mapping[Loc, int] | None,
+) -> list[InputError]:
+    """Every problem of a validation error as a one-line InputError.
+
+    A "missing" key that an unknown key of the same mapping is a misspelling of (``hieght``
+    for ``height``) is not repeated.  With ``lines`` (key path -> line) the problems are in
+    file order, a missing key at the line of its mapping; without, unknown keys first.
+    """
+    errors = exc.errors(include_url=False)
+    described = [(err["type"], *describe(root, err)) for err in errors]
+    unknown = [
+        (path[:-1], str(path[-1]))
+        for kind, path, _ in described
+        if kind == "extra_forbidden" and path
+    ]
+    out: list[tuple[int, int, InputError]] = []
+    seen: set[tuple[Loc, str]] = set()
+    for index, (kind, path, message) in enumerate(described):
+        if kind == "missing":
+            wanted = str(errors[index]["loc"][-1])
+            if any(parent == path and did_you_mean(key, [wanted]) for parent, key in unknown):
+                continue
+        if (path, message) in seen:
+            continue
+        seen.add((path, message))
+        line = None
+        if lines is not None:
+            line = _line_of(lines, path) or 1  # a missing top-level key: the file's start
+        rank = 0 if kind == "extra_forbidden" else 1
+        order = line if line is not None else rank
+        out.append(
+            (order, index, InputError(message, file=file, line=line, key=format_path(path) or None))
+        )
+    out.sort(key=lambda item: (item[0], item[1]))
+    return [problem for _, _, problem in out]
