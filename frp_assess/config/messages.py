@@ -155,7 +155,7 @@ def found(value: Any) -> str:
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, int | float):
-        return f"{value:g}" if isinstance(value, float) else str(value)
+        return f"{value:.12g}" if isinstance(value, float) else str(value)
     if isinstance(value, dict):
         return "a mapping"
     if isinstance(value, list | tuple):
@@ -164,12 +164,12 @@ def found(value: Any) -> str:
 
 
 def _range_text(b: dict[str, float]) -> str:
-    lo = f"({b['gt']:g}" if "gt" in b else f"[{b['ge']:g}" if "ge" in b else None
-    hi = f"{b['lt']:g})" if "lt" in b else f"{b['le']:g}]" if "le" in b else None
+    lo = f"({b['gt']:.12g}" if "gt" in b else f"[{b['ge']:.12g}" if "ge" in b else None
+    hi = f"{b['lt']:.12g})" if "lt" in b else f"{b['le']:.12g}]" if "le" in b else None
     if lo and hi:
         return f"a number in {lo}, {hi}"
     parts = [
-        f"{op} {b[k]:g}"
+        f"{op} {b[k]:.12g}"
         for k, op in (("gt", ">"), ("ge", ">="), ("lt", "<"), ("le", "<="))
         if k in b
     ]
@@ -224,7 +224,17 @@ def describe(root: type[BaseModel], err: ErrorDetails) -> tuple[Loc, str]:
             path,
             f"missing key {ctx.get('discriminator', 'type')} (the kind: {_tag_names(located)})",
         )
-    if kind in ("float_type", "float_parsing", "finite_number"):
+    if kind == "finite_number":
+        return path, (
+            f"expected a finite number, found {what} (1e400 and .inf are infinite, .nan is not "
+            "a number)"
+        )
+    if kind in ("string_too_long", "string_too_short"):
+        n = ctx.get("max_length") if kind == "string_too_long" else ctx.get("min_length")
+        word = "at most" if kind == "string_too_long" else "at least"
+        length = len(value) if isinstance(value, str) else "?"
+        return path, f"expected text of {word} {n} characters, found {length}"
+    if kind in ("float_type", "float_parsing"):
         return path, f"expected a number, found {what}"
     if kind in ("int_type", "int_parsing", "int_from_float"):
         return path, f"expected a whole number, found {what}"
