@@ -274,7 +274,7 @@ def schema_problems(
     root: type[BaseModel],
     exc: ValidationError,
     *,
-    file: str,
+    file: str | None,
     lines: Mapping[Loc, int] | None,
 ) -> list[InputError]:
     """Every problem of a validation error as a one-line InputError.
