@@ -10,6 +10,7 @@ exactly one record source) raise :class:`~pydantic_core.PydanticCustomError` who
 from __future__ import annotations
 
 import datetime as _dt
+from pathlib import PurePath
 from typing import Annotated, Any, Literal, get_args
 
 from pydantic import (
@@ -79,6 +80,33 @@ MAX_TABLE_POINTS = 1000  #: points of a spectrum table
 #: longest free texts [characters]
 MAX_NAME_CHARS = 200
 MAX_NOTES_CHARS = 5000
+
+
+#: longest record name [characters] (it names the exported ``records/<name>.AT2``)
+MAX_RECORD_NAME = 100
+#: characters a record name may not contain: path separators and what Windows refuses
+_UNSAFE_NAME_CHARS = '/\\:*?"<>|'
+
+
+def unsafe_name_reason(name: str) -> str | None:
+    """Why ``name`` is not safe as a file name (``records/<name>.AT2``), or None if it is.
+
+    Refused: empty, longer than :data:`MAX_RECORD_NAME`, a path separator or one of
+    ``: * ? " < > |``, a control character, a leading dot or blank (``..``, hidden files),
+    a trailing dot or blank.
+    """
+    if not name.strip():
+        return "it is empty"
+    if len(name) > MAX_RECORD_NAME:
+        return f"it has {len(name)} characters, more than {MAX_RECORD_NAME}"
+    bad = sorted({c for c in name if c in _UNSAFE_NAME_CHARS})
+    if bad:
+        return f'it contains {" ".join(bad)} (names may not contain / \\ : * ? " < > |)'
+    if any(ord(c) < 32 or 0x7F <= ord(c) <= 0x9F for c in name):
+        return "it contains control characters"
+    if name[0] in ". " or name[-1] in ". ":
+        return "it starts or ends with a dot or a blank"
+    return None
 
 
 def format_ratio(ratio: float) -> str:
@@ -293,7 +321,27 @@ class RecordFile(_Model):
         le=0.05,
         description=f"Time step [s], {MIN_TIME_STEP:g}-0.05, required for one-column files.",
     )
-    name: str | None = Field(None, description="Name in the results (default: file name).")
+    name: str | None = Field(
+        None,
+        description="Name in the results and of the exported records/<name>.AT2 (default: the "
+        f"file name without extension); unique, at most {MAX_RECORD_NAME} characters, no path "
+        "separators, not starting with a dot.",
+    )
+
+    @property
+    def record_name(self) -> str:
+        """The record's name: ``name``, else the file name without its extension."""
+        return self.name if self.name is not None else PurePath(self.path).stem
+
+    @field_validator("name")
+    @classmethod
+    def _safe_name(cls, value: str | None) -> str | None:
+        if value is not None and (reason := unsafe_name_reason(value)) is not None:
+            raise located_error(
+                f"record name {value!r} is not a safe file name: {reason}; the results export "
+                "it as records/<name>.AT2"
+            )
+        return value
 
     @model_validator(mode="after")
     def _dt_for_one_column(self) -> RecordFile:
@@ -321,6 +369,30 @@ class RecordsSpec(_Model):
             raise located_error("give either 'artificial' or 'files', not both", "files")
         if self.artificial is None and self.files is None:
             raise located_error("give either 'artificial' or 'files'; neither was found")
+        return self
+
+    @model_validator(mode="after")
+    def _unique_names(self) -> RecordsSpec:
+        first: dict[str, int] = {}
+        for i, f in enumerate(self.files or []):
+            name = f.record_name
+            key = "name" if f.name is not None else "path"
+            if f.name is None and (reason := unsafe_name_reason(name)) is not None:
+                raise located_error(
+                    f"the file name {name!r} is not a safe record name: {reason}; give a 'name:'",
+                    "files",
+                    i,
+                    key,
+                )
+            j = first.setdefault(name.casefold(), i)
+            if j != i:
+                raise located_error(
+                    f"record name {name!r} is already the name of files[{j}]; each record needs "
+                    "its own name (give a 'name:')",
+                    "files",
+                    i,
+                    key,
+                )
         return self
 
 
