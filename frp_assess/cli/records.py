@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import sys
 from pathlib import Path
 
 from rich.console import Console
@@ -19,6 +20,7 @@ from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_write_text
 from frp_assess.motions.compliance import DEFAULT_T1, ComplianceReport, check_compliance
 from frp_assess.motions.envelopes import ENVELOPES
+from frp_assess.motions.plausibility import plausibility_warnings
 from frp_assess.motions.readers import FORMATS, UNITS, read_record
 from frp_assess.motions.record import Record
 from frp_assess.motions.simqke import generate_artificial
@@ -155,6 +157,8 @@ def run_check(args: argparse.Namespace) -> int:
     records: list[Record] = [
         read_record(f, format=args.format, units=args.units, dt=args.dt) for f in args.files
     ]
+    for warning in plausibility_warnings(records):
+        print(f"frp-assess: warning: {warning}", file=sys.stderr)
     report = check_compliance(records, spectrum, t1=args.t1, recorded=args.recorded)
     print_report(report, spectrum, Console())
     return 0 if report.passed else 1
