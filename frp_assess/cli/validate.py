@@ -138,8 +138,11 @@ def study_summary(study: StudyFile, file: str) -> list[str]:
     ]
 
 
-def validate_file(path: Path) -> list[str]:
-    """Validate a project or a study file (told apart by their keys); the summary lines.
+def validate_file(path: Path) -> tuple[list[str], tuple[str, ...]]:
+    """Validate a project or a study file (told apart by their keys).
+
+    Returns:
+        the summary lines and the warnings (one line each, e.g. placeholders left unchanged).
 
     Raises:
         InputError: every problem (:class:`~frp_assess.config.problems.InputErrors`).
@@ -150,8 +153,9 @@ def validate_file(path: Path) -> list[str]:
     if looks_like_study(data):
         study = parse_study(data, file=name, lines=lines)
         raise_all(study_problems(study, name, lines))
-        return study_summary(study, name)
-    return summary(load_project_text(text, name, base_dir=path.parent))
+        return study_summary(study, name), ()
+    loaded = load_project_text(text, name, base_dir=path.parent)
+    return summary(loaded), loaded.warnings
 
 
 def print_problems(error: InputError) -> None:
@@ -162,9 +166,11 @@ def print_problems(error: InputError) -> None:
 
 def run(args: argparse.Namespace) -> int:
     try:
-        lines = validate_file(Path(args.file))
+        lines, warnings = validate_file(Path(args.file))
     except InputError as exc:
         print_problems(exc)
         return 2
+    for warning in warnings:
+        print(f"frp-assess: warning: {warning}", file=sys.stderr)
     print("\n".join(lines))
     return 0

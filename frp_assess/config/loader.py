@@ -9,6 +9,7 @@ is :mod:`frp_assess.config.yaml_source`.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -33,12 +34,15 @@ class LoadedProject:
         path: the project file (or the name given to :func:`load_project_text`).
         base_dir: directory that relative record paths are resolved against.
         lines: 1-based line of each key path of the YAML data.
+        warnings: one line each (``file:line: key: message``) for what is valid but probably
+            not meant, such as the template's placeholders left unchanged.
     """
 
     project: Project
     path: Path
     base_dir: Path
     lines: dict[Loc, int] = field(default_factory=dict, compare=False, repr=False)
+    warnings: tuple[str, ...] = field(default=(), compare=False)
 
     def line_of(self, *path: str | int) -> int | None:
         """Line of a key path (``"wall", "height"``), or of its nearest present ancestor."""
@@ -116,7 +120,44 @@ def load_project_text(
     base = Path(base_dir) if base_dir is not None else Path(name).parent
     if check_files:
         check_record_files(project, base, name, lines)
-    return LoadedProject(project=project, path=Path(name), base_dir=base, lines=lines)
+    return LoadedProject(
+        project=project,
+        path=Path(name),
+        base_dir=base,
+        lines=lines,
+        warnings=placeholder_warnings(project, name, lines),
+    )
+
+
+#: a template placeholder: the whole text in angle brackets, e.g. ``<site address>``
+PLACEHOLDER_RE = re.compile(r"^\s*<[^<>]*>\s*$")
+
+
+def placeholder_warnings(project: Project, file: str, lines: Mapping[Loc, int]) -> tuple[str, ...]:
+    """One line if identification fields still hold a template placeholder (``<...>``).
+
+    The template (``frp-assess new``) fills ``project.location``, ``engineer`` and ``notes``
+    with placeholders such as ``<site address>``; they are valid text but would be printed in
+    a client's report.  The line is at the first such field and names them all.
+    """
+    info = project.project
+    keys = [
+        key
+        for key in ("name", "location", "engineer", "notes")
+        if PLACEHOLDER_RE.match(str(getattr(info, key)))
+    ]
+    if not keys:
+        return ()
+    first: Loc = ("project", keys[0])
+    listed = ", ".join(f"{k} {str(getattr(info, k)).strip()!r}" for k in keys)
+    warning = InputError(
+        f"the template's placeholders are unchanged ({listed}); replace them: they are printed "
+        "in the report",
+        file=file,
+        line=line_of(lines, first),
+        key="project",
+    )
+    return (str(warning),)
 
 
 def load_project(path: str | Path) -> LoadedProject:
