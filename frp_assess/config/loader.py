@@ -91,12 +91,16 @@ def check_record_files(
         target = base_dir / rec.path
         if not target.is_file():
             path: Loc = ("seismic", "records", "files", i, "path")
-            raise InputError(
-                f"record file {rec.path!r} not found (looked for {target})",
-                file=file,
-                line=line_of(lines, path),
-                key=format_path(path),
-            )
+            if target.is_dir():
+                problem = f"record file {rec.path!r} is a folder ({target})"
+            elif target.exists():
+                problem = (
+                    f"record file {rec.path!r} is not a regular file (a device, pipe or socket: "
+                    f"{target})"
+                )
+            else:
+                problem = f"record file {rec.path!r} not found (looked for {target})"
+            raise InputError(problem, file=file, line=line_of(lines, path), key=format_path(path))
 
 
 def load_project_text(

@@ -46,6 +46,19 @@ _BAD_CHARS = (
     "\x00-\x08\x0b\x0c\x0e-\x1f\x7f-\x9f\ud800-\udfff\u202a-\u202e\u2066-\u2069\ufffe\uffff"
 )
 BAD_CHAR_RE = re.compile(f"[{_BAD_CHARS}]")
+_SURROGATE_RE = re.compile("[\ud800-\udfff]")
+
+
+def _join_surrogate_pairs(text: str) -> str:
+    """``"\ud83d\ude00"`` (two escapes, as JSON writes one emoji) -> the one character; lone
+    surrogates are kept (and then refused as control characters)."""
+    return re.sub(
+        "[\ud800-\udbff][\udc00-\udfff]",
+        lambda m: m.group().encode("utf-16-le", "surrogatepass").decode("utf-16-le"),
+        text,
+    )
+
+
 #: an integer as people write it (YAML 1.1 also reads 0o17, 0x1f, 0b101, 017 and 1:30)
 _DECIMAL_INT_RE = re.compile(r"^[-+]?(?:0|[1-9][0-9_]*)$")
 _OCTAL_RE = re.compile(r"^[-+]?0[0-7_]+$")
@@ -64,6 +77,8 @@ _KEY_KINDS = {
 def describe_char(char: str) -> str:
     """``U+001B (ESCAPE)``: the code point and, if it has one, the Unicode name."""
     name = unicodedata.name(char, "")
+    if 0xD800 <= ord(char) <= 0xDFFF:
+        name = "a lone UTF-16 surrogate: half of an escaped character"
     if not name:
         name = {"\x00": "NUL", "\x1b": "ESC", "\x7f": "DEL"}.get(char, "control character")
     return f"U+{ord(char):04X} ({name})"
@@ -237,6 +252,9 @@ class ProjectYamlLoader(yaml.SafeLoader):
         line = node.start_mark.line + 1
         text = str(node.value)
         if node.tag == _STR_TAG:
+            if _SURROGATE_RE.search(text):  # JSON-style escapes of one character: "\ud83d\ude00"
+                text = _join_surrogate_pairs(text)
+                node.value = text
             self._check_text(text, path, line)
         elif node.style is None and node.tag in (_INT_TAG, _FLOAT_TAG):
             if node.tag == _INT_TAG and not _DECIMAL_INT_RE.match(text):
