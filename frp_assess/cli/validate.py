@@ -10,7 +10,7 @@ from pathlib import Path
 
 from frp_assess.config import LoadedProject, load_project_text
 from frp_assess.config.library import MASONRY
-from frp_assess.config.messages import Loc, format_path
+from frp_assess.config.messages import Loc, format_path, line_of
 from frp_assess.config.problems import problems_of, raise_all
 from frp_assess.config.schema import (
     Ec8Spectrum,
@@ -19,7 +19,7 @@ from frp_assess.config.schema import (
     Project,
     TableSpectrum,
 )
-from frp_assess.config.yaml_source import line_of, parse_yaml, read_text_file
+from frp_assess.config.yaml_source import parse_yaml, read_text_file
 from frp_assess.errors import InputError
 from frp_assess.motions.spectra import parse_spectrum
 from frp_assess.study.plan import StudyPlan

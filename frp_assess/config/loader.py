@@ -18,10 +18,10 @@ from typing import Any
 import yaml
 from pydantic import ValidationError
 
-from frp_assess.config.messages import Loc, format_path, schema_problems
+from frp_assess.config.messages import Loc, format_path, line_of, schema_problems
 from frp_assess.config.problems import raise_all
 from frp_assess.config.schema import Project
-from frp_assess.config.yaml_source import line_of, parse_yaml, read_text_file
+from frp_assess.config.yaml_source import parse_yaml, read_text_file
 from frp_assess.errors import InputError
 
 

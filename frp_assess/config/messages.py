@@ -263,7 +263,8 @@ def _tag_names(located: Located) -> str:
     return ", ".join(str(_tag_of(m)) for m in get_args(bare) if _tag_of(m))
 
 
-def _line_of(lines: Mapping[Loc, int], path: Loc) -> int | None:
+def line_of(lines: Mapping[Loc, int], path: Loc) -> int | None:
+    """Line of ``path`` or of its longest prefix present in ``lines``; None if none is."""
     for n in range(len(path), 0, -1):
         if path[:n] in lines:
             return lines[path[:n]]
@@ -302,7 +303,7 @@ def schema_problems(
         seen.add((path, message))
         line = None
         if lines is not None:
-            line = _line_of(lines, path) or 1  # a missing top-level key: the file's start
+            line = line_of(lines, path) or 1  # a missing top-level key: the file's start
         rank = 0 if kind == "extra_forbidden" else 1
         order = line if line is not None else rank
         out.append(

@@ -23,7 +23,6 @@ import os
 import re
 import stat
 import unicodedata
-from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
@@ -296,14 +295,6 @@ ProjectYamlLoader.add_implicit_resolver(
     re.compile(r"^[-+]?[0-9][0-9_]*(?:\.[0-9_]*)?[eE][-+]?[0-9]+$"),
     list("-+0123456789"),
 )
-
-
-def line_of(lines: Mapping[Loc, int], path: Loc) -> int | None:
-    """Line of ``path`` or of its longest prefix present in ``lines``; None if none is."""
-    for n in range(len(path), 0, -1):
-        if path[:n] in lines:
-            return lines[path[:n]]
-    return None
 
 
 def _key_on_line(lines: dict[Loc, int], line: int) -> Loc:
