@@ -82,6 +82,7 @@ class Row:
     problems: int = 1  #: number of stderr lines
     files: tuple[tuple[str, str | bytes], ...] = ()  #: more files in {d}
     path: str = "{p}"  #: the file the first line names (None: not a file's problem)
+    sparse: int = 0  #: if > 0, the extra files are this many bytes (sparse, no disk used)
 
 
 def validate(id: str, text: str | bytes, expect: str, line: int | None, key: str | None,
@@ -664,6 +665,110 @@ ROWS: list[Row] = [
         None,
         None,
     ),
+    # --- more files the tool reads: empty, wrong shape, other record formats ----------------
+    validate("project-empty", "# nothing\n", "the project file is empty", 1, None),
+    validate("project-a-list", "- wall\n- seismic\n", "expected a mapping of keys", 1, None),
+    validate("study-empty", "", "the project file is empty", 1, None),
+    validate(
+        "number-yes",
+        sub("length: 1.0", "length: yes"),
+        "expected a number, found true",
+        5,
+        "wall.length",
+    ),
+    validate(
+        "number-quoted",
+        sub("length: 1.0", 'length: "1.0"'),
+        "expected a number, found '1.0'",
+        5,
+        "wall.length",
+    ),
+    validate(
+        "restitution-nan",
+        sub("  target: 1.0", "  target: 1.0\n  restitution: .nan"),
+        "expected energy, velocity or a number in (0, 1], found nan",
+        15,
+        "analysis.restitution",
+    ),
+    validate(
+        "tab-indent", sub("  height: 3.0", "\theight: 3.0"), "indent with spaces, not tabs", 4, None
+    ),
+    validate(
+        "one-column-dt-tiny",
+        with_files("{path: r1.txt, format: one-column, dt: 1e-7}"),
+        "[0.0001, 0.05], found 1e-07",
+        12,
+        "seismic.records.files[0].dt",
+    ),
+    run(
+        "record-huge",
+        with_files("{path: r1.txt}"),
+        "a record file is at most 50 MB",
+        None,
+        None,
+        files=(("r1.txt", b""),),
+        path="{d}/r1.txt",
+        sparse=50_000_001,
+    ),
+    run(
+        "record-decimal-comma-ambiguous",
+        with_files("{path: r1.txt}"),
+        "may be a decimal comma",
+        1,
+        None,
+        files=(("r1.txt", "0,1\n0,2\n"),),
+        path="{d}/r1.txt",
+    ),
+    run(
+        "record-three-columns",
+        with_files("{path: r1.txt}"),
+        "it holds 3 numbers a line",
+        None,
+        None,
+        files=(("r1.txt", "1 2 3\n4 5 6\n"),),
+        path="{d}/r1.txt",
+    ),
+    cli(
+        "check-esm-dt-tiny",
+        "records",
+        "check",
+        "{d}/r.asc",
+        "--spectrum",
+        "A2",
+        expect="{d}/r.asc:1: time step 1e-09 s is below 0.0001 s",
+        files=(("r.asc", "SAMPLING_INTERVAL_S: 1e-9\nUNITS: g\n0.1\n0.2\n"),),
+    ),
+    cli(
+        "check-esm-ndata-huge",
+        "records",
+        "check",
+        "{d}/r.asc",
+        "--spectrum",
+        "A2",
+        expect="{d}/r.asc:2: NDATA is not a whole number: '1e400'",
+        files=(("r.asc", "SAMPLING_INTERVAL_S: 0.01\nNDATA: 1e400\n0.1\n0.2\n"),),
+    ),
+    cli(
+        "check-two-column-dt-tiny",
+        "records",
+        "check",
+        "{d}/r.txt",
+        "--spectrum",
+        "A2",
+        expect="{d}/r.txt:2: time step 1e-06 s is below 0.0001 s",
+        files=(("r.txt", "0 0.1\n0.000001 0.2\n0.000002 0.1\n"),),
+    ),
+    cli(
+        "check-folder",
+        "records",
+        "check",
+        "{d}",
+        "--spectrum",
+        "A2",
+        "--format",
+        "two-column",
+        expect="{d}: is a directory, not a record file",
+    ),
     # --- 1/2. numeric command-line arguments ----------------------------------------------
     cli(
         "generate-count-1e6",
@@ -870,6 +975,9 @@ def test_bad_input(row: Row, tmp_path: Path, capsys: pytest.CaptureFixture[str])
             os.mkfifo(target)
         else:
             target.write_bytes(content.encode("utf-8") if isinstance(content, str) else content)
+        if row.sparse:
+            with open(target, "r+b") as handle:
+                handle.truncate(row.sparse)
     out = tmp_path / "out"
     names = {"p": str(work / "p.yaml"), "d": str(work), "out": str(out)}
     args = [a.format(**names) for a in row.args]
