@@ -271,6 +271,11 @@ def line_of(lines: Mapping[Loc, int], path: Loc) -> int | None:
     return None
 
 
+#: most pydantic errors described for one file (a 100,000-item list of bad values gives as
+#: many errors; :func:`~frp_assess.config.problems.raise_all` shows the first 50 anyway)
+MAX_DESCRIBED = 500
+
+
 def schema_problems(
     root: type[BaseModel],
     exc: ValidationError,
@@ -284,7 +289,7 @@ def schema_problems(
     for ``height``) is not repeated.  With ``lines`` (key path -> line) the problems are in
     file order, a missing key at the line of its mapping; without, unknown keys first.
     """
-    errors = exc.errors(include_url=False)
+    errors = exc.errors(include_url=False)[:MAX_DESCRIBED]
     described = [(err["type"], *describe(root, err)) for err in errors]
     unknown = [
         (path[:-1], str(path[-1]))

@@ -33,9 +33,22 @@ def problems_of(error: InputError) -> tuple[InputError, ...]:
     return error.problems if isinstance(error, InputErrors) else (error,)
 
 
+#: most problems reported for one file (the output stays readable and bounded)
+MAX_REPORTED = 50
+
+
 def raise_all(problems: Sequence[InputError]) -> None:
-    """Raise the problems (one: itself; several: :class:`InputErrors`); nothing if empty."""
+    """Raise the problems (one: itself; several: :class:`InputErrors`); nothing if empty.
+
+    Beyond :data:`MAX_REPORTED` problems, the last line says how many more there are.
+    """
     if len(problems) == 1:
         raise problems[0]
+    if len(problems) > MAX_REPORTED:
+        more = len(problems) - MAX_REPORTED
+        problems = [
+            *problems[:MAX_REPORTED],
+            InputError(f"{more} more problem(s) not shown; fix these first", file=problems[0].file),
+        ]
     if problems:
         raise InputErrors(problems)

@@ -27,9 +27,17 @@ from pathlib import Path
 from typing import Any
 
 import yaml
+from yaml.composer import Composer
+from yaml.constructor import SafeConstructor
+from yaml.resolver import Resolver
+
+try:
+    from yaml.cyaml import CParser
+except ImportError:  # pragma: no cover - PyYAML without libyaml
+    CParser = None
 
 from frp_assess.config.messages import Loc, format_path
-from frp_assess.config.problems import raise_all
+from frp_assess.config.problems import MAX_REPORTED, raise_all
 from frp_assess.errors import InputError
 
 #: largest YAML input file [bytes] (the largest shipped project file is under 10 kB)
@@ -147,11 +155,15 @@ class ProjectYamlLoader(yaml.SafeLoader):
     After :meth:`load`, :attr:`lines` maps each key path -- ``("wall", "height")``,
     ``("interventions", 1)`` -- to its 1-based line, and :attr:`problems` lists the problems
     found in the data (duplicate keys, keys that are not names, integers in another base,
-    control characters) as ``(line, key path, message)``.
+    control characters) as ``(line, key path, message)``.  :func:`parse_yaml` uses the same
+    methods on libyaml's parser (:class:`FastProjectYamlLoader`) when it is installed.
     """
 
     def __init__(self, stream: str) -> None:
         super().__init__(stream)
+        self._start()
+
+    def _start(self) -> None:
         self.lines: dict[Loc, int] = {}
         self.problems: list[tuple[int, Loc, str]] = []
         self._depth = 0
@@ -255,7 +267,7 @@ class ProjectYamlLoader(yaml.SafeLoader):
                 text = _join_surrogate_pairs(text)
                 node.value = text
             self._check_text(text, path, line)
-        elif node.style is None and node.tag in (_INT_TAG, _FLOAT_TAG):
+        elif not node.style and node.tag in (_INT_TAG, _FLOAT_TAG):  # plain: None or ""
             if node.tag == _INT_TAG and not _DECIMAL_INT_RE.match(text):
                 if _OCTAL_RE.match(text):
                     value = yaml.safe_load(text)
@@ -289,12 +301,36 @@ class ProjectYamlLoader(yaml.SafeLoader):
             )
 
 
+#: the loaders parse_yaml uses, fastest first (libyaml when installed, then pure Python)
+LOADERS: list[type[ProjectYamlLoader]] = [ProjectYamlLoader]
+if CParser is not None:
+
+    class FastProjectYamlLoader(ProjectYamlLoader, CParser):  # type: ignore[misc, valid-type]
+        """:class:`ProjectYamlLoader` on libyaml's parser (scans and parses about 20 times
+        faster); PyYAML's own composer still builds the nodes, so the limits apply."""
+
+        def __init__(self, stream: str) -> None:
+            CParser.__init__(self, stream)
+            Composer.__init__(self)
+            SafeConstructor.__init__(self)
+            Resolver.__init__(self)
+            self._start()
+
+        # the parser's event methods are libyaml's, not the pure-Python Parser's
+        check_event = CParser.check_event
+        peek_event = CParser.peek_event
+        get_event = CParser.get_event
+        dispose = CParser.dispose
+
+    LOADERS.insert(0, FastProjectYamlLoader)
+
 # YAML 1.1 (PyYAML) reads 1e-3 as text; accept it as a number, as YAML 1.2 and people do
-ProjectYamlLoader.add_implicit_resolver(
-    "tag:yaml.org,2002:float",
-    re.compile(r"^[-+]?[0-9][0-9_]*(?:\.[0-9_]*)?[eE][-+]?[0-9]+$"),
-    list("-+0123456789"),
-)
+for _loader in LOADERS:
+    _loader.add_implicit_resolver(
+        "tag:yaml.org,2002:float",
+        re.compile(r"^[-+]?[0-9][0-9_]*(?:\.[0-9_]*)?[eE][-+]?[0-9]+$"),
+        list("-+0123456789"),
+    )
 
 
 def _key_on_line(lines: dict[Loc, int], line: int) -> Loc:
@@ -308,6 +344,21 @@ def _key_on_line(lines: dict[Loc, int], line: int) -> Loc:
     return best[2] if best is not None else ()
 
 
+def _bad_chars(text: str) -> list[tuple[int, str]]:
+    """(line, character) of the first refused character of each line, at most
+    :data:`~frp_assess.config.problems.MAX_REPORTED` + 1 lines (linear in the text)."""
+    out: list[tuple[int, str]] = []
+    line, pos = 1, 0
+    for m in BAD_CHAR_RE.finditer(text):
+        line += text.count("\n", pos, m.start())
+        pos = m.start()
+        if not out or out[-1][0] != line:
+            out.append((line, m.group()))
+            if len(out) > MAX_REPORTED:
+                break
+    return out
+
+
 def parse_yaml(text: str, name: str) -> tuple[Any, dict[Loc, int]]:
     """YAML text -> (data, key-path lines); every problem of this level as InputError.
 
@@ -318,30 +369,37 @@ def parse_yaml(text: str, name: str) -> tuple[Any, dict[Loc, int]]:
         raise InputError(
             _too_large(len(text.encode("utf-8")), "YAML text", MAX_FILE_BYTES), file=name
         )
-    raw_bad = [(text.count("\n", 0, m.start()) + 1, m.group()) for m in BAD_CHAR_RE.finditer(text)]
-    loader = ProjectYamlLoader(BAD_CHAR_RE.sub("\ufffd", text) if raw_bad else text)
+    raw_bad = _bad_chars(text)
+    clean = BAD_CHAR_RE.sub("\ufffd", text) if raw_bad else text
     try:
-        data = loader.load()
+        try:
+            loader = LOADERS[0](clean)
+            data = loader.load()
+        except yaml.MarkedYAMLError:
+            if len(LOADERS) == 1:
+                raise
+            # libyaml refuses some escapes PyYAML reads ("\ud83d\ude00"), and PyYAML's
+            # messages are the documented ones: a file with an error is read again by it
+            loader = ProjectYamlLoader(clean)
+            data = loader.load()
     except YamlLimitError as exc:
         raise InputError(exc.message, file=name, line=exc.line) from None
     except yaml.MarkedYAMLError as exc:
-        raise _syntax_error(exc, name, raw_bad) from None
+        raise _syntax_error(exc, name, raw_bad, text) from None
     except yaml.YAMLError as exc:
         raise InputError(f"YAML error: {exc}", file=name) from None
     except RecursionError:  # pragma: no cover - MAX_DEPTH stops the composer well before
         raise InputError(f"nesting deeper than {MAX_DEPTH} levels", file=name) from None
-    found: list[tuple[int, Loc, str]] = list(loader.problems)
-    seen_lines: set[int] = set()
+    # an alias used several times repeats its problems: one report per line and message
+    found = list({(line, msg): (line, path, msg) for line, path, msg in loader.problems}.values())
     for line, char in raw_bad:
-        if line not in seen_lines:  # one report per line
-            seen_lines.add(line)
-            found.append(
-                (
-                    line,
-                    _key_on_line(loader.lines, line),
-                    f"control character {describe_char(char)} in the file; remove it",
-                )
+        found.append(
+            (
+                line,
+                _key_on_line(loader.lines, line),
+                f"control character {describe_char(char)} in the file; remove it",
             )
+        )
     found.sort(key=lambda p: p[0])
     raise_all(
         [
@@ -353,7 +411,7 @@ def parse_yaml(text: str, name: str) -> tuple[Any, dict[Loc, int]]:
 
 
 def _syntax_error(
-    exc: yaml.MarkedYAMLError, name: str, raw_bad: list[tuple[int, str]]
+    exc: yaml.MarkedYAMLError, name: str, raw_bad: list[tuple[int, str]], text: str
 ) -> InputError:
     mark = exc.problem_mark or exc.context_mark
     line = None if mark is None else mark.line + 1
@@ -368,6 +426,9 @@ def _syntax_error(
         where = exc.context_mark
         started = f" started on line {where.line + 1}" if where is not None else ""
         context = f" ({exc.context}{started})"
-    if "\\t" in problem or "\t" in problem:
+    lines = text.splitlines()
+    here = lines[line - 1] if line is not None and 0 < line <= len(lines) else ""
+    indent = here[: len(here) - len(here.lstrip())]
+    if "\\t" in problem or "\t" in problem or "\t" in indent:
         context += "; indent with spaces, not tabs"
     return InputError(f"YAML syntax error: {problem}{context}", file=name, line=line)
