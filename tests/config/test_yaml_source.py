@@ -175,3 +175,9 @@ def test_libyaml_parses_when_it_is_installed() -> None:
     assert LOADERS[0] is FastProjectYamlLoader
     text = "a: [" + ", ".join(["-1"] * 1000) + "]\n"
     assert len(parse_yaml(text, "p.yaml")[0]["a"]) == 1000
+
+
+def test_at_most_50_problems_are_listed_then_how_many_more() -> None:
+    found = problems("wall:\n" + "".join(f"  k: {i}\n" for i in range(61)))
+    assert len(found) == 51 and all("duplicate key 'k'" in p.message for p in found[:50])
+    assert found[50].message == "10 more problem(s) not shown; fix these first"
