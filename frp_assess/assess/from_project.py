@@ -7,6 +7,8 @@ and the TUI build exactly the same inputs from the same project.
 
 from __future__ import annotations
 
+import sys
+from collections.abc import Callable
 from pathlib import Path
 
 from frp_assess.assess.inputs import (
@@ -132,7 +134,22 @@ def inputs_from_project(project: Project, base_dir: Path, input_file: str = "") 
     )
 
 
-def load_inputs(path: str | Path) -> AssessmentInputs:
-    """Load, validate and map a project file; errors are one-line :class:`InputError`."""
+def _print_warning(line: str) -> None:
+    print(f"frp-assess: warning: {line}", file=sys.stderr)
+
+
+def load_inputs(
+    path: str | Path, *, warn: Callable[[str], None] | None = _print_warning
+) -> AssessmentInputs:
+    """Load, validate and map a project file; errors are one-line :class:`InputError`.
+
+    Args:
+        path: the project file.
+        warn: called with each warning line of the file (placeholders left unchanged...);
+            the default prints it on stderr as ``frp-assess: warning: ...``; None: silent.
+    """
     loaded = load_project(path)
+    if warn is not None:
+        for line in loaded.warnings:
+            warn(line)
     return inputs_from_project(loaded.project, loaded.base_dir, str(loaded.path.name))

@@ -8,20 +8,31 @@ from __future__ import annotations
 
 import argparse
 import math
+import sys
 from pathlib import Path
 
 from rich.console import Console
 from rich.table import Table
 
+from frp_assess.cli.arg_types import number_in, whole_number_in
+from frp_assess.config.schema import MAX_RECORD_DURATION, MAX_SEED, MIN_TIME_STEP
 from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_write_text
 from frp_assess.motions.compliance import DEFAULT_T1, ComplianceReport, check_compliance
 from frp_assess.motions.envelopes import ENVELOPES
+from frp_assess.motions.plausibility import plausibility_warnings
 from frp_assess.motions.readers import FORMATS, UNITS, read_record
 from frp_assess.motions.record import Record
 from frp_assess.motions.simqke import generate_artificial
 from frp_assess.motions.spectra import SPECTRUM_HELP, ElasticSpectrum, parse_spectrum
 from frp_assess.motions.writers import write_at2
+
+#: bounds of the arguments (those of the project file's schema)
+COUNT = whole_number_in(1, 100)
+SEED = whole_number_in(0, MAX_SEED)
+DURATION = number_in(0, MAX_RECORD_DURATION, low_open=True, unit="s")
+TIME_STEP = number_in(MIN_TIME_STEP, 0.05, unit="s")
+T1 = number_in(0, 10, low_open=True, unit="s")
 
 T1_HELP = (
     f"fundamental period T1 of the structure [s] for the check ranges (EC8 0.2T1-2T1, NTC "
@@ -49,15 +60,25 @@ def register(sub: argparse._SubParsersAction) -> None:
         "The same seed gives the same records, bit for bit.",
     )
     g.add_argument("--spectrum", required=True, metavar="SPEC", help=SPECTRUM_HELP)
-    g.add_argument("--count", type=int, default=7, help="number of records (default 7)")
-    g.add_argument("--seed", type=int, default=1, help="random seed (default 1)")
-    g.add_argument("--duration", type=float, default=25.0, help="total duration [s] (25)")
-    g.add_argument("--dt", type=float, default=0.005, help="time step [s] (0.005)")
+    g.add_argument("--count", type=COUNT, default=7, help="number of records, 1-100 (default 7)")
+    g.add_argument("--seed", type=SEED, default=1, help=f"random seed, 0-{MAX_SEED} (default 1)")
     g.add_argument(
-        "--stationary", type=float, default=10.0, help="stationary part of the envelope [s] (10)"
+        "--duration",
+        type=DURATION,
+        default=25.0,
+        help=f"total duration [s], at most {MAX_RECORD_DURATION:g} (25)",
+    )
+    g.add_argument(
+        "--dt", type=TIME_STEP, default=0.005, help=f"time step [s], {MIN_TIME_STEP:g}-0.05 (0.005)"
+    )
+    g.add_argument(
+        "--stationary",
+        type=DURATION,
+        default=10.0,
+        help="stationary part of the envelope [s] (10), shorter than the duration",
     )
     g.add_argument("--envelope", choices=ENVELOPES, default="trapezoidal", help="envelope shape")
-    g.add_argument("--t1", type=float, default=DEFAULT_T1, metavar="T1", help=T1_HELP)
+    g.add_argument("--t1", type=T1, default=DEFAULT_T1, metavar="T1", help=T1_HELP)
     g.add_argument("--out", required=True, metavar="DIR", help="output folder")
     g.set_defaults(handler=run_generate)
 
@@ -72,13 +93,18 @@ def register(sub: argparse._SubParsersAction) -> None:
     c.add_argument("--spectrum", required=True, metavar="SPEC", help=SPECTRUM_HELP)
     c.add_argument("--units", default="g", choices=sorted(UNITS), help="units of the files")
     c.add_argument("--format", default="auto", choices=FORMATS, help="file format")
-    c.add_argument("--dt", type=float, default=None, help="time step [s] of one-column files")
+    c.add_argument(
+        "--dt",
+        type=TIME_STEP,
+        default=None,
+        help=f"time step [s] of one-column files, {MIN_TIME_STEP:g}-0.05",
+    )
     c.add_argument(
         "--recorded",
         action="store_true",
         help="check as recorded records (NTC: mean within 90-130 %% of the target)",
     )
-    c.add_argument("--t1", type=float, default=DEFAULT_T1, metavar="T1", help=T1_HELP)
+    c.add_argument("--t1", type=T1, default=DEFAULT_T1, metavar="T1", help=T1_HELP)
     c.set_defaults(handler=run_check)
 
 
@@ -93,6 +119,12 @@ def run_generate(args: argparse.Namespace) -> int:
         _positive(getattr(args, key), f"--{key}")
     if args.count < 1:
         raise InputError(f"expected a count >= 1, found {args.count}", key="--count")
+    if args.stationary >= args.duration:
+        raise InputError(
+            f"expected a stationary part shorter than --duration {args.duration:g} s, found "
+            f"{args.stationary:g} s",
+            key="--stationary",
+        )
     records = generate_artificial(
         spectrum,
         count=args.count,
@@ -125,6 +157,8 @@ def run_check(args: argparse.Namespace) -> int:
     records: list[Record] = [
         read_record(f, format=args.format, units=args.units, dt=args.dt) for f in args.files
     ]
+    for warning in plausibility_warnings(records):
+        print(f"frp-assess: warning: {warning}", file=sys.stderr)
     report = check_compliance(records, spectrum, t1=args.t1, recorded=args.recorded)
     print_report(report, spectrum, Console())
     return 0 if report.passed else 1

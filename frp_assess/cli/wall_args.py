@@ -9,34 +9,48 @@ from __future__ import annotations
 import argparse
 import math
 
+from frp_assess.cli.arg_types import number_in
 from frp_assess.dynamics import ModelOptions, Rebars, RockingModel, Wall
 from frp_assess.dynamics.rebars import DEFAULT_STRAIN_FACTOR
 from frp_assess.errors import InputError
 from frp_assess.motions.readers import FORMATS, UNITS
 
+#: bounds of the command-line wall (those of the project file's schema)
+THICKNESS = number_in(0, 5, low_open=True, unit="m")
+HEIGHT = number_in(0, 50, low_open=True, unit="m")
+UNIT_WEIGHT = number_in(5, 30, unit="kN/m³")
+MODULUS = number_in(0, 1000, low_open=True, unit="GPa")
+STRAIN = number_in(0, 1, low_open=True)
+RATIO = number_in(0, 20, low_open=True, unit="‰")
+FACTOR = number_in(0, 1, low_open=True)
+#: longest free-vibration tail [s] (the schema's analysis.free_vibration_tail)
+TAIL = number_in(0, 60, unit="s")
+
 
 def add_model_arguments(parser: argparse.ArgumentParser) -> None:
     wall = parser.add_argument_group("wall (per metre of length)")
-    wall.add_argument("--thickness", type=float, required=True, metavar="B", help="thickness B [m]")
-    wall.add_argument("--height", type=float, required=True, metavar="H", help="height H [m]")
+    wall.add_argument(
+        "--thickness", type=THICKNESS, required=True, metavar="B", help="thickness B [m]"
+    )
+    wall.add_argument("--height", type=HEIGHT, required=True, metavar="H", help="height H [m]")
     wall.add_argument(
         "--unit-weight",
-        type=float,
+        type=UNIT_WEIGHT,
         default=18.0,
         metavar="W",
         help="unit weight [kN/m³] (default 18: solid brick and lime mortar)",
     )
     wall.add_argument("--mechanism", choices=["one-sided", "two-sided"], required=True)
     bars = parser.add_argument_group("FRP rebars (omit all four for the unreinforced wall)")
-    bars.add_argument("--modulus", type=float, metavar="E", help="elastic modulus E [GPa]")
+    bars.add_argument("--modulus", type=MODULUS, metavar="E", help="elastic modulus E [GPa]")
     bars.add_argument(
-        "--ultimate-strain", type=float, metavar="EPS", help="ultimate strain ε_u [-]"
+        "--ultimate-strain", type=STRAIN, metavar="EPS", help="ultimate strain ε_u [-]"
     )
     bars.add_argument("--position", choices=["centred", "external"])
-    bars.add_argument("--ratio", type=float, metavar="RHO", help="active bar area ρ [‰ of B·1 m]")
+    bars.add_argument("--ratio", type=RATIO, metavar="RHO", help="active bar area ρ [‰ of B·1 m]")
     bars.add_argument(
         "--strain-factor",
-        type=float,
+        type=FACTOR,
         default=DEFAULT_STRAIN_FACTOR,
         metavar="C",
         help="cyclic reduction c, ε_max = c·ε_u (default 0.5)",
@@ -57,10 +71,10 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
     )
     model.add_argument(
         "--tail",
-        type=float,
+        type=TAIL,
         default=0.0,
         metavar="SECONDS",
-        help="free vibration appended after the record [s]",
+        help="free vibration appended after the record [s], 0-60",
     )
 
 

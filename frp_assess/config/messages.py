@@ -10,16 +10,17 @@ from __future__ import annotations
 
 import types
 import typing
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, Literal, Union, get_args, get_origin
 
 import annotated_types as at
-from pydantic import BaseModel
+from pydantic import BaseModel, ValidationError
 from pydantic.fields import FieldInfo
 from pydantic_core import ErrorDetails
 
 from frp_assess.config.library import did_you_mean
+from frp_assess.errors import InputError
 
 Loc = tuple[str | int, ...]
 
@@ -154,7 +155,7 @@ def found(value: Any) -> str:
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, int | float):
-        return f"{value:g}" if isinstance(value, float) else str(value)
+        return f"{value:.12g}" if isinstance(value, float) else str(value)
     if isinstance(value, dict):
         return "a mapping"
     if isinstance(value, list | tuple):
@@ -163,12 +164,12 @@ def found(value: Any) -> str:
 
 
 def _range_text(b: dict[str, float]) -> str:
-    lo = f"({b['gt']:g}" if "gt" in b else f"[{b['ge']:g}" if "ge" in b else None
-    hi = f"{b['lt']:g})" if "lt" in b else f"{b['le']:g}]" if "le" in b else None
+    lo = f"({b['gt']:.12g}" if "gt" in b else f"[{b['ge']:.12g}" if "ge" in b else None
+    hi = f"{b['lt']:.12g})" if "lt" in b else f"{b['le']:.12g}]" if "le" in b else None
     if lo and hi:
         return f"a number in {lo}, {hi}"
     parts = [
-        f"{op} {b[k]:g}"
+        f"{op} {b[k]:.12g}"
         for k, op in (("gt", ">"), ("ge", ">="), ("lt", "<"), ("le", "<="))
         if k in b
     ]
@@ -223,7 +224,17 @@ def describe(root: type[BaseModel], err: ErrorDetails) -> tuple[Loc, str]:
             path,
             f"missing key {ctx.get('discriminator', 'type')} (the kind: {_tag_names(located)})",
         )
-    if kind in ("float_type", "float_parsing", "finite_number"):
+    if kind == "finite_number":
+        return path, (
+            f"expected a finite number, found {what} (1e400 and .inf are infinite, .nan is not "
+            "a number)"
+        )
+    if kind in ("string_too_long", "string_too_short"):
+        n = ctx.get("max_length") if kind == "string_too_long" else ctx.get("min_length")
+        word = "at most" if kind == "string_too_long" else "at least"
+        length = len(value) if isinstance(value, str) else "?"
+        return path, f"expected text of {word} {n} characters, found {length}"
+    if kind in ("float_type", "float_parsing"):
         return path, f"expected a number, found {what}"
     if kind in ("int_type", "int_parsing", "int_from_float"):
         return path, f"expected a whole number, found {what}"
@@ -250,3 +261,58 @@ def _tag_names(located: Located) -> str:
     if not _is_union(bare):
         return "?"
     return ", ".join(str(_tag_of(m)) for m in get_args(bare) if _tag_of(m))
+
+
+def line_of(lines: Mapping[Loc, int], path: Loc) -> int | None:
+    """Line of ``path`` or of its longest prefix present in ``lines``; None if none is."""
+    for n in range(len(path), 0, -1):
+        if path[:n] in lines:
+            return lines[path[:n]]
+    return None
+
+
+#: most pydantic errors described for one file (a 100,000-item list of bad values gives as
+#: many errors; :func:`~frp_assess.config.problems.raise_all` shows the first 50 anyway)
+MAX_DESCRIBED = 500
+
+
+def schema_problems(
+    root: type[BaseModel],
+    exc: ValidationError,
+    *,
+    file: str | None,
+    lines: Mapping[Loc, int] | None,
+) -> list[InputError]:
+    """Every problem of a validation error as a one-line InputError.
+
+    A "missing" key that an unknown key of the same mapping is a misspelling of (``hieght``
+    for ``height``) is not repeated.  With ``lines`` (key path -> line) the problems are in
+    file order, a missing key at the line of its mapping; without, unknown keys first.
+    """
+    errors = exc.errors(include_url=False)[:MAX_DESCRIBED]
+    described = [(err["type"], *describe(root, err)) for err in errors]
+    unknown = [
+        (path[:-1], str(path[-1]))
+        for kind, path, _ in described
+        if kind == "extra_forbidden" and path
+    ]
+    out: list[tuple[int, int, InputError]] = []
+    seen: set[tuple[Loc, str]] = set()
+    for index, (kind, path, message) in enumerate(described):
+        if kind == "missing":
+            wanted = str(errors[index]["loc"][-1])
+            if any(parent == path and did_you_mean(key, [wanted]) for parent, key in unknown):
+                continue
+        if (path, message) in seen:
+            continue
+        seen.add((path, message))
+        line = None
+        if lines is not None:
+            line = line_of(lines, path) or 1  # a missing top-level key: the file's start
+        rank = 0 if kind == "extra_forbidden" else 1
+        order = line if line is not None else rank
+        out.append(
+            (order, index, InputError(message, file=file, line=line, key=format_path(path) or None))
+        )
+    out.sort(key=lambda item: (item[0], item[1]))
+    return [problem for _, _, problem in out]

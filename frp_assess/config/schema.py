@@ -10,9 +10,11 @@ exactly one record source) raise :class:`~pydantic_core.PydanticCustomError` who
 from __future__ import annotations
 
 import datetime as _dt
+from pathlib import PurePath
 from typing import Annotated, Any, Literal, get_args
 
 from pydantic import (
+    AllowInfNan,
     BaseModel,
     BeforeValidator,
     ConfigDict,
@@ -62,8 +64,49 @@ def _to_text(value: Any) -> Any:
     return value
 
 
-Number = Annotated[float, Strict()]
+#: every number of the file: strict (no quoted "0.4", no yes/no) and finite (YAML reads 1e400
+#: and .inf as infinity, .nan as not-a-number; none of them is a value of any field)
+Number = Annotated[float, Strict(), AllowInfNan(False)]
 FreeText = Annotated[str, BeforeValidator(_to_text)]
+#: an integer of the file (a float such as 7.0 or 1e400 is refused)
+WholeNumber = Annotated[int, Strict()]
+
+#: bounds on the work one project asks for (refused before any computation, see each field)
+MAX_OPTIONS = 2000  #: retrofit options after the sweeps are expanded
+MAX_RECORD_DURATION = 600.0  #: [s] longest artificial record
+MIN_TIME_STEP = 1e-4  #: [s] smallest time step of a record
+MAX_SEED = 2**32 - 1  #: largest random seed
+MAX_TABLE_POINTS = 1000  #: points of a spectrum table
+#: longest free texts [characters]
+MAX_NAME_CHARS = 200
+MAX_NOTES_CHARS = 5000
+
+
+#: longest record name [characters] (it names the exported ``records/<name>.AT2``)
+MAX_RECORD_NAME = 100
+#: characters a record name may not contain: path separators and what Windows refuses
+_UNSAFE_NAME_CHARS = '/\\:*?"<>|'
+
+
+def unsafe_name_reason(name: str) -> str | None:
+    """Why ``name`` is not safe as a file name (``records/<name>.AT2``), or None if it is.
+
+    Refused: empty, longer than :data:`MAX_RECORD_NAME`, a path separator or one of
+    ``: * ? " < > |``, a control character, a leading dot or blank (``..``, hidden files),
+    a trailing dot or blank.
+    """
+    if not name.strip():
+        return "it is empty"
+    if len(name) > MAX_RECORD_NAME:
+        return f"it has {len(name)} characters, more than {MAX_RECORD_NAME}"
+    bad = sorted({c for c in name if c in _UNSAFE_NAME_CHARS})
+    if bad:
+        return f'it contains {" ".join(bad)} (names may not contain / \\ : * ? " < > |)'
+    if any(ord(c) < 32 or 0x7F <= ord(c) <= 0x9F for c in name):
+        return "it contains control characters"
+    if name[0] in ". " or name[-1] in ". ":
+        return "it starts or ends with a dot or a blank"
+    return None
 
 
 def format_ratio(ratio: float) -> str:
@@ -84,20 +127,42 @@ class _Model(BaseModel):
 class ProjectInfo(_Model):
     """Free-text identification of the project, copied into the results and the report."""
 
-    name: FreeText = Field("Untitled wall", description="Name of the wall or project (text).")
-    location: FreeText = Field("", description="Site, e.g. town and address (text).")
-    engineer: FreeText = Field("", description="Who made the assessment (text).")
-    notes: FreeText = Field("", description="Any notes for the report (text).")
+    name: FreeText = Field(
+        "Untitled wall",
+        max_length=MAX_NAME_CHARS,
+        description=f"Name of the wall or project (text, at most {MAX_NAME_CHARS} characters).",
+    )
+    location: FreeText = Field(
+        "",
+        max_length=MAX_NAME_CHARS,
+        description=f"Site, e.g. town and address (text, at most {MAX_NAME_CHARS} characters).",
+    )
+    engineer: FreeText = Field(
+        "",
+        max_length=MAX_NAME_CHARS,
+        description=f"Who made the assessment (text, at most {MAX_NAME_CHARS} characters).",
+    )
+    notes: FreeText = Field(
+        "",
+        max_length=MAX_NOTES_CHARS,
+        description=f"Any notes for the report (text, at most {MAX_NOTES_CHARS} characters).",
+    )
 
 
 # ------------------------------------------------------------------------------------ wall
 class WallSpec(_Model):
     """The masonry wall, a rigid rocking block (MODEL.md §1)."""
 
-    thickness: Number = Field(gt=0, description="Thickness B [m], > 0 and < height.")
-    height: Number = Field(gt=0, description="Height H [m] above the rocking base, > 0.")
+    thickness: Number = Field(gt=0, le=5, description="Thickness B [m], 0 < B <= 5, < height.")
+    height: Number = Field(
+        gt=0, le=50, description="Height H [m] above the rocking base, 0 < H <= 50."
+    )
     length: Number = Field(
-        1.0, gt=0, description="Length L [m] of the wall, for quantities and costs (default 1)."
+        1.0,
+        gt=0,
+        le=1000,
+        description="Length L [m] of the wall, for quantities and costs, 0 < L <= 1000 "
+        "(default 1).",
     )
     masonry: str | None = Field(
         None,
@@ -183,11 +248,15 @@ class TableSpectrum(_Model):
     """A user table of (T, Se) points, linear between them."""
 
     type: Literal["table"] = Field(description="Spectrum kind.")
-    periods: list[Annotated[Number, Field(ge=0)]] = Field(
-        min_length=2, description="Periods T [s], increasing, >= 0."
+    periods: list[Annotated[Number, Field(ge=0, le=100)]] = Field(
+        min_length=2,
+        max_length=MAX_TABLE_POINTS,
+        description=f"Periods T [s], increasing, 0-100, 2 to {MAX_TABLE_POINTS} points.",
     )
-    accelerations: list[Annotated[Number, Field(ge=0)]] = Field(
-        min_length=2, description="Spectral accelerations Se(T) [g], one per period."
+    accelerations: list[Annotated[Number, Field(ge=0, le=20)]] = Field(
+        min_length=2,
+        max_length=MAX_TABLE_POINTS,
+        description="Spectral accelerations Se(T) [g], 0-20, one per period.",
     )
 
     @model_validator(mode="after")
@@ -219,14 +288,23 @@ Spectrum = Annotated[
 class ArtificialRecords(_Model):
     """Spectrum-compatible artificial accelerograms (SIMQKE), reproducible from the seed."""
 
-    count: Annotated[int, Strict()] = Field(7, ge=1, le=100, description="Number, 1-100 (7).")
-    seed: Annotated[int, Strict()] = Field(1, description="Random seed (same seed, same set).")
+    count: WholeNumber = Field(7, ge=1, le=100, description="Number, 1-100 (7).")
+    seed: WholeNumber = Field(
+        1, ge=0, le=MAX_SEED, description=f"Random seed, 0-{MAX_SEED} (same seed, same set)."
+    )
     duration: Number = Field(
         25.0,
         ge=MIN_ARTIFICIAL_DURATION,
-        description=f"Total duration [s], >= {MIN_ARTIFICIAL_DURATION:g} (25, NTC minimum).",
+        le=MAX_RECORD_DURATION,
+        description=f"Total duration [s], {MIN_ARTIFICIAL_DURATION:g}-{MAX_RECORD_DURATION:g} "
+        "(25, NTC minimum).",
     )
-    dt: Number = Field(0.005, gt=0, le=0.05, description="Time step [s], <= 0.05 (0.005).")
+    dt: Number = Field(
+        0.005,
+        ge=MIN_TIME_STEP,
+        le=0.05,
+        description=f"Time step [s], {MIN_TIME_STEP:g}-0.05 (0.005).",
+    )
 
 
 class RecordFile(_Model):
@@ -238,9 +316,32 @@ class RecordFile(_Model):
     )
     units: RecordUnits = Field("g", description="Units of the samples: g | m/s2 | cm/s2 | gal.")
     dt: Number | None = Field(
-        None, gt=0, le=0.05, description="Time step [s], required for one-column files."
+        None,
+        ge=MIN_TIME_STEP,
+        le=0.05,
+        description=f"Time step [s], {MIN_TIME_STEP:g}-0.05, required for one-column files.",
     )
-    name: str | None = Field(None, description="Name in the results (default: file name).")
+    name: str | None = Field(
+        None,
+        description="Name in the results and of the exported records/<name>.AT2 (default: the "
+        f"file name without extension); unique, at most {MAX_RECORD_NAME} characters, no path "
+        "separators, not starting with a dot.",
+    )
+
+    @property
+    def record_name(self) -> str:
+        """The record's name: ``name``, else the file name without its extension."""
+        return self.name if self.name is not None else PurePath(self.path).stem
+
+    @field_validator("name")
+    @classmethod
+    def _safe_name(cls, value: str | None) -> str | None:
+        if value is not None and (reason := unsafe_name_reason(value)) is not None:
+            raise located_error(
+                f"record name {value!r} is not a safe file name: {reason}; the results export "
+                "it as records/<name>.AT2"
+            )
+        return value
 
     @model_validator(mode="after")
     def _dt_for_one_column(self) -> RecordFile:
@@ -268,6 +369,30 @@ class RecordsSpec(_Model):
             raise located_error("give either 'artificial' or 'files', not both", "files")
         if self.artificial is None and self.files is None:
             raise located_error("give either 'artificial' or 'files'; neither was found")
+        return self
+
+    @model_validator(mode="after")
+    def _unique_names(self) -> RecordsSpec:
+        first: dict[str, int] = {}
+        for i, f in enumerate(self.files or []):
+            name = f.record_name
+            key = "name" if f.name is not None else "path"
+            if f.name is None and (reason := unsafe_name_reason(name)) is not None:
+                raise located_error(
+                    f"the file name {name!r} is not a safe record name: {reason}; give a 'name:'",
+                    "files",
+                    i,
+                    key,
+                )
+            j = first.setdefault(name.casefold(), i)
+            if j != i:
+                raise located_error(
+                    f"record name {name!r} is already the name of files[{j}]; each record needs "
+                    "its own name (give a 'name:')",
+                    "files",
+                    i,
+                    key,
+                )
         return self
 
 
@@ -301,8 +426,14 @@ class MaterialSpec(_Model):
     elastic_modulus: Number | None = Field(None, gt=0, le=1000, description="E [GPa].")
     ultimate_strain: Number | None = Field(None, gt=0, lt=1, description="eps_u [-].")
     density: Number | None = Field(None, gt=0, le=10000, description="Density [kg/m3].")
-    price: Number | None = Field(None, ge=0, description="Indicative price [currency/kg].")
-    source: FreeText | None = Field(None, description="Source of the values (text).")
+    price: Number | None = Field(
+        None, ge=0, le=1e6, description="Indicative price [currency/kg], 0-1e6."
+    )
+    source: FreeText | None = Field(
+        None,
+        max_length=MAX_NAME_CHARS,
+        description=f"Source of the values (text, at most {MAX_NAME_CHARS} characters).",
+    )
 
 
 # -------------------------------------------------------------------------- interventions
@@ -313,7 +444,10 @@ class Intervention(_Model):
     """One retrofit option: vertical FRP bars of a material, position and ratio."""
 
     name: FreeText | None = Field(
-        None, description="Name in the results (default e.g. 'GFRP external 1‰')."
+        None,
+        max_length=MAX_NAME_CHARS,
+        description="Name in the results (default e.g. 'GFRP external 1‰'), at most "
+        f"{MAX_NAME_CHARS} characters.",
     )
     material: str = Field(description="Material: a library key or one of 'materials'.")
     position: Position = Field(description="centred (one bar) | external (one on each face).")
@@ -375,12 +509,24 @@ Restitution = Annotated[
 class IdaSpec(_Model):
     """The incremental dynamic analysis rule (MODEL.md §5)."""
 
-    step_ratio: Number = Field(1.10, gt=1, le=10, description="Step ratio s of C, > 1 (1.10).")
+    step_ratio: Number = Field(
+        1.10,
+        ge=1.01,
+        le=10,
+        description="Step ratio s of C, 1.01-10 (1.10); closer to 1 only multiplies the runs.",
+    )
     tolerance: Number = Field(
-        0.005, gt=0, le=0.1, description="Relative bisection tolerance, 0-0.1 (0.005)."
+        0.005,
+        ge=1e-4,
+        le=0.1,
+        description="Relative bisection tolerance, 1e-4 to 0.1 (0.005); finer is below the "
+        "accuracy of the integration.",
     )
     max_multiplier: Number = Field(
-        100.0, gt=1, description="Give up at this multiple of C0 [-] (100): 'no collapse'."
+        100.0,
+        gt=1,
+        le=1000,
+        description="Give up at this multiple of C0 [-], 1-1000 (100): 'no collapse'.",
     )
 
 
@@ -409,7 +555,10 @@ class AnalysisSpec(_Model):
     )
     ida: IdaSpec = Field(default_factory=IdaSpec, description="IDA rule.")
     target: Number = Field(
-        1.0, gt=0, description="Required mean capacity/demand, mean a_dyn/(a_g*S) (1.0)."
+        1.0,
+        gt=0,
+        le=10,
+        description="Required mean capacity/demand, mean a_dyn/(a_g*S), 0-10 (1.0).",
     )
 
 
@@ -426,7 +575,9 @@ class DesignSpec(_Model):
     ratio_range: tuple[Ratio, Ratio] = Field(
         (0.5, 5.0), description="Search range [per mille], 0 < low < high <= 20."
     )
-    resolution: Number = Field(0.05, gt=0, le=1, description="Resolution [per mille] (0.05).")
+    resolution: Number = Field(
+        0.05, ge=0.001, le=1, description="Resolution [per mille], 0.001-1 (0.05)."
+    )
 
     @model_validator(mode="after")
     def _range(self) -> DesignSpec:
@@ -453,12 +604,15 @@ class CodeCheckSpec(_Model):
 class CostsSpec(_Model):
     """Indicative costs: bars by weight (material price) plus installation."""
 
-    currency: FreeText = Field("EUR", description="Currency of all prices (text).")
+    currency: FreeText = Field(
+        "EUR", max_length=12, description="Currency of all prices (text, at most 12 characters)."
+    )
     installation_per_metre: Number = Field(
         0.0,
         ge=0,
+        le=1e6,
         description="Installation [currency per metre of wall length per layer of "
-        "bars] (centred: 1 layer, external: 2); default 0: bars only.",
+        "bars] (centred: 1 layer, external: 2), 0-1e6; default 0: bars only.",
     )
 
 
@@ -475,7 +629,10 @@ class Project(_Model):
         "BFRP, CFRP): E [GPa], eps_u, density [kg/m3], price [currency/kg].",
     )
     interventions: list[InterventionItem] = Field(
-        default_factory=list, description="Retrofit options: single options and sweeps."
+        default_factory=list,
+        max_length=MAX_OPTIONS,
+        description=f"Retrofit options: single options and sweeps (at most {MAX_OPTIONS} "
+        "options once the sweeps are expanded).",
     )
     analysis: AnalysisSpec = Field(default_factory=AnalysisSpec, description="Settings.")
     design: DesignSpec | None = Field(None, description="Design mode (optional).")
@@ -501,6 +658,7 @@ class Project(_Model):
                     "materials",
                     name,
                 )
+        self._check_option_count()
         known = self.material_names()
         for i, item in enumerate(self.interventions):
             if isinstance(item, Intervention):
@@ -519,6 +677,24 @@ class Project(_Model):
                     f"two different options are named {option.name!r}", "interventions", i
                 )
         return self
+
+    def _check_option_count(self) -> None:
+        sizes = [
+            1
+            if isinstance(item, Intervention)
+            else len(item.sweep.material) * len(item.sweep.position) * len(item.sweep.ratio)
+            for item in self.interventions
+        ]
+        total, running = sum(sizes), 0
+        for i, size in enumerate(sizes):
+            running += size
+            if running > MAX_OPTIONS:
+                raise located_error(
+                    f"the options expand to {total}, more than {MAX_OPTIONS} (each needs an IDA "
+                    "of every record); split the project",
+                    "interventions",
+                    i,
+                )
 
     @staticmethod
     def _check_material(name: str, known: list[str], *loc: str | int) -> None:

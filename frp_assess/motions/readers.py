@@ -26,7 +26,9 @@ one line naming the file and, where it applies, the line.
 from __future__ import annotations
 
 import math
+import os
 import re
+import stat
 from pathlib import Path
 
 import numpy as np
@@ -55,6 +57,15 @@ _ESM_MARKERS = ("NDATA", "SAMPLING_INTERVAL_S", "EVENT_NAME", "NETWORK", "STATIO
 
 #: relative tolerance on the uniformity of the time column of a two-column file
 TIME_TOLERANCE = 1e-6
+#: largest record file [bytes] (a 600 s record at 200 Hz in text is about 2 MB)
+MAX_RECORD_BYTES = 50_000_000
+#: most samples of one record (a header's NPTS above it is refused before reading on)
+MAX_SAMPLES = 2_000_000
+#: smallest time step [s] (as the project file's; a smaller one is a unit or header mistake)
+MIN_DT = 1e-4
+#: a data line of a table: digits, signs, exponents, points, commas, semicolons, blanks
+_DATA_LINE_RE = re.compile(r"^[\s0-9.,;eEdD+-]*[0-9][\s0-9.,;eEdD+-]*$")
+_DECIMAL_COMMA_RE = re.compile(r"[0-9],[0-9]")
 
 
 class RecordFormatError(InputError):
@@ -77,19 +88,97 @@ def unit_factor(units: str) -> float:
 
 
 def _read_lines(path: Path) -> list[str]:
+    """The lines of a regular text file of at most :data:`MAX_RECORD_BYTES`.
+
+    The file is checked before it is opened: a FIFO (reading blocks) or a device such as
+    ``/dev/zero`` (reading never ends) is refused.
+    """
     try:
-        raw = path.read_bytes()
+        info = os.stat(path)
     except FileNotFoundError:
         raise RecordFormatError("record file not found", file=str(path)) from None
-    except IsADirectoryError:
-        raise RecordFormatError("is a directory, not a record file", file=str(path)) from None
     except OSError as exc:
         raise RecordFormatError(
             f"cannot read record file ({exc.strerror or exc})", file=str(path)
         ) from None
+    if stat.S_ISDIR(info.st_mode):
+        raise RecordFormatError("is a directory, not a record file", file=str(path))
+    if not stat.S_ISREG(info.st_mode):
+        raise RecordFormatError(
+            "is not a regular file (a device, pipe or socket), not a record file", file=str(path)
+        )
+    if info.st_size > MAX_RECORD_BYTES:
+        raise RecordFormatError(
+            f"is {info.st_size / 1e6:.1f} MB; a record file is at most "
+            f"{MAX_RECORD_BYTES / 1e6:g} MB",
+            file=str(path),
+        )
+    try:
+        with open(path, "rb") as handle:
+            raw = handle.read(MAX_RECORD_BYTES + 1)
+    except OSError as exc:
+        raise RecordFormatError(
+            f"cannot read record file ({exc.strerror or exc})", file=str(path)
+        ) from None
+    if len(raw) > MAX_RECORD_BYTES:
+        raise RecordFormatError(
+            f"is larger than {MAX_RECORD_BYTES / 1e6:g} MB, the limit of a record file",
+            file=str(path),
+        )
     if b"\x00" in raw[:4096]:
         raise RecordFormatError("not a text file (binary content)", file=str(path))
     return raw.decode("utf-8", errors="replace").splitlines()
+
+
+def _table_lines(path: Path) -> tuple[list[str], str | None]:
+    """The lines of a table (one- or two-column file) with its separators made standard.
+
+    A table with semicolons between the columns (``0.01;0.0012``) or with decimal commas
+    (``0,01;0,0012``, ``0,01<tab>0,0012``) is read as what it is: the returned lines use
+    blanks and decimal points, and the second item says what was converted.  A table that is
+    ambiguous (one ``a,b`` a line without any decimal point: decimal comma or two columns?)
+    is refused with how to convert it.
+    """
+    lines = _read_lines(path)
+    data = [
+        (k, line)
+        for k, line in enumerate(lines, start=1)
+        if not line.lstrip().startswith("#") and _DATA_LINE_RE.match(line)
+    ]
+    if not data:
+        return lines, None
+    semicolons = any(";" in line for _, line in data)
+    points = any("." in line for _, line in data)
+    commas = any(_DECIMAL_COMMA_RE.search(line) for _, line in data)
+    if semicolons and commas and points:
+        k = next(k for k, line in data if "." in line)
+        raise RecordFormatError(
+            "a semicolon-separated table with both decimal points and decimal commas; use one "
+            "decimal mark (e.g. replace ',' by '.')",
+            file=str(path),
+            line=k,
+        )
+    if not semicolons and not (commas and not points):
+        return lines, None
+    if not semicolons:
+        several = any(len(line.split()) > 1 for _, line in data)
+        if not several:
+            k = data[0][0]
+            raise RecordFormatError(
+                f"{data[0][1].strip()!r} may be a decimal comma or two comma-separated "
+                "columns; write decimal points (e.g. 0.0012) and ',' or blanks between columns",
+                file=str(path),
+                line=k,
+            )
+    converted = dict(data)
+    out = [
+        converted[k].replace(";", " ").replace(",", "." if commas else " ")
+        if k in converted
+        else line
+        for k, line in enumerate(lines, start=1)
+    ]
+    what = "semicolon-separated" if semicolons else "blank-separated"
+    return out, what + (", decimal commas" if commas else "")
 
 
 def _to_float(token: str) -> float:
@@ -131,6 +220,13 @@ def _is_numeric_line(text: str) -> bool:
 def _check_dt(dt: float, path: Path, line: int | None) -> float:
     if not (math.isfinite(dt) and dt > 0.0):
         raise RecordFormatError(f"time step must be > 0, found {dt}", file=str(path), line=line)
+    if dt < MIN_DT:
+        raise RecordFormatError(
+            f"time step {dt:g} s is below {MIN_DT:g} s (check the header or the time column's "
+            "units: seconds)",
+            file=str(path),
+            line=line,
+        )
     return dt
 
 
@@ -153,9 +249,15 @@ def _at2_header(header: str, path: Path) -> tuple[int, float]:
         upper = header.upper()
         dt_first = "DT" in upper and "NPTS" in upper and upper.index("DT") < upper.index("NPTS")
         npts_f, dt = (second, first) if dt_first else (first, second)
-    if npts_f != int(npts_f) or npts_f < 0:
+    if not math.isfinite(npts_f) or npts_f != int(npts_f) or npts_f < 0:
         raise RecordFormatError(
             f"NPTS must be a whole number, found {npts_f:g}", file=str(path), line=4
+        )
+    if npts_f > MAX_SAMPLES:
+        raise RecordFormatError(
+            f"NPTS={npts_f:g} is more than {MAX_SAMPLES:,} samples, the limit of a record",
+            file=str(path),
+            line=4,
         )
     return int(npts_f), _check_dt(dt, path, 4)
 
@@ -236,7 +338,7 @@ def read_esm(path: str | Path, *, units: str = "g", name: str | None = None) -> 
         nd_text, nd_line = header["NDATA"]
         try:
             ndata = int(nd_text)
-        except ValueError:
+        except (ValueError, OverflowError):
             raise RecordFormatError(
                 f"NDATA is not a whole number: {nd_text!r}", file=str(path), line=nd_line
             ) from None
@@ -274,7 +376,8 @@ def read_two_column(path: str | Path, *, units: str = "g", name: str | None = No
     """Two columns: time [s], acceleration; uniform time step (1e-6 relative)."""
     path = Path(path)
     factor = unit_factor(units)
-    rows, _ = _data_rows(_read_lines(path), path)
+    lines, dialect = _table_lines(path)
+    rows, _ = _data_rows(lines, path)
     t: list[float] = []
     a: list[float] = []
     lines_of: list[int] = []
@@ -307,7 +410,16 @@ def read_two_column(path: str | Path, *, units: str = "g", name: str | None = No
     meta = {"units": units}
     if time[0] != 0.0:
         meta["t0_s"] = f"{time[0]:g}"
-    return _make(path, name, float(dt), np.asarray(a) * factor, "two-column", meta)
+    if dialect:
+        meta["read_as"] = dialect
+    return _make(
+        path,
+        name,
+        _check_dt(float(dt), path, lines_of[1]),
+        np.asarray(a) * factor,
+        "two-column",
+        meta,
+    )
 
 
 def read_one_column(
@@ -316,15 +428,33 @@ def read_one_column(
     """Samples only (one or more a line, leading non-numeric lines skipped), step ``dt`` [s]."""
     path = Path(path)
     factor = unit_factor(units)
+    lines, dialect = _table_lines(path)
+    rows, _ = _data_rows(lines, path)
     if dt is None:
-        raise InputError("a one-column record needs its time step (dt)", file=str(path), key="dt")
+        width = len(rows[0][1]) if rows else 1
+        shape = (
+            f"it holds {width} numbers a line and no time column or header with the time step"
+            if width > 2
+            else "it holds samples only, without their time step"
+        )
+        raise InputError(
+            f"cannot read this record's time step (dt): {shape}. Give dt [s] -- in a project "
+            "file 'dt:' of this file with 'format: one-column', in 'records check' --dt -- or "
+            "convert it to two columns 'time acceleration' (simulate and ida read .AT2 and "
+            "two-column files)",
+            file=str(path),
+            key="dt",
+        )
     if not (math.isfinite(dt) and dt > 0):
         raise InputError(f"dt must be > 0, got {dt}", key="dt")
-    rows, _ = _data_rows(_read_lines(path), path)
+    _check_dt(dt, path, None)
     values: list[float] = []
     for k, tokens in rows:
         values.extend(_floats(tokens, path, k))
-    return _make(path, name, float(dt), np.asarray(values) * factor, "one-column", {"units": units})
+    meta = {"units": units}
+    if dialect:
+        meta["read_as"] = dialect
+    return _make(path, name, float(dt), np.asarray(values) * factor, "one-column", meta)
 
 
 def detect_format(path: str | Path) -> str:
@@ -339,6 +469,7 @@ def detect_format(path: str | Path) -> str:
         return "esm"
     if len(lines) >= 4 and _NPTS_RE.search(lines[3]):
         return "at2"
+    lines, _ = _table_lines(path)
     for line in lines:
         text = line.strip()
         if text and not text.startswith("#") and _is_numeric_line(text):

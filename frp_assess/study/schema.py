@@ -21,13 +21,29 @@ Example (the paper's Table 1 is ``projects/paper-study.yaml``)::
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from pathlib import Path
-from typing import Any, Literal
+from typing import Annotated, Any, Literal
 
-import yaml
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
 
+from frp_assess.config.messages import Loc, schema_problems
+from frp_assess.config.problems import raise_all
+from frp_assess.config.schema import (
+    MAX_NAME_CHARS,
+    MAX_NOTES_CHARS,
+    MAX_RECORD_DURATION,
+    MAX_SEED,
+    MIN_TIME_STEP,
+    Number,
+)
+from frp_assess.config.yaml_source import parse_yaml, read_text_file
 from frp_assess.errors import InputError
+
+#: most cases of one study (the paper's Table 1 has 2,052)
+MAX_CASES = 100_000
+#: the keys only a study file has at its top level (see :func:`looks_like_study`)
+STUDY_ONLY_KEYS = frozenset({"height", "alpha_deg", "ratio", "material", "position", "spectrum"})
 
 
 class _Strict(BaseModel):
@@ -37,15 +53,17 @@ class _Strict(BaseModel):
 class MaterialSpec(_Strict):
     """An FRP bar material (overrides or extends the built-in library)."""
 
-    elastic_modulus: float = Field(gt=0, description="E [GPa]")
-    ultimate_strain: float = Field(gt=0, lt=1, description="ultimate strain ε_u [-]")
-    density: float = Field(default=2000.0, gt=0, description="density [kg/m³]")
+    elastic_modulus: Number = Field(gt=0, le=1000, description="E [GPa], 0-1000")
+    ultimate_strain: Number = Field(gt=0, lt=1, description="ultimate strain ε_u [-]")
+    density: Number = Field(default=2000.0, gt=0, le=10000, description="density [kg/m³]")
 
 
 class SpectrumSpec(_Strict):
     """A named target spectrum given by its text form (``frp_assess.motions.parse_spectrum``)."""
 
-    name: str = Field(min_length=1, description="label used in the outputs")
+    name: str = Field(
+        min_length=1, max_length=MAX_NAME_CHARS, description="label used in the outputs"
+    )
     spec: str = Field(
         min_length=1,
         description="A1|A2|A3, 'ec8:type=1,ground=B,ag=0.25', 'ntc:ag=..,F0=..,tc=..,soil=..' "
@@ -56,12 +74,40 @@ class SpectrumSpec(_Strict):
 class RecordSetSpec(_Strict):
     """Artificial spectrum-compatible records (SIMQKE), one set per spectrum."""
 
-    count: int = Field(default=7, ge=1, le=100, description="records per spectrum [-]")
-    seed: int = Field(default=1, ge=0, description="generator seed (same seed, same records)")
-    duration: float = Field(default=25.0, gt=0, description="total duration [s]")
-    dt: float = Field(default=0.005, gt=0, le=0.05, description="time step [s]")
-    stationary: float = Field(default=10.0, gt=0, description="stationary part [s]")
-    t1: float = Field(default=1.0, gt=0, description="reference period of the compliance range [s]")
+    count: int = Field(default=7, ge=1, le=100, description="records per spectrum [-], 1-100")
+    seed: int = Field(
+        default=1,
+        ge=0,
+        le=MAX_SEED,
+        description=f"generator seed, 0-{MAX_SEED} (same seed, same records)",
+    )
+    duration: Number = Field(
+        default=25.0,
+        gt=0,
+        le=MAX_RECORD_DURATION,
+        description=f"total duration [s], at most {MAX_RECORD_DURATION:g}",
+    )
+    dt: Number = Field(
+        default=0.005,
+        ge=MIN_TIME_STEP,
+        le=0.05,
+        description=f"time step [s], {MIN_TIME_STEP:g}-0.05",
+    )
+    stationary: Number = Field(
+        default=10.0, gt=0, description="stationary part [s], shorter than the duration"
+    )
+    t1: Number = Field(
+        default=1.0, gt=0, le=10, description="reference period of the compliance range [s], 0-10"
+    )
+
+    @model_validator(mode="after")
+    def _stationary(self) -> RecordSetSpec:
+        if self.stationary >= self.duration:
+            raise ValueError(
+                f"stationary part {self.stationary:g} s must be shorter than the duration "
+                f"{self.duration:g} s"
+            )
+        return self
 
 
 class ModelSpec(_Strict):
@@ -74,9 +120,9 @@ class ModelSpec(_Strict):
     )
     rupture: Literal["energy-transfer", "velocity-continuous"] = "energy-transfer"
     collapse: Literal["end-of-record", "first-exceedance"] = "end-of-record"
-    strain_factor: float = Field(default=0.5, gt=0, le=1, description="c in ε_max = c·ε_u [-]")
-    free_vibration_tail: float = Field(
-        default=0.0, ge=0, description="zero ground motion appended to each record [s]"
+    strain_factor: Number = Field(default=0.5, gt=0, le=1, description="c in ε_max = c·ε_u [-]")
+    free_vibration_tail: Number = Field(
+        default=0.0, ge=0, le=60, description="zero ground motion appended to each record [s], 0-60"
     )
 
     @field_validator("restitution")
@@ -90,9 +136,15 @@ class ModelSpec(_Strict):
 class IdaSpec(_Strict):
     """IDA search rule of MODEL.md §5."""
 
-    step_ratio: float = Field(default=1.10, gt=1.0, description="hunt ratio s [-]")
-    tolerance: float = Field(default=0.005, gt=0, le=0.1, description="bisection tolerance [-]")
-    max_multiplier: float = Field(default=100.0, gt=1.0, description="C_max / C₀ [-]")
+    step_ratio: Number = Field(
+        default=1.10, ge=1.01, le=10, description="hunt ratio s [-], 1.01-10"
+    )
+    tolerance: Number = Field(
+        default=0.005, ge=1e-4, le=0.1, description="bisection tolerance [-], 1e-4 to 0.1"
+    )
+    max_multiplier: Number = Field(
+        default=100.0, gt=1.0, le=1000, description="C_max / C₀ [-], 1-1000"
+    )
 
 
 Position = Literal["centred", "external"]
@@ -118,16 +170,20 @@ class StudyFile(_Strict):
     multiply the reinforced cases.
     """
 
-    name: str = Field(min_length=1, description="study name (output labels)")
-    description: str = ""
-    height: list[float] = Field(description="wall heights H [m]")
-    alpha_deg: list[float] | None = Field(
+    name: str = Field(
+        min_length=1, max_length=MAX_NAME_CHARS, description="study name (output labels)"
+    )
+    description: str = Field("", max_length=MAX_NOTES_CHARS)
+    height: list[Annotated[Number, Field(le=50)]] = Field(description="wall heights H [m], <= 50")
+    alpha_deg: list[Number] | None = Field(
         default=None, description="slenderness α [°], tan α = B/H (give this or thickness)"
     )
-    thickness: list[float] | None = Field(
-        default=None, description="wall thickness B [m] (give this or alpha_deg)"
+    thickness: list[Annotated[Number, Field(le=5)]] | None = Field(
+        default=None, description="wall thickness B [m], <= 5 (give this or alpha_deg)"
     )
-    ratio: list[float] = Field(default_factory=list, description="ρ [‰] of the active bars")
+    ratio: list[Annotated[Number, Field(le=20)]] = Field(
+        default_factory=list, description="ρ [‰] of the active bars, <= 20"
+    )
     material: list[str] = Field(default_factory=list, description="FRP material names")
     materials: dict[str, MaterialSpec] = Field(
         default_factory=dict, description="materials added to / overriding the library"
@@ -138,7 +194,9 @@ class StudyFile(_Strict):
     records: RecordSetSpec = RecordSetSpec()
     model: ModelSpec = ModelSpec()
     ida: IdaSpec = IdaSpec()
-    unit_weight: float = Field(default=18.0, gt=0, description="masonry unit weight w [kN/m³]")
+    unit_weight: Number = Field(
+        default=18.0, ge=5, le=30, description="masonry unit weight w [kN/m³], 5-30"
+    )
     chunk_size: int = Field(
         default=64, ge=1, le=100_000, description="cases per chunk written to disk [-]"
     )
@@ -188,7 +246,18 @@ class StudyFile(_Strict):
         labels = [spectrum_label(s) for s in self.spectrum]
         if len(set(labels)) != len(labels):
             raise ValueError(f"spectrum: repeated labels {labels}")
+        cases = self.case_count()
+        if cases > MAX_CASES:
+            raise ValueError(
+                f"the axes give {cases:,} cases, more than {MAX_CASES:,}; split the study"
+            )
         return self
+
+    def case_count(self) -> int:
+        """Number of cases: walls × mechanisms × spectra × (1 + reinforcements)."""
+        geometry = len(self.alpha_deg if self.alpha_deg is not None else self.thickness or [])
+        walls = len(self.height) * geometry * len(self.mechanism) * len(self.spectrum)
+        return walls * (1 + len(self.ratio) * len(self.material) * len(self.position))
 
 
 def spectrum_label(s: str | SpectrumSpec) -> str:
@@ -204,79 +273,57 @@ def spectrum_text(s: str | SpectrumSpec) -> str:
 # --- reading a file ---------------------------------------------------------------------------
 
 
-def _line_of(root: yaml.Node | None, loc: tuple[Any, ...]) -> int | None:
-    """1-based line of the YAML node at the key path ``loc`` (the deepest one found)."""
-    node = root
-    line = None if node is None else node.start_mark.line + 1
-    for part in loc:
-        if isinstance(node, yaml.MappingNode):
-            for k, v in node.value:
-                if isinstance(k, yaml.ScalarNode) and k.value == str(part):
-                    line = k.start_mark.line + 1
-                    node = v
-                    break
-            else:
-                return line
-        elif isinstance(node, yaml.SequenceNode) and isinstance(part, int):
-            if part >= len(node.value):
-                return line
-            node = node.value[part]
-            line = node.start_mark.line + 1
-        else:
-            return line
-    return line
+def looks_like_study(data: Any) -> bool:
+    """Whether parsed YAML is a study file rather than a project file.
+
+    A project file has ``wall``/``seismic`` blocks; a study file has none and lists its axes
+    (``height``, ``spectrum``, ...) at the top level.
+    """
+    if not isinstance(data, dict) or "wall" in data or "seismic" in data:
+        return False
+    return any(key in data for key in STUDY_ONLY_KEYS)
 
 
-def parse_study(data: Any, *, file: str | None = None, text: str | None = None) -> StudyFile:
-    """Validate a parsed study mapping; errors become one-line :class:`InputError`."""
+def parse_study(
+    data: Any,
+    *,
+    file: str | None = None,
+    text: str | None = None,
+    lines: Mapping[Loc, int] | None = None,
+) -> StudyFile:
+    """Validate a parsed study mapping; every problem as a one-line :class:`InputError`.
+
+    Args:
+        data: the parsed YAML.
+        file: shown as the file name in the messages.
+        text: the YAML text, to find the line of each problem (or give ``lines``).
+        lines: key path -> 1-based line, as :func:`~frp_assess.config.yaml_source.parse_yaml`
+            returns.
+    """
+    if lines is None and text is not None:
+        _, lines = parse_yaml(text, file or "<study>")
     if not isinstance(data, dict):
-        raise InputError("a study file must be a mapping of keys to values", file=file)
+        raise InputError(
+            "a study file must be a mapping of keys to values",
+            file=file,
+            line=1 if lines is not None else None,
+        )
     try:
         return StudyFile.model_validate(data)
     except ValidationError as exc:
-        err = exc.errors()[0]
-        loc = tuple(p for p in err["loc"] if not (isinstance(p, str) and "[" in p))
-        key = ".".join(str(p) for p in loc) or None
-        if err["type"] == "extra_forbidden":
-            allowed = _allowed_keys(loc[:-1])
-            msg = "unknown key" + (f"; allowed keys: {', '.join(allowed)}" if allowed else "")
-        else:
-            msg = str(err["msg"]).removeprefix("Value error, ")
-        line = None
-        if text is not None:
-            try:
-                line = _line_of(yaml.compose(text, Loader=yaml.SafeLoader), loc)
-            except yaml.YAMLError:
-                line = None
-        raise InputError(msg, file=file, line=line, key=key) from None
+        raise_all(schema_problems(StudyFile, exc, file=file, lines=lines))
+        raise  # pragma: no cover - schema_problems never returns an empty list
 
 
-def _allowed_keys(loc: tuple[Any, ...]) -> list[str]:
-    model: type[BaseModel] = StudyFile
-    for part in loc:
-        field = model.model_fields.get(str(part))
-        ann = None if field is None else field.annotation
-        if isinstance(ann, type) and issubclass(ann, BaseModel):
-            model = ann
-        else:
-            return []
-    return list(model.model_fields)
+def load_study_text(text: str, name: str) -> StudyFile:
+    """Parse and validate study YAML held in memory (``name``: shown in the messages)."""
+    data, lines = parse_yaml(text, name)
+    if data is None:
+        raise InputError("the study file is empty", file=name, line=1)
+    return parse_study(data, file=name, lines=lines)
 
 
 def load_study(path: str | Path) -> StudyFile:
-    """Read and validate a study file (YAML)."""
+    """Read and validate a study file (YAML, a regular file of at most 2 MB)."""
     p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise InputError(f"cannot read the study file: {exc.strerror}", file=str(p)) from None
-    try:
-        data = yaml.safe_load(text)
-    except yaml.YAMLError as exc:
-        mark = getattr(exc, "problem_mark", None)
-        raise InputError(
-            f"not valid YAML: {getattr(exc, 'problem', exc)}",
-            file=str(p),
-            line=None if mark is None else mark.line + 1,
-        ) from None
-    return parse_study(data, file=str(p), text=text)
+    return load_study_text(read_text_file(p, "study file"), str(p))
