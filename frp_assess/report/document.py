@@ -5,6 +5,7 @@ Public API: :func:`load_results`, :func:`build_story`, :func:`build_report`.
 
 from __future__ import annotations
 
+import datetime as _dt
 import json
 from collections.abc import Mapping
 from pathlib import Path
@@ -19,6 +20,7 @@ from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_path
 from frp_assess.report import sections
 from frp_assess.report import styles as st
+from frp_assess.text_safety import pdf_plain
 
 #: top-level keys the report reads
 REQUIRED_KEYS = (
@@ -84,12 +86,34 @@ def build_story(results: Mapping[str, Any]) -> list[Flowable]:
 
 
 def _fit(text: str, font: str, size: float, width: float) -> str:
-    """``text`` shortened with an ellipsis to fit ``width``."""
+    """``text`` (plain, any length) shortened with an ellipsis to fit ``width`` [pt].
+
+    Bisection on the length, so a very long name costs a few width measurements."""
+    text = pdf_plain(text)
     if stringWidth(text, font, size) <= width:
         return text
-    while text and stringWidth(text + "…", font, size) > width:
-        text = text[:-1]
-    return text + "…"
+    lo, hi = 0, len(text)  # text[:lo] + "…" fits; text[:hi] + "…" does not
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        if stringWidth(text[:mid] + "…", font, size) <= width:
+            lo = mid
+        else:
+            hi = mid
+    return text[:lo] + "…"
+
+
+def pdf_date(created: object) -> str:
+    """The PDF date (``D:YYYYMMDDhhmmss+00'00'``) of the results' ``created`` field
+    (``YYYY-MM-DD`` or an ISO date-time), so that CreationDate and ModDate say when the
+    results were computed and a rebuild from the same results is byte-identical.
+    An unreadable value gives 2000-01-01."""
+    try:
+        when = _dt.datetime.fromisoformat(str(created))
+    except ValueError:
+        when = _dt.datetime(2000, 1, 1)
+    if when.tzinfo is not None:
+        when = when.astimezone(_dt.UTC)
+    return when.strftime("D:%Y%m%d%H%M%S+00'00'")
 
 
 class NumberedCanvas(Canvas):
@@ -131,10 +155,10 @@ class ReportTemplate(BaseDocTemplate):
             rightMargin=st.MARGIN_X,
             topMargin=st.MARGIN_TOP,
             bottomMargin=st.MARGIN_BOTTOM,
-            title=f"Seismic assessment – {p.get('name') or 'wall'}",
-            author=str(p.get("engineer") or ""),
+            title=pdf_plain(f"Seismic assessment – {p.get('name') or 'wall'}"),
+            author=pdf_plain(p.get("engineer") or ""),
             subject="Rocking masonry wall retrofitted with vertical FRP rebars",
-            creator=f"frp-assess {results.get('software', {}).get('version', '')}",
+            creator=pdf_plain(f"frp-assess {results.get('software', {}).get('version', '')}"),
             invariant=1,
             initialFontName=st.FONT,
             initialFontSize=st.BODY_SIZE,
@@ -196,11 +220,19 @@ class ReportTemplate(BaseDocTemplate):
 def build_report(results: Mapping[str, Any], out_path: Path | str) -> None:
     """Write the PDF to ``out_path`` atomically (temp file in the same directory, then rename).
 
-    Two builds from the same results give byte-identical files.
+    Two builds from the same results give byte-identical files: the PDF's CreationDate and
+    ModDate are the results' date (:func:`pdf_date`), not the time of the build.
     """
     out_path = Path(out_path)
     out_path.parent.mkdir(parents=True, exist_ok=True)
     story = build_story(results)
+    date = pdf_date(results.get("created"))
+
+    def canvas(*args: Any, **kwargs: Any) -> NumberedCanvas:
+        c = NumberedCanvas(*args, **kwargs)
+        c.setDateFormatter(lambda *_: date)
+        return c
+
     with atomic_path(out_path) as tmp:
         doc = ReportTemplate(str(tmp), results)
-        doc.build(story, canvasmaker=NumberedCanvas)
+        doc.build(story, canvasmaker=canvas)
