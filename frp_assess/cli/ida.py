@@ -7,9 +7,7 @@ import json
 import math
 import sys
 
-from rich.console import Console
-from rich.table import Table
-
+from frp_assess.cli.output import Column, make_console, print_table, user
 from frp_assess.cli.wall_args import add_model_arguments, add_record_arguments, build_model
 from frp_assess.dynamics import IdaSettings, IdaTask, run_batch
 from frp_assess.errors import InputError
@@ -76,7 +74,7 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         print(json.dumps(out))
         return 0
-    console = Console()
+    console = make_console()
     w = model.wall
     console.print(
         f"wall B = {w.thickness:g} m, H = {w.height:g} m, α = {math.degrees(w.alpha):.3f}°, "
@@ -84,25 +82,32 @@ def run(args: argparse.Namespace) -> int:
         + (
             ""
             if model.rebars is None
-            else f"; rebars {model.rebars.position} ρ = {model.rebars.ratio:g} ‰, "
+            else f"; rebars {user(model.rebars.position)} ρ = {model.rebars.ratio:g} ‰, "
             f"K = {model.K:.3g}, θ_max = {model.theta_max:.4g} rad"
         )
     )
-    table = Table(title="Incremental dynamic analysis")
-    for col in ("record", "PGA [g]", "C", "a_dyn [g]", "q"):
-        table.add_column(col, justify="left" if col == "record" else "right")
+    cells = []
     for r in rows:
         if r["collapse_multiplier"] is None:
-            table.add_row(r["record"], f"{r['pga']:.4f}", "no collapse ≤ C_max", "—", "—")
+            cells.append([r["record"], f"{r['pga']:.4f}", "no collapse ≤ C_max", "—", "—"])
         else:
-            table.add_row(
-                r["record"],
-                f"{r['pga']:.4f}",
-                f"{r['collapse_multiplier']:.4f}",
-                f"{r['a_dyn']:.4f}",
-                f"{r['q']:.3f}",
+            cells.append(
+                [
+                    r["record"],
+                    f"{r['pga']:.4f}",
+                    f"{r['collapse_multiplier']:.4f}",
+                    f"{r['a_dyn']:.4f}",
+                    f"{r['q']:.3f}",
+                ]
             )
-    console.print(table)
+    columns = [
+        Column("record", text=True),
+        Column("PGA [g]"),
+        Column("collapse multiplier C [–]"),
+        Column("a_dyn [g]"),
+        Column("q [–]"),
+    ]
+    print_table(console, "Incremental dynamic analysis", columns, cells)
     if mean_a is not None:
         console.print(
             f"mean a_dyn = {mean_a:.4f} g, mean q = {mean_q:.3f}"

@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from frp_assess.cli.output import plain_line
 from frp_assess.report.document import build_report, load_results
 
 
@@ -24,5 +25,5 @@ def run(args: argparse.Namespace) -> int:
     results = load_results(args.results_dir)  # InputError -> one line, exit 2
     out = Path(args.out) if args.out else Path(args.results_dir) / "report.pdf"
     build_report(results, out)
-    print(f"wrote {out}")
+    print(f"wrote {plain_line(out)}")
     return 0

@@ -8,6 +8,7 @@ import math
 
 import numpy as np
 
+from frp_assess.cli.output import plain_line
 from frp_assess.cli.wall_args import add_model_arguments, add_record_arguments, build_model
 from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_write_text
@@ -62,7 +63,7 @@ def run(args: argparse.Namespace) -> int:
         w = model.wall
         print(
             f"wall B = {w.thickness:g} m, H = {w.height:g} m, α = {math.degrees(w.alpha):.3f}°, "
-            f"a_RM = {w.a_rm_g:.4f} g; record {record.name} (PGA {record.pga_g:.4f} g)"
+            f"a_RM = {w.a_rm_g:.4f} g; record {plain_line(record.name)} (PGA {record.pga_g:.4f} g)"
             f" × {args.scale:g}"
         )
         verdict = "COLLAPSE" if res.collapsed else "no collapse"
@@ -75,5 +76,5 @@ def run(args: argparse.Namespace) -> int:
         for r in res.ruptures:
             print(f"  rupture at t = {r.time:.4f} s, side {r.side:+d}")
         if args.out:
-            print(f"history written to {args.out}")
+            print(f"history written to {plain_line(args.out)}")
     return 0
