@@ -24,9 +24,17 @@ from frp_assess.text_safety import console as _console_text
 from frp_assess.text_safety import plain
 
 
+class _Console(Console):
+    """A rich console that lets a closed pipe reach :func:`frp_assess.cli.main` (rich itself
+    exits with status 1)."""
+
+    def on_broken_pipe(self) -> None:
+        raise BrokenPipeError
+
+
 def make_console(file: IO[str] | None = None, width: int | None = None) -> Console:
     """The console of the CLI printers (stdout unless ``file``)."""
-    return Console(file=file, width=width, emoji=False, highlight=False)
+    return _Console(file=file, width=width, emoji=False, highlight=False)
 
 
 def user(text: object) -> str:
