@@ -6,6 +6,7 @@ import argparse
 from pathlib import Path
 
 from frp_assess.cli.output import plain_line
+from frp_assess.output_set import FolderLock, check_out_file
 from frp_assess.report.document import build_report, load_results
 
 
@@ -22,8 +23,14 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    results = load_results(args.results_dir)  # InputError -> one line, exit 2
-    out = Path(args.out) if args.out else Path(args.results_dir) / "report.pdf"
-    build_report(results, out)
+    results_dir = Path(args.results_dir)
+    out = check_out_file(Path(args.out) if args.out else results_dir / "report.pdf")
+    results = load_results(results_dir)  # InputError -> one line, exit 2
+    if out.resolve().parent == results_dir.resolve():
+        # report.pdf is a member of the run's output set: replace it under the folder's lock
+        with FolderLock(results_dir, key="RESULTS_DIR"):
+            build_report(results, out)
+    else:
+        build_report(results, out)
     print(f"wrote {plain_line(out)}")
     return 0

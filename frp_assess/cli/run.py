@@ -12,11 +12,13 @@ from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, T
 
 from frp_assess.api import default_out_dir, prepare_records, run_assessment
 from frp_assess.assess.from_project import load_inputs
+from frp_assess.assess.inputs import AssessmentInputs
 from frp_assess.assess.results import recommendation_text
 from frp_assess.cli.output import Column, make_console, print_table, user
 from frp_assess.errors import Cancelled, InputError
 from frp_assess.motions import ComplianceReport
 from frp_assess.numbers import fmt_against
+from frp_assess.output_set import FolderLock, check_out_dir
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -119,7 +121,12 @@ def run(args: argparse.Namespace) -> int:
     inputs = load_inputs(path)  # InputError -> one line, exit 2, nothing written
     if args.jobs is not None and args.jobs < 1:
         raise InputError(f"expected at least 1 job, found {args.jobs}", key="--jobs")
-    out_dir = Path(args.out) if args.out else default_out_dir(path)
+    out_dir = check_out_dir(Path(args.out) if args.out else default_out_dir(path))
+    with FolderLock(out_dir):  # a second run into the same folder refuses here, exit 2
+        return _run(args, inputs, out_dir)
+
+
+def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> int:
     console = make_console()
     with console.status("generating/reading the records and checking them against the spectrum"):
         seismic = prepare_records(inputs)

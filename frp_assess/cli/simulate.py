@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+from pathlib import Path
 
 import numpy as np
 
@@ -14,6 +15,7 @@ from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_write_text
 from frp_assess.motions.readers import read_record
 from frp_assess.motions.record import G
+from frp_assess.output_set import check_out_file
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -35,6 +37,8 @@ def run(args: argparse.Namespace) -> int:
     model = build_model(args)
     if not (math.isfinite(args.scale) and args.scale > 0):
         raise InputError(f"expected a multiplier > 0, found {args.scale:g}", key="--scale")
+    if args.out:
+        check_out_file(Path(args.out))
     record = read_record(args.record, format=args.format, units=args.units)
     res = model.run(record.acc, record.dt, args.scale, history=args.out is not None)
     out = {
