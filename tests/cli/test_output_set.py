@@ -134,7 +134,7 @@ def test_leftovers_of_a_killed_run_are_removed(tmp_path: Path) -> None:
     stale_dir = out / f"{STAGING_PREFIX}999-deadbeef"
     (stale_dir / "records").mkdir(parents=True)
     (stale_dir / "results.json").write_text("{}", encoding="utf-8")
-    stale_pdf = out / ".report.pdf.abc123.tmp"
+    stale_pdf = out / ".report.pdf.abc123.tmp"  # what atomic_path leaves on kill -9
     stale_pdf.write_bytes(b"%PDF partial")
     keep = out / "notes.txt"  # not ours: left alone
     keep.write_text("mine", encoding="utf-8")

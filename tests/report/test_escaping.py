@@ -126,3 +126,34 @@ def test_capacity_shown_agrees_with_the_verdict(results: dict[str, Any]) -> None
         rec["collapse_multiplier"] = rec["collapse_multiplier"] or 1.0
     row = next(row for row in tb.ranking_table(r).rows if row[1] == case["name"])
     assert float(row[11]) < target and row[12] == "no"
+
+
+def test_names_and_codes_wrap_inside_their_cells(results: dict[str, Any]) -> None:
+    """A custom material name and the code of a check are wrapping paragraphs: they cannot run
+    into the next column ("CFRP-HMexternal", "EN 1998§3.2.3.1.2(3)")."""
+    from reportlab.platypus import Paragraph, Table
+
+    from frp_assess.report import sections
+
+    def tables(flowables: list[Any]) -> list[Table]:
+        found = []
+        for f in flowables:
+            if isinstance(f, Table):
+                found.append(f)
+            for inner in getattr(f, "_content", []):
+                found += tables([inner])
+        return found
+
+    def table_with(flowables: list[Any], header: str) -> Table:
+        for t in tables(flowables):
+            head = t._cellvalues[0]
+            if any(isinstance(h, Paragraph) and h.getPlainText() == header for h in head):
+                return t
+        raise AssertionError(header)
+
+    ranking = table_with(sections.options(results), "position")
+    for row in ranking._cellvalues[1:]:
+        assert isinstance(row[2], Paragraph) and isinstance(row[3], Paragraph)
+    compliance = table_with(sections.seismic(results), "clause")
+    for row in compliance._cellvalues[1:]:
+        assert isinstance(row[0], Paragraph) and isinstance(row[1], Paragraph)
