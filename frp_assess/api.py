@@ -1,7 +1,8 @@
 """The one application API that the CLI, the TUI and the report call.
 
 ``run_assessment`` takes validated :class:`~frp_assess.assess.inputs.AssessmentInputs`, runs
-everything, writes the results directory atomically and returns the results dict
+everything, writes the results directory as one set (locked, staged, swapped in:
+:mod:`frp_assess.output_set`) and returns the results dict
 (docs/results-json.md).  Progress and cancellation are plain callables/events.
 """
 

@@ -45,7 +45,8 @@ SET_NAMES: tuple[str, ...] = ("results.csv", "spectra.csv", "records", "report.p
 LOCK_NAME = ".lock"
 STAGING_PREFIX = ".staging-"
 
-_held: set[Path] = set()  # folders locked by this process (the lock is re-entrant in-process)
+#: folders locked by this process -> the thread holding the lock (re-entrant in that thread)
+_held: dict[Path, int] = {}
 _held_guard = threading.Lock()
 
 
@@ -106,8 +107,15 @@ class FolderLock:
         d = self.directory
         real = Path(os.path.realpath(d))
         with _held_guard:
-            if real in _held:
-                return self
+            owner = _held.get(real)
+        if owner == threading.get_ident():
+            return self
+        if owner is not None:
+            raise InputError(
+                f"another run of this process (pid {os.getpid()}) is writing {d}; wait for it "
+                "to finish or choose another folder",
+                key=self.key,
+            )
         try:
             d.mkdir(parents=True, exist_ok=True)
             fd = os.open(d / LOCK_NAME, os.O_RDWR | os.O_CREAT, 0o644)
@@ -131,7 +139,7 @@ class FolderLock:
         os.write(fd, f"{os.getpid()}\n".encode())
         self._fd = fd
         with _held_guard:
-            _held.add(real)
+            _held[real] = threading.get_ident()
         remove_leftovers(d)
         return self
 
@@ -144,7 +152,7 @@ class FolderLock:
         if self._fd is None:
             return
         with _held_guard:
-            _held.discard(Path(os.path.realpath(self.directory)))
+            _held.pop(Path(os.path.realpath(self.directory)), None)
         fcntl.flock(self._fd, fcntl.LOCK_UN)
         os.close(self._fd)
         self._fd = None

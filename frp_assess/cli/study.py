@@ -18,6 +18,7 @@ from rich.progress import (
 
 from frp_assess.cli.output import make_console, user
 from frp_assess.errors import Cancelled, InputError
+from frp_assess.output_set import check_out_dir
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -56,7 +57,7 @@ def run(args: argparse.Namespace) -> int:
     study = load_study(path)
     if args.jobs is not None and args.jobs < 1:
         raise InputError(f"expected at least 1 job, found {args.jobs}", key="--jobs")
-    out_dir = Path(args.out) if args.out else path.with_name(f"{path.stem}-results")
+    out_dir = check_out_dir(Path(args.out) if args.out else path.with_name(f"{path.stem}-results"))
     console = make_console()
     executor = make_executor(args.executor, args.scheduler, args.jobs)
     cancel = threading.Event()

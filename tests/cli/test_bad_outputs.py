@@ -21,6 +21,7 @@ from tests.cli.outputs_helpers import file_size_limit, run_cli, tiny_project, tr
 from tests.conftest import synthetic_record
 
 REPORT_DATA = Path(__file__).resolve().parents[1] / "report" / "data" / "results.json"
+STUDY = Path(__file__).resolve().parents[2] / "projects" / "paper-study-small.yaml"
 WALL = ["--thickness", "0.4", "--height", "3", "--mechanism", "one-sided"]
 
 
@@ -78,6 +79,11 @@ ROWS: list[tuple[str, Setup, str]] = [
         "run --out locked by another run",
         lambda t: ["run", str(tiny_project(t)), "--out", str(_locked(t))],
         "another frp-assess process (pid 4242)",
+    ),
+    (
+        "study --out is a file",
+        lambda t: ["study", str(STUDY), "--out", str(_a_file(t))],
+        "is a file, not a folder",
     ),
     (
         "simulate --out is a folder",

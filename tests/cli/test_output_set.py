@@ -142,3 +142,28 @@ def test_leftovers_of_a_killed_run_are_removed(tmp_path: Path) -> None:
     assert not stale_dir.exists() and not stale_pdf.exists()
     assert keep.read_text(encoding="utf-8") == "mine"
     assert_valid_set(out, pdf=True)
+
+
+def test_the_lock_is_reentrant_in_a_thread_and_exclusive_between_threads(tmp_path: Path) -> None:
+    import threading
+
+    from frp_assess.errors import InputError
+    from frp_assess.output_set import FolderLock
+
+    d = tmp_path / "out"
+    errors: list[str] = []
+
+    def other_thread() -> None:
+        try:
+            with FolderLock(d):
+                pass
+        except InputError as exc:
+            errors.append(str(exc))
+
+    with FolderLock(d), FolderLock(d):  # the same thread: re-entrant
+        t = threading.Thread(target=other_thread)
+        t.start()
+        t.join()
+    assert len(errors) == 1 and "is writing" in errors[0]
+    with FolderLock(d):  # released: free again
+        pass
