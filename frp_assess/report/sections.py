@@ -21,6 +21,13 @@ MECHANISM_TEXT = {
 }
 
 
+def design_statistic(results: Results) -> str:
+    """What the design a_dyn is: the mean of the records or the least favourable one."""
+    if tb.uses_mean(results):
+        return "the mean over the records"
+    return "the least favourable record, as there are fewer than 7 (EN 1998-1 §4.3.3.4.3)"
+
+
 def h1(text: str) -> Flowable:
     return markup(esc(text), "h1")
 
@@ -101,8 +108,9 @@ def summary(results: Results) -> list[Flowable]:
     out.append(
         markup(
             f"<b>The wall as it is.</b> Over the {n_rec} records the unreinforced wall "
-            f"overturns at a mean ground acceleration a<sub>dyn</sub> = "
-            f"{esc(tb.bound(tb.fmt_acc(tb.design_a_dyn(urm)), lb))} g, i.e. "
+            f"overturns at a design ground acceleration a<sub>dyn</sub> = "
+            f"{esc(tb.bound(tb.fmt_acc(tb.design_a_dyn(urm)), lb))} g "
+            f"({esc(design_statistic(results))}), i.e. "
             f"{esc(tb.bound(tb.fmt_capacity(urm, target), lb))} times the demand."
         )
     )

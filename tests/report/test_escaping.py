@@ -157,3 +157,20 @@ def test_names_and_codes_wrap_inside_their_cells(results: dict[str, Any]) -> Non
     compliance = table_with(sections.seismic(results), "clause")
     for row in compliance._cellvalues[1:]:
         assert isinstance(row[0], Paragraph) and isinstance(row[1], Paragraph)
+
+
+@pytest.mark.parametrize(
+    ("rule", "said"),
+    [
+        ("mean of the records", "the mean over the records"),
+        ("least favourable record (fewer than 7 records)", "the least favourable record"),
+    ],
+)
+def test_summary_names_the_statistic_it_shows(
+    results: dict[str, Any], rule: str, said: str
+) -> None:
+    r = copy.deepcopy(results)
+    r["model"]["design_value"] = rule
+    text = " ".join(story_text(build_story(r)).split())
+    sentence = next(s for s in text.split("The wall as it is.")[1:])[:300]
+    assert said in sentence and "mean ground acceleration" not in sentence
