@@ -38,7 +38,7 @@ class OneLineParser(argparse.ArgumentParser):
     """An ArgumentParser whose errors are a single line on stderr and exit code 2."""
 
     def error(self, message: str) -> NoReturn:
-        self.exit(2, f"{self.prog}: error: {message}\n")
+        self.exit(2, f"{plain(self.prog)}: error: {plain(message)}\n")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -66,8 +66,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     command quietly (exit 0; stdout is pointed at /dev/null so the interpreter's final flush
     does not fail again).
     """
-    parser = build_parser()
-    args = parser.parse_args(argv)
+    try:
+        parser = build_parser()  # imports every command: Ctrl-C may land here
+        args = parser.parse_args(argv)
+    except KeyboardInterrupt:
+        print("frp-assess: interrupted", file=sys.stderr)
+        return 130
     try:
         code = int(args.handler(args))
         sys.stdout.flush()  # a closed pipe shows here, not in the interpreter's exit

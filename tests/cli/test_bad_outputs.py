@@ -207,3 +207,11 @@ def test_full_disk_in_other_writers(tmp_path: Path, command: str) -> None:
     assert not [k for k in after if k.endswith(".tmp")]  # no half-written file left
     if command != "records generate":  # (records generate writes file by file)
         assert after == before
+
+
+def test_argument_errors_carry_no_escape_sequence(capsys: pytest.CaptureFixture[str]) -> None:
+    with pytest.raises(SystemExit) as exc:
+        main(["run", "x.yaml", "--jobs", "1\x1b[2J\x07"])
+    assert exc.value.code == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "\x1b" not in err and "\x07" not in err and "--jobs" in err
