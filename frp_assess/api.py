@@ -83,31 +83,11 @@ def run_assessment(
 
     Finished (case, record) IDAs are cached in ``out_dir/.cache`` as they complete, so a
     cancelled run (:class:`~frp_assess.errors.Cancelled`) loses nothing; result files are
-    only written once everything is computed, as one set (:func:`write_outputs`).  With
-    ``write`` the folder is locked for the whole run (:class:`~frp_assess.output_set.
-    FolderLock`): a second run into the same folder is refused with an InputError.
+    only written once everything is computed, as one set (:func:`write_outputs`, which
+    locks the folder; ``frp-assess run`` holds that lock for the whole run).
     """
-    out_dir = Path(out_dir)
-    if not write:
-        return _run(inputs, out_dir, jobs, progress, case_progress, cancel, seismic, created, None)
-    with FolderLock(out_dir):
-        return _run(inputs, out_dir, jobs, progress, case_progress, cancel, seismic, created, pdf)
-
-
-def _run(
-    inputs: AssessmentInputs,
-    out_dir: Path,
-    jobs: int | None,
-    progress: Progress | None,
-    case_progress: PairDone | None,
-    cancel: threading.Event | None,
-    seismic: SeismicInput | None,
-    created: str | None,
-    pdf: bool | None,
-) -> tuple[dict[str, Any], RunStats]:
-    """:func:`run_assessment`; ``pdf`` None: do not write the output set."""
-    write = pdf is not None
     report = progress or _noop
+    out_dir = Path(out_dir)
     if seismic is None:
         report("records", 0, 1)
         seismic = build_records(inputs)
@@ -166,7 +146,7 @@ def _run(
     )
     if write:
         report("writing", 0, 1)
-        write_outputs(results, seismic, out_dir, pdf=bool(pdf))
+        write_outputs(results, seismic, out_dir, pdf=pdf)
         report("writing", 1, 1)
     return results, RunStats(runner.computed, runner.reused, out_dir)
 

@@ -7,8 +7,9 @@ A results folder holds the output set of one run — ``results.json``, ``results
 
 - **Checked first** (:func:`check_out_dir`): a folder that is a file, lies under a file, is a
   device (``/dev/null``) or cannot be written is refused with one line before any work.
-- **Locked** (:class:`FolderLock`): a run holds an exclusive ``flock`` on ``.lock`` in the
-  folder (the file holds the pid of the holder) from before the IDA until its set is written.
+- **Locked** (:class:`FolderLock`): writing a set takes an exclusive ``flock`` on ``.lock``
+  in the folder (the file holds the pid of the holder); ``frp-assess run`` holds it from
+  before the IDA until its set is written.
   A second run into the same folder refuses at once (:class:`~frp_assess.errors.InputError`,
   exit 2) and names the pid; the lock dies with its process, so ``kill -9`` leaves no stale
   lock.  ``frp-assess report`` takes the same lock to replace ``report.pdf``.
