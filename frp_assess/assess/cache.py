@@ -9,6 +9,7 @@ again, with one warning line.
 from __future__ import annotations
 
 import hashlib
+import importlib
 import json
 import math
 import os
@@ -28,7 +29,7 @@ from frp_assess.io_utils import atomic_write_text
 from frp_assess.text_safety import plain
 
 #: Bump when the numerics change in a way that changes results.
-CACHE_VERSION = 2  # 2: IdaResult.survivor_multiplier
+CACHE_VERSION = 3  # 2: IdaResult.survivor_multiplier; 3: keyed on every ModelOptions field
 
 
 def record_digest(acc: np.ndarray, dt: float) -> str:
@@ -54,7 +55,8 @@ def task_key(model: RockingModel, record_hash: str, settings: IdaSettings) -> st
             bars.ratio,
             bars.strain_factor,
         ],
-        "model": [o.restitution, o.rupture, o.collapse, o.free_vibration_tail, o.max_step],
+        # every field of the model options, whatever they are (integrator settings included)
+        "model": {f.name: getattr(o, f.name) for f in fields(o)},
         "ida": [settings.step_ratio, settings.tolerance, settings.max_multiplier],
         "record": record_hash,
     }
@@ -66,11 +68,11 @@ def cache_file(directory: Path, key: str) -> Path:
     return directory / f"{key}.json"
 
 
-#: largest cache entry read [bytes]; a valid one is about 200 bytes
-MAX_ENTRY_BYTES = 4096
+#: largest cache entry read [bytes]; a valid one is well under 10 kB
+MAX_ENTRY_BYTES = 256 * 1024
+#: most points of a stored IDA curve (a search runs a few dozen time histories)
+MAX_CURVE_POINTS = 10_000
 
-_FLOAT_FIELDS = ("pga", "c0")
-_OPTIONAL_FIELDS = ("collapse_multiplier", "a_dyn", "q", "survivor_multiplier")
 _FIELDS = frozenset(f.name for f in fields(IdaResult))
 
 
@@ -82,21 +84,58 @@ def _warn_stderr(message: str) -> None:
     print(f"frp-assess: warning: {plain(message)}", file=sys.stderr)
 
 
-def _number(data: dict[str, Any], key: str, *, optional: bool = False) -> None:
-    v = data[key]
+def _positive(key: str, v: object, *, optional: bool = False, zero: bool = False) -> object:
     if v is None and optional:
-        return
+        return v
     # bool is an int to Python, but never a number here
     if isinstance(v, bool) or not isinstance(v, int | float):
         raise DamagedEntry(f"{key} is {type(v).__name__}, not a number")
-    if not (math.isfinite(v) and v > 0):
-        raise DamagedEntry(f"{key} = {v!r} is not a finite number > 0")
+    if not (math.isfinite(v) and (v >= 0 if zero else v > 0)):
+        raise DamagedEntry(f"{key} = {v!r} is not a finite number {'>=' if zero else '>'} 0")
+    return v
+
+
+def _count(key: str, v: object) -> object:
+    if isinstance(v, bool) or not isinstance(v, int) or v < 0:
+        raise DamagedEntry(f"{key} = {v!r} is not a count")
+    return v
+
+
+def _curve(key: str, v: object) -> tuple[object, ...]:
+    """The IDA curve (a list of {multiplier, collapsed, peak_ratio}) as IdaPoint objects."""
+    point_type = getattr(importlib.import_module("frp_assess.dynamics.ida"), "IdaPoint", None)
+    if point_type is None or not isinstance(v, list) or len(v) > MAX_CURVE_POINTS:
+        raise DamagedEntry(f"{key} is not a list of at most {MAX_CURVE_POINTS} points")
+    names = {f.name for f in fields(point_type)}
+    points = []
+    for p in v:
+        if not isinstance(p, dict) or set(p) != names:
+            raise DamagedEntry(f"a point of {key} is not an object with keys {sorted(names)}")
+        if not isinstance(p["collapsed"], bool):
+            raise DamagedEntry(f"{key}: collapsed is {type(p['collapsed']).__name__}, not a bool")
+        _positive(f"{key}: multiplier", p["multiplier"])
+        _positive(f"{key}: peak_ratio", p["peak_ratio"], zero=True)
+        points.append(point_type(**p))
+    return tuple(points)
+
+
+#: how each field of an IdaResult is checked (every field must have one: see the tests)
+FIELD_CHECKS: dict[str, Callable[[str, Any], object]] = {
+    "pga": _positive,
+    "c0": _positive,
+    "collapse_multiplier": lambda k, v: _positive(k, v, optional=True),
+    "a_dyn": lambda k, v: _positive(k, v, optional=True),
+    "q": lambda k, v: _positive(k, v, optional=True),
+    "runs": _count,
+    "survivor_multiplier": lambda k, v: _positive(k, v, optional=True),
+    "curve": _curve,
+}
 
 
 def parse_entry(text: str) -> IdaResult:
     """The :class:`IdaResult` stored in ``text``; :class:`DamagedEntry` unless every field is
     present with its exact type (numbers finite and > 0, ``runs`` a non-negative int, no
-    booleans, no NaN or Infinity, no extra keys)."""
+    booleans for numbers, no NaN or Infinity, no extra keys)."""
 
     def no_constants(name: str) -> None:
         raise DamagedEntry(f"{name} is not a number")
@@ -113,17 +152,16 @@ def parse_entry(text: str) -> IdaResult:
         missing = sorted(_FIELDS - set(data))
         extra = sorted(set(data) - _FIELDS)
         raise DamagedEntry(f"keys missing {missing}, unexpected {extra}")
-    for key in _FLOAT_FIELDS:
-        _number(data, key)
-    for key in _OPTIONAL_FIELDS:
-        _number(data, key, optional=True)
+    values = {}
+    for key in sorted(_FIELDS):
+        check = FIELD_CHECKS.get(key)
+        if check is None:
+            raise DamagedEntry(f"no check for the field {key}")
+        values[key] = check(key, data[key])
     collapsed = [data[k] is not None for k in ("collapse_multiplier", "a_dyn", "q")]
     if any(collapsed) and not all(collapsed):
         raise DamagedEntry("collapse_multiplier, a_dyn and q are not all set or all null")
-    runs = data["runs"]
-    if isinstance(runs, bool) or not isinstance(runs, int) or runs < 0:
-        raise DamagedEntry(f"runs = {runs!r} is not a count")
-    return IdaResult(**data)
+    return IdaResult(**values)
 
 
 class IdaCache:

@@ -5,11 +5,12 @@ from __future__ import annotations
 import json
 import os
 from collections.abc import Callable
+from dataclasses import asdict, fields
 from pathlib import Path
 
 import pytest
 
-from frp_assess.assess.cache import MAX_ENTRY_BYTES, IdaCache, cache_file
+from frp_assess.assess.cache import FIELD_CHECKS, MAX_ENTRY_BYTES, IdaCache, cache_file
 from frp_assess.cli import main
 from frp_assess.dynamics import IdaResult
 from tests.cli.outputs_helpers import tiny_project
@@ -17,11 +18,12 @@ from tests.cli.outputs_helpers import tiny_project
 GOOD = IdaResult(
     pga=1.2, c0=0.8, collapse_multiplier=4.1, a_dyn=4.9, q=5.0, runs=23, survivor_multiplier=4.0
 )
+HAS_CURVE = "curve" in {f.name for f in fields(IdaResult)}
 KEY = "k" * 64
 
 
 def _entry(**change: object) -> str:
-    data = {**GOOD.__dict__, **change}
+    data = {**asdict(GOOD), **change}
     return json.dumps(data)
 
 
@@ -45,7 +47,7 @@ DAMAGE: list[tuple[str, Callable[[Path], None]]] = [
     ("deep JSON", _write("[" * 3000 + "]" * 3000)),
     ("truncated", _write(_entry()[:40])),
     ("not UTF-8", lambda p: p.write_bytes(b"\xff\xfe{}")),
-    ("huge", _write(" " * (MAX_ENTRY_BYTES * 50) + _entry())),
+    ("huge", _write(" " * (MAX_ENTRY_BYTES + 1) + _entry())),
     ("a folder", lambda p: p.mkdir()),
     ("symlink to /dev/zero", lambda p: p.symlink_to("/dev/zero")),
     ("a FIFO", lambda p: os.mkfifo(p)),
@@ -105,3 +107,26 @@ def test_run_recomputes_damaged_entries(tmp_path: Path, capsys: pytest.CaptureFi
     assert "Traceback" not in cap.err
     assert f"{len(entries)} IDAs computed, 0 reused" in " ".join(cap.out.split())
     assert (out / "results.json").read_bytes() == first
+
+
+def test_every_field_of_an_ida_result_is_checked() -> None:
+    """A field added to IdaResult needs its check here, or every entry reads as damaged."""
+    assert {f.name for f in fields(IdaResult)} <= set(FIELD_CHECKS)
+
+
+@pytest.mark.skipif(not HAS_CURVE, reason="IdaResult has no IDA curve in this version")
+@pytest.mark.parametrize(
+    "point",
+    [
+        {"multiplier": True, "collapsed": False, "peak_ratio": 0.5},
+        {"multiplier": 1.0, "collapsed": 1, "peak_ratio": 0.5},
+        {"multiplier": 1.0, "collapsed": False},
+        {"multiplier": 1.0, "collapsed": False, "peak_ratio": -1.0},
+        [1.0, False, 0.5],
+    ],
+)
+def test_damaged_curve_point(tmp_path: Path, point: object) -> None:
+    warnings: list[str] = []
+    cache = IdaCache(tmp_path / ".cache", warn=warnings.append)
+    cache_file(tmp_path / ".cache", KEY).write_text(_entry(curve=[point]), encoding="utf-8")
+    assert cache.get(KEY) is None and len(warnings) == 1
