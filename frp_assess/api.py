@@ -1,7 +1,8 @@
 """The one application API that the CLI, the TUI and the report call.
 
 ``run_assessment`` takes validated :class:`~frp_assess.assess.inputs.AssessmentInputs`, runs
-everything, writes the results directory atomically and returns the results dict
+everything, writes the results directory as one set (locked, staged, swapped in:
+:mod:`frp_assess.output_set`) and returns the results dict
 (docs/results-json.md).  Progress and cancellation are plain callables/events.
 """
 
@@ -29,8 +30,11 @@ from frp_assess.assess.results import (
 )
 from frp_assess.assess.runner import DesignResult, IdaRunner, design_search, summarise
 from frp_assess.assess.seismic import SeismicInput, build_records
+from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_write_text
 from frp_assess.motions import write_at2
+from frp_assess.output_set import FolderLock, staged_set
+from frp_assess.text_safety import plain
 
 #: progress(stage, done, total); stages: "records", "ida", "design", "writing"
 Progress = Callable[[str, int, int], None]
@@ -79,7 +83,8 @@ def run_assessment(
 
     Finished (case, record) IDAs are cached in ``out_dir/.cache`` as they complete, so a
     cancelled run (:class:`~frp_assess.errors.Cancelled`) loses nothing; result files are
-    only written, atomically, once everything is computed.
+    only written once everything is computed, as one set (:func:`write_outputs`, which
+    locks the folder; ``frp-assess run`` holds that lock for the whole run).
     """
     report = progress or _noop
     out_dir = Path(out_dir)
@@ -182,15 +187,42 @@ def governing_histories(
 def write_outputs(
     results: dict[str, Any], seismic: SeismicInput, out_dir: Path, *, pdf: bool
 ) -> None:
-    """results.json, results.csv, spectra.csv, records/*.AT2 and (if available) report.pdf."""
-    out_dir.mkdir(parents=True, exist_ok=True)
+    """Write the output set — results.json, results.csv, spectra.csv, records/*.AT2 and (if
+    ``pdf`` and available) report.pdf — as one set (:mod:`frp_assess.output_set`).
+
+    The folder is locked for the duration, the set is written into a fresh staging folder
+    inside ``out_dir`` and swapped in only once complete: any failure (disk full, an error in
+    the PDF, an interrupt) leaves the previous set as it was.  A record name that is not a
+    plain file name is refused (:class:`~frp_assess.errors.InputError`) before anything is
+    written.
+    """
     for rec in seismic.records:
-        write_at2(rec, out_dir / "records" / f"{rec.name}.AT2", f"{rec.name}: {rec.source}")
-    atomic_write_text(out_dir / "spectra.csv", spectra_csv(results))
-    atomic_write_text(out_dir / "results.csv", results_csv(results))
-    atomic_write_text(out_dir / "results.json", results_json(results))
-    if pdf:
-        build_pdf(results, out_dir / "report.pdf")
+        if not _is_plain_file_name(rec.name):
+            raise InputError(
+                f"record name {rec.name!r} cannot be a file name (no '/', '\\', '..', "
+                "leading dot or control characters)",
+                key="records",
+            )
+    with FolderLock(out_dir), staged_set(out_dir) as staging:
+        for rec in seismic.records:
+            write_at2(rec, staging / "records" / f"{rec.name}.AT2", f"{rec.name}: {rec.source}")
+        atomic_write_text(staging / "spectra.csv", spectra_csv(results))
+        atomic_write_text(staging / "results.csv", results_csv(results))
+        atomic_write_text(staging / "results.json", results_json(results))
+        if pdf:
+            build_pdf(results, staging / "report.pdf")
+
+
+def _is_plain_file_name(name: str) -> bool:
+    return (
+        bool(name)
+        and not name.startswith(".")
+        and "/" not in name
+        and "\\" not in name
+        and "\x00" not in name
+        and name == plain(name)
+        and len(name.encode("utf-8")) <= 200
+    )
 
 
 def build_pdf(results: dict[str, Any], path: Path) -> bool:

@@ -1,24 +1,35 @@
 """On-disk cache of finished IDAs, keyed by everything that determines the result.
 
 One small JSON file per (case, record), written atomically as soon as its IDA finishes, so an
-interrupted run loses nothing and an unchanged rerun computes nothing.
+interrupted run loses nothing and an unchanged rerun computes nothing.  An entry is trusted
+only after a strict check of every field (:func:`parse_entry`); a damaged one is computed
+again, with one warning line.
 """
 
 from __future__ import annotations
 
 import hashlib
+import importlib
 import json
-from dataclasses import asdict
+import math
+import os
+import shutil
+import stat
+import sys
+from collections.abc import Callable
+from dataclasses import asdict, fields
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
 from frp_assess import __version__
 from frp_assess.dynamics import IdaResult, IdaSettings, RockingModel
 from frp_assess.io_utils import atomic_write_text
+from frp_assess.text_safety import plain
 
 #: Bump when the numerics change in a way that changes results.
-CACHE_VERSION = 2  # 2: IdaResult.survivor_multiplier
+CACHE_VERSION = 3  # 2: IdaResult.survivor_multiplier; 3: keyed on every ModelOptions field
 
 
 def record_digest(acc: np.ndarray, dt: float) -> str:
@@ -44,7 +55,8 @@ def task_key(model: RockingModel, record_hash: str, settings: IdaSettings) -> st
             bars.ratio,
             bars.strain_factor,
         ],
-        "model": [o.restitution, o.rupture, o.collapse, o.free_vibration_tail, o.max_step],
+        # every field of the model options, whatever they are (integrator settings included)
+        "model": {f.name: getattr(o, f.name) for f in fields(o)},
         "ida": [settings.step_ratio, settings.tolerance, settings.max_multiplier],
         "record": record_hash,
     }
@@ -56,12 +68,118 @@ def cache_file(directory: Path, key: str) -> Path:
     return directory / f"{key}.json"
 
 
-class IdaCache:
-    """A directory of ``<key>.json`` files; ``None`` directory disables caching."""
+#: largest cache entry read [bytes]; a valid one is well under 10 kB
+MAX_ENTRY_BYTES = 256 * 1024
+#: most points of a stored IDA curve (a search runs a few dozen time histories)
+MAX_CURVE_POINTS = 10_000
 
-    def __init__(self, directory: Path | None) -> None:
+_FIELDS = frozenset(f.name for f in fields(IdaResult))
+
+
+class DamagedEntry(ValueError):
+    """A cache entry that is not a valid IDA result (the message says why)."""
+
+
+def _warn_stderr(message: str) -> None:
+    print(f"frp-assess: warning: {plain(message)}", file=sys.stderr)
+
+
+def _positive(key: str, v: object, *, optional: bool = False, zero: bool = False) -> object:
+    if v is None and optional:
+        return v
+    # bool is an int to Python, but never a number here
+    if isinstance(v, bool) or not isinstance(v, int | float):
+        raise DamagedEntry(f"{key} is {type(v).__name__}, not a number")
+    if not (math.isfinite(v) and (v >= 0 if zero else v > 0)):
+        raise DamagedEntry(f"{key} = {v!r} is not a finite number {'>=' if zero else '>'} 0")
+    return v
+
+
+def _count(key: str, v: object) -> object:
+    if isinstance(v, bool) or not isinstance(v, int) or v < 0:
+        raise DamagedEntry(f"{key} = {v!r} is not a count")
+    return v
+
+
+def _curve(key: str, v: object) -> tuple[object, ...]:
+    """The IDA curve (a list of {multiplier, collapsed, peak_ratio}) as IdaPoint objects."""
+    point_type = getattr(importlib.import_module("frp_assess.dynamics.ida"), "IdaPoint", None)
+    if point_type is None or not isinstance(v, list) or len(v) > MAX_CURVE_POINTS:
+        raise DamagedEntry(f"{key} is not a list of at most {MAX_CURVE_POINTS} points")
+    names = {f.name for f in fields(point_type)}
+    points = []
+    for p in v:
+        if not isinstance(p, dict) or set(p) != names:
+            raise DamagedEntry(f"a point of {key} is not an object with keys {sorted(names)}")
+        if not isinstance(p["collapsed"], bool):
+            raise DamagedEntry(f"{key}: collapsed is {type(p['collapsed']).__name__}, not a bool")
+        _positive(f"{key}: multiplier", p["multiplier"])
+        _positive(f"{key}: peak_ratio", p["peak_ratio"], zero=True)
+        points.append(point_type(**p))
+    return tuple(points)
+
+
+#: how each field of an IdaResult is checked (every field must have one: see the tests)
+FIELD_CHECKS: dict[str, Callable[[str, Any], object]] = {
+    "pga": _positive,
+    "c0": _positive,
+    "collapse_multiplier": lambda k, v: _positive(k, v, optional=True),
+    "a_dyn": lambda k, v: _positive(k, v, optional=True),
+    "q": lambda k, v: _positive(k, v, optional=True),
+    "runs": _count,
+    "survivor_multiplier": lambda k, v: _positive(k, v, optional=True),
+    "curve": _curve,
+}
+
+
+def parse_entry(text: str) -> IdaResult:
+    """The :class:`IdaResult` stored in ``text``; :class:`DamagedEntry` unless every field is
+    present with its exact type (numbers finite and > 0, ``runs`` a non-negative int, no
+    booleans for numbers, no NaN or Infinity, no extra keys)."""
+
+    def no_constants(name: str) -> None:
+        raise DamagedEntry(f"{name} is not a number")
+
+    try:
+        data = json.loads(text, parse_constant=no_constants)
+    except RecursionError:
+        raise DamagedEntry("nested too deeply") from None
+    except json.JSONDecodeError as exc:
+        raise DamagedEntry(f"invalid JSON ({exc.msg})") from None
+    if not isinstance(data, dict):
+        raise DamagedEntry(f"a JSON {type(data).__name__}, not an object")
+    if set(data) != _FIELDS:
+        missing = sorted(_FIELDS - set(data))
+        extra = sorted(set(data) - _FIELDS)
+        raise DamagedEntry(f"keys missing {missing}, unexpected {extra}")
+    values = {}
+    for key in sorted(_FIELDS):
+        check = FIELD_CHECKS.get(key)
+        if check is None:
+            raise DamagedEntry(f"no check for the field {key}")
+        values[key] = check(key, data[key])
+    collapsed = [data[k] is not None for k in ("collapse_multiplier", "a_dyn", "q")]
+    if any(collapsed) and not all(collapsed):
+        raise DamagedEntry("collapse_multiplier, a_dyn and q are not all set or all null")
+    return IdaResult(**values)
+
+
+class IdaCache:
+    """A directory of ``<key>.json`` files; ``None`` directory disables caching.
+
+    An entry is used only if it is a regular file (not a folder, symlink or device) of at
+    most :data:`MAX_ENTRY_BYTES` that :func:`parse_entry` accepts; anything else is removed
+    with one warning line (``warn``, default stderr) and the IDA is computed again.  A
+    ``.cache`` that is not a folder is replaced by one, with a warning.
+    """
+
+    def __init__(self, directory: Path | None, warn: Callable[[str], None] | None = None) -> None:
         self.directory = directory
+        self.warn = warn or _warn_stderr
         if directory is not None:
+            if os.path.lexists(directory) and not directory.is_dir():
+                self.warn(f"{directory} is not a folder; replacing it with an empty cache")
+                _remove(directory)
             directory.mkdir(parents=True, exist_ok=True)
 
     def get(self, key: str) -> IdaResult | None:
@@ -69,11 +187,44 @@ class IdaCache:
             return None
         path = cache_file(self.directory, key)
         try:
-            data = json.loads(path.read_text(encoding="utf-8"))
-            return IdaResult(**data)
-        except (OSError, ValueError, TypeError):
+            return _read_entry(path)
+        except FileNotFoundError:
+            return None
+        except (DamagedEntry, OSError, UnicodeDecodeError) as exc:
+            reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc)
+            self.warn(f"damaged cache entry {path.name} ({reason}); computing it again")
+            _remove(path)
             return None
 
     def put(self, key: str, result: IdaResult) -> None:
         if self.directory is not None:
-            atomic_write_text(cache_file(self.directory, key), json.dumps(asdict(result)))
+            path = cache_file(self.directory, key)
+            if os.path.lexists(path) and (path.is_symlink() or not path.is_file()):
+                _remove(path)
+            atomic_write_text(path, json.dumps(asdict(result)))
+
+
+def _read_entry(path: Path) -> IdaResult:
+    st = os.lstat(path)  # FileNotFoundError: a miss
+    if stat.S_ISLNK(st.st_mode):
+        raise DamagedEntry("a symbolic link, not a file")
+    if not stat.S_ISREG(st.st_mode):
+        raise DamagedEntry("not a regular file")
+    if st.st_size > MAX_ENTRY_BYTES:
+        raise DamagedEntry(f"{st.st_size} bytes, more than {MAX_ENTRY_BYTES}")
+    fd = os.open(path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK)
+    with os.fdopen(fd, "rb") as fh:
+        raw = fh.read(MAX_ENTRY_BYTES + 1)
+    if len(raw) > MAX_ENTRY_BYTES:
+        raise DamagedEntry(f"more than {MAX_ENTRY_BYTES} bytes")
+    return parse_entry(raw.decode("utf-8"))
+
+
+def _remove(path: Path) -> None:
+    try:
+        if path.is_dir() and not path.is_symlink():
+            shutil.rmtree(path)
+        else:
+            path.unlink(missing_ok=True)
+    except OSError:
+        pass

@@ -10,12 +10,14 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import sys
 from collections.abc import Sequence
 from typing import NoReturn
 
 from frp_assess import __version__
 from frp_assess.errors import Cancelled, InputError
+from frp_assess.text_safety import plain
 
 #: Subcommand modules of this package, in the order `--help` lists them.
 COMMAND_MODULES: tuple[str, ...] = (
@@ -36,7 +38,7 @@ class OneLineParser(argparse.ArgumentParser):
     """An ArgumentParser whose errors are a single line on stderr and exit code 2."""
 
     def error(self, message: str) -> NoReturn:
-        self.exit(2, f"{self.prog}: error: {message}\n")
+        self.exit(2, f"{plain(self.prog)}: error: {plain(message)}\n")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -55,17 +57,54 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """Entry point of the console script; returns the process exit code."""
-    parser = build_parser()
-    args = parser.parse_args(argv)
+    """Entry point of the console script; returns the process exit code.
+
+    Every error a user can cause ends as ONE line on stderr (control characters in it
+    replaced, :func:`frp_assess.text_safety.plain`) and exit code 2: an
+    :class:`~frp_assess.errors.InputError`, or an ``OSError`` of the file system (disk full,
+    permission denied, ...).  A closed output pipe (``frp-assess schema | head``) ends the
+    command quietly (exit 0; stdout is pointed at /dev/null so the interpreter's final flush
+    does not fail again).
+    """
     try:
-        return int(args.handler(args))
+        parser = build_parser()  # imports every command: Ctrl-C may land here
+        args = parser.parse_args(argv)
+    except KeyboardInterrupt:
+        print("frp-assess: interrupted", file=sys.stderr)
+        return 130
+    try:
+        code = int(args.handler(args))
+        sys.stdout.flush()  # a closed pipe shows here, not in the interpreter's exit
+        return code
+    except BrokenPipeError:
+        return _closed_pipe()
     except InputError as exc:
-        print(f"frp-assess: error: {exc}", file=sys.stderr)
-        return 2
+        return _fail(str(exc))
     except (KeyboardInterrupt, Cancelled):
         print("frp-assess: interrupted; finished results are kept in the cache", file=sys.stderr)
         return 130
+    except OSError as exc:
+        where = f"{exc.filename}: " if exc.filename is not None else ""
+        return _fail(f"{where}{exc.strerror or exc}")
+
+
+def _fail(message: str) -> int:
+    try:
+        print(f"frp-assess: error: {plain(message)}", file=sys.stderr)
+    except BrokenPipeError:
+        pass
+    return 2
+
+
+def _closed_pipe() -> int:
+    """The reader of stdout went away: stop writing, say nothing, exit 0."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        os.close(devnull)
+    except (OSError, ValueError):
+        pass
+    return 0
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -5,11 +5,9 @@ from __future__ import annotations
 import argparse
 import json
 import math
-import sys
 
-from rich.console import Console
-from rich.table import Table
-
+from frp_assess.assess.runner import design_value_rule, summarise
+from frp_assess.cli.output import Column, make_console, print_table, user
 from frp_assess.cli.wall_args import add_model_arguments, add_record_arguments, build_model
 from frp_assess.dynamics import IdaSettings, IdaTask, run_batch
 from frp_assess.errors import InputError
@@ -22,7 +20,9 @@ def register(sub: argparse._SubParsersAction) -> None:
         "ida",
         help="incremental dynamic analysis under a set of records",
         description="Collapse multiplier C, a_dyn = C·PGA and q = a_dyn/a_RM of "
-        "one wall for every record (MODEL.md §5); units m, kN/m³, GPa, ‰, g.",
+        "one wall for every record, and their mean, least favourable and design values over "
+        "the records, as `run` takes them: a record that does not collapse up to C_max counts "
+        "at C_max·PGA (a lower bound); units m, kN/m³, GPa, ‰, g.",
     )
     add_model_arguments(p)
     add_record_arguments(p, many=True)
@@ -62,21 +62,26 @@ def run(args: argparse.Namespace) -> int:
                 "q": res.q,
             }
         )
-    collapsed = [r for r in rows if r["a_dyn"] is not None]
-    mean_a = sum(r["a_dyn"] for r in collapsed) / len(collapsed) if collapsed else None
-    mean_q = sum(r["q"] for r in collapsed) / len(collapsed) if collapsed else None
+    # one definition with `run`: a record that does not collapse up to C_max counts at
+    # C_max·PGA, a lower bound (frp_assess.assess.runner.summarise)
+    summary = summarise(results, settings.max_multiplier, model.wall.a_rm_g)
+    n_bound = sum(r["a_dyn"] is None for r in rows)
     out = {
         "alpha": model.wall.alpha,
         "a_rm": model.wall.a_rm_g,
         "records": rows,
-        "mean_a_dyn": mean_a,
-        "mean_q": mean_q,
-        "records_without_collapse": len(rows) - len(collapsed),
+        "mean_a_dyn": summary.mean_a_dyn,
+        "min_a_dyn": summary.min_a_dyn,
+        "mean_q": summary.mean_q,
+        "design_a_dyn": summary.design_a_dyn,
+        "design_value": design_value_rule(len(rows)),
+        "lower_bound": summary.lower_bound,
+        "records_without_collapse": n_bound,
     }
     if args.json:
         print(json.dumps(out))
         return 0
-    console = Console()
+    console = make_console()
     w = model.wall
     console.print(
         f"wall B = {w.thickness:g} m, H = {w.height:g} m, α = {math.degrees(w.alpha):.3f}°, "
@@ -84,34 +89,41 @@ def run(args: argparse.Namespace) -> int:
         + (
             ""
             if model.rebars is None
-            else f"; rebars {model.rebars.position} ρ = {model.rebars.ratio:g} ‰, "
+            else f"; rebars {user(model.rebars.position)} ρ = {model.rebars.ratio:g} ‰, "
             f"K = {model.K:.3g}, θ_max = {model.theta_max:.4g} rad"
         )
     )
-    table = Table(title="Incremental dynamic analysis")
-    for col in ("record", "PGA [g]", "C", "a_dyn [g]", "q"):
-        table.add_column(col, justify="left" if col == "record" else "right")
+    cells = []
     for r in rows:
         if r["collapse_multiplier"] is None:
-            table.add_row(r["record"], f"{r['pga']:.4f}", "no collapse ≤ C_max", "—", "—")
+            cells.append([r["record"], f"{r['pga']:.4f}", "no collapse ≤ C_max", "—", "—"])
         else:
-            table.add_row(
-                r["record"],
-                f"{r['pga']:.4f}",
-                f"{r['collapse_multiplier']:.4f}",
-                f"{r['a_dyn']:.4f}",
-                f"{r['q']:.3f}",
+            cells.append(
+                [
+                    r["record"],
+                    f"{r['pga']:.4f}",
+                    f"{r['collapse_multiplier']:.4f}",
+                    f"{r['a_dyn']:.4f}",
+                    f"{r['q']:.3f}",
+                ]
             )
-    console.print(table)
-    if mean_a is not None:
+    columns = [
+        Column("record", text=True),
+        Column("PGA [g]"),
+        Column("collapse multiplier C [–]"),
+        Column("a_dyn [g]"),
+        Column("q [–]"),
+    ]
+    print_table(console, "Incremental dynamic analysis", columns, cells)
+    ge = "≥ " if summary.lower_bound else ""
+    console.print(
+        f"over the {len(rows)} records: mean a_dyn = {ge}{summary.mean_a_dyn:.4f} g, mean q = "
+        f"{ge}{summary.mean_q:.3f}, least favourable a_dyn = {ge}{summary.min_a_dyn:.4f} g; "
+        f"design a_dyn ({design_value_rule(len(rows))}) = {ge}{summary.design_a_dyn:.4f} g"
+    )
+    if n_bound:
         console.print(
-            f"mean a_dyn = {mean_a:.4f} g, mean q = {mean_q:.3f}"
-            + (
-                f" (over {len(collapsed)} of {len(rows)} records)"
-                if len(collapsed) < len(rows)
-                else ""
-            )
+            f"{n_bound} of {len(rows)} records did not collapse up to C_max: they count at "
+            "C_max·PGA, so the values above are lower bounds (≥)"
         )
-    else:
-        print("no record made the wall collapse up to C_max", file=sys.stderr)
     return 0

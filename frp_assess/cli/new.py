@@ -8,6 +8,7 @@ import re
 from importlib import resources
 from pathlib import Path
 
+from frp_assess.cli.output import plain_line
 from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_write_text
 
@@ -45,5 +46,8 @@ def run(args: argparse.Namespace) -> int:
         atomic_write_text(path, text)
     except OSError as exc:
         raise InputError(f"cannot write {path}: {exc.strerror}") from None
-    print(f"created {path}: edit it, then 'frp-assess validate {path}' and 'frp-assess run {path}'")
+    shown = plain_line(path)
+    print(
+        f"created {shown}: edit it, then 'frp-assess validate {shown}' and 'frp-assess run {shown}'"
+    )
     return 0

@@ -9,13 +9,16 @@ from typing import Any
 
 from rich.console import Console
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
-from rich.table import Table
 
 from frp_assess.api import default_out_dir, prepare_records, run_assessment
 from frp_assess.assess.from_project import load_inputs
+from frp_assess.assess.inputs import AssessmentInputs
 from frp_assess.assess.results import recommendation_text
+from frp_assess.cli.output import Column, make_console, print_table, user
 from frp_assess.errors import Cancelled, InputError
 from frp_assess.motions import ComplianceReport
+from frp_assess.numbers import fmt_against
+from frp_assess.output_set import FolderLock, check_out_dir
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -35,48 +38,60 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(handler=run)
 
 
-def compliance_table(rep: ComplianceReport) -> Table:
-    t = Table(title=f"Spectrum compatibility of the records (T1 = {rep.t1:g} s)")
-    for col in ("code", "clause", "requirement", "found", "margin", "result"):
-        t.add_column(col, overflow="fold")
+def compliance_rows(rep: ComplianceReport) -> list[list[str]]:
+    """The code checks of the record set, one row each (plain text)."""
+    rows = []
     for c in rep.checks:
         margin = f"{c.margin:+.1%}" if c.unit == "" else f"{c.margin:+g} {c.unit}"
-        t.add_row(
-            c.code,
-            c.clause,
-            c.requirement,
-            c.found,
-            margin,
-            "[green]pass[/]" if c.passed else "[red]FAIL[/]",
+        rows.append(
+            [c.code, c.clause, c.requirement, c.found, margin, "pass" if c.passed else "FAIL"]
         )
-    return t
+    return rows
 
 
-def ranking_table(results: dict[str, Any]) -> Table:
-    cur = results["costs"]["currency"]
-    t = Table(
-        title=f"Retrofit options (demand a_g·S = {results['demand']['pga']:.3f} g, "
-        f"target capacity/demand ≥ {results['model']['target']:g})"
+COMPLIANCE_COLUMNS = (
+    Column("code", text=True),
+    Column("clause", text=True),
+    Column("requirement", text=True),
+    Column("found", text=True),
+    Column("margin", text=True),
+    Column("result", text=True),
+)
+
+
+def print_compliance(con: Console, rep: ComplianceReport) -> None:
+    print_table(
+        con,
+        f"Spectrum compatibility of the records (T1 = {rep.t1:g} s)",
+        COMPLIANCE_COLUMNS,
+        compliance_rows(rep),
     )
-    cols = [
-        "rank",
-        "option",
-        "FRP [kg]",
-        f"cost [{cur}]",
-        "a_dyn [g]",
-        "q",
-        "improvement",
-        "capacity/demand",
-        "meets",
+
+
+def ranking_columns(results: dict[str, Any]) -> list[Column]:
+    """Columns of the ranking table, every header with its unit."""
+    cur = results["costs"]["currency"]
+    design = results["model"].get("design_value") or "design value"
+    statistic = "mean" if str(design).startswith("mean") else "design"
+    return [
+        Column("rank"),
+        Column("option", text=True),
+        Column("FRP [kg]"),
+        Column(f"cost [{cur}]"),
+        Column(f"{statistic} a_dyn [g]"),
+        Column("mean q [–]"),
+        Column("improvement [–]"),
+        Column("capacity / demand [–]"),
+        Column("meets target"),
     ]
-    for col in cols:
-        if col == "option":
-            t.add_column(col, justify="left", no_wrap=True)
-        else:
-            t.add_column(col, justify="right")
+
+
+def ranking_rows(results: dict[str, Any]) -> list[list[str]]:
+    """One row per case (unreinforced wall and options), by rank (plain text)."""
+    target = float(results["model"]["target"])
     ordered = sorted(results["cases"], key=lambda c: (c["rank"] is not None, c["rank"] or 0))
-    for c in ordered:
-        t.add_row(
+    return [
+        [
             "—" if c["rank"] is None else str(c["rank"]),
             c["name"],
             f"{c['frp_mass']:.1f}",
@@ -84,10 +99,21 @@ def ranking_table(results: dict[str, Any]) -> Table:
             f"{c['design_a_dyn']:.3f}",
             f"{c['mean_q']:.2f}",
             f"{c['improvement']:.2f}",
-            f"{c['capacity_demand']:.2f}",
+            fmt_against(c["capacity_demand"], target, c["meets_target"]),
             "yes" if c["meets_target"] else "no",
-        )
-    return t
+        ]
+        for c in ordered
+    ]
+
+
+def print_ranking(con: Console, results: dict[str, Any]) -> None:
+    print_table(
+        con,
+        f"Retrofit options (demand a_g·S = {results['demand']['pga']:.3f} g, "
+        f"target capacity/demand ≥ {results['model']['target']:g})",
+        ranking_columns(results),
+        ranking_rows(results),
+    )
 
 
 def run(args: argparse.Namespace) -> int:
@@ -95,11 +121,16 @@ def run(args: argparse.Namespace) -> int:
     inputs = load_inputs(path)  # InputError -> one line, exit 2, nothing written
     if args.jobs is not None and args.jobs < 1:
         raise InputError(f"expected at least 1 job, found {args.jobs}", key="--jobs")
-    out_dir = Path(args.out) if args.out else default_out_dir(path)
-    console = Console()
+    out_dir = check_out_dir(Path(args.out) if args.out else default_out_dir(path))
+    with FolderLock(out_dir):  # a second run into the same folder refuses here, exit 2
+        return _run(args, inputs, out_dir)
+
+
+def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> int:
+    console = make_console()
     with console.status("generating/reading the records and checking them against the spectrum"):
         seismic = prepare_records(inputs)
-    console.print(compliance_table(seismic.compliance))
+    print_compliance(console, seismic.compliance)
     cancel = threading.Event()
     n_cases = 1 + len(inputs.options)
     with Progress(
@@ -139,26 +170,28 @@ def run(args: argparse.Namespace) -> int:
             raise Cancelled("interrupted") from None
     w = results["wall"]
     urm = results["cases"][0]
+    target = float(results["model"]["target"])
     console.print(
         f"wall B = {w['thickness']:g} m, H = {w['height']:g} m, α = {w['alpha_deg']:.2f}°, "
-        f"a_RM = {w['a_rm']:.3f} g, {w['mechanism']}; unreinforced: a_dyn = "
-        f"{urm['design_a_dyn']:.3f} g, capacity/demand = {urm['capacity_demand']:.2f} "
+        f"a_RM = {w['a_rm']:.3f} g, {user(w['mechanism'])}; unreinforced: design a_dyn = "
+        f"{urm['design_a_dyn']:.3f} g, capacity/demand = "
+        f"{fmt_against(urm['capacity_demand'], target, urm['meets_target'])} "
         f"({'meets' if urm['meets_target'] else 'does NOT meet'} the target)"
     )
     cc = results["code_check"]
     console.print(
         f"code kinematic check (Circolare 2019 §C8.7.1, q = {cc['behaviour_factor']:g}, "
         f"FC = {cc['FC']:g}): a0* = {cc['a0_star']:.3f} g vs a_g·S/q = {cc['demand']:.3f} g "
-        f"-> {'satisfied' if cc['passed'] else 'NOT satisfied'}. {cc['note']}"
+        f"-> {'satisfied' if cc['passed'] else 'NOT satisfied'}. {user(cc['note'])}"
     )
     if len(results["cases"]) > 1:
-        console.print(ranking_table(results))
-        console.print(f"Ranking rule: {results['ranking_rule']}")
-        console.print("Recommended: " + recommendation_text(results))
+        print_ranking(console, results)
+        console.print(f"Ranking rule: {user(results['ranking_rule'])}")
+        console.print("Recommended: " + user(recommendation_text(results)))
     for d in results["design"] or []:
-        console.print(f"design {d['material']} {d['position']}: {d['message']}")
+        console.print(f"design {user(d['material'])} {user(d['position'])}: {user(d['message'])}")
     console.print(
         f"{stats.computed} IDAs computed, {stats.reused} reused from the cache; "
-        f"results in {out_dir}/"
+        f"results in {user(out_dir)}/"
     )
     return 0

@@ -5,14 +5,17 @@ from __future__ import annotations
 import argparse
 import json
 import math
+from pathlib import Path
 
 import numpy as np
 
+from frp_assess.cli.output import plain_line
 from frp_assess.cli.wall_args import add_model_arguments, add_record_arguments, build_model
 from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_write_text
 from frp_assess.motions.readers import read_record
 from frp_assess.motions.record import G
+from frp_assess.output_set import check_out_file
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -34,6 +37,8 @@ def run(args: argparse.Namespace) -> int:
     model = build_model(args)
     if not (math.isfinite(args.scale) and args.scale > 0):
         raise InputError(f"expected a multiplier > 0, found {args.scale:g}", key="--scale")
+    if args.out:
+        check_out_file(Path(args.out))
     record = read_record(args.record, format=args.format, units=args.units)
     res = model.run(record.acc, record.dt, args.scale, history=args.out is not None)
     out = {
@@ -62,7 +67,7 @@ def run(args: argparse.Namespace) -> int:
         w = model.wall
         print(
             f"wall B = {w.thickness:g} m, H = {w.height:g} m, α = {math.degrees(w.alpha):.3f}°, "
-            f"a_RM = {w.a_rm_g:.4f} g; record {record.name} (PGA {record.pga_g:.4f} g)"
+            f"a_RM = {w.a_rm_g:.4f} g; record {plain_line(record.name)} (PGA {record.pga_g:.4f} g)"
             f" × {args.scale:g}"
         )
         verdict = "COLLAPSE" if res.collapsed else "no collapse"
@@ -75,5 +80,5 @@ def run(args: argparse.Namespace) -> int:
         for r in res.ruptures:
             print(f"  rupture at t = {r.time:.4f} s, side {r.side:+d}")
         if args.out:
-            print(f"history written to {args.out}")
+            print(f"history written to {plain_line(args.out)}")
     return 0

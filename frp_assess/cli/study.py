@@ -7,7 +7,6 @@ import threading
 from pathlib import Path
 from typing import Any
 
-from rich.console import Console
 from rich.progress import (
     BarColumn,
     MofNCompleteColumn,
@@ -17,7 +16,9 @@ from rich.progress import (
     TimeRemainingColumn,
 )
 
+from frp_assess.cli.output import make_console, user
 from frp_assess.errors import Cancelled, InputError
+from frp_assess.output_set import check_out_dir
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -56,8 +57,8 @@ def run(args: argparse.Namespace) -> int:
     study = load_study(path)
     if args.jobs is not None and args.jobs < 1:
         raise InputError(f"expected at least 1 job, found {args.jobs}", key="--jobs")
-    out_dir = Path(args.out) if args.out else path.with_name(f"{path.stem}-results")
-    console = Console()
+    out_dir = check_out_dir(Path(args.out) if args.out else path.with_name(f"{path.stem}-results"))
+    console = make_console()
     executor = make_executor(args.executor, args.scheduler, args.jobs)
     cancel = threading.Event()
     try:
@@ -82,7 +83,7 @@ def run(args: argparse.Namespace) -> int:
                 plan = StudyPlan(study)
                 records = study_records(plan)
             console.print(
-                f"{study.name}: {len(plan)} cases ({plan.n_unreinforced} unreinforced, "
+                f"{user(study.name)}: {len(plan)} cases ({plan.n_unreinforced} unreinforced, "
                 f"{plan.n_reinforced} reinforced) × {study.records.count} records on "
                 f"{executor.describe()}"
             )
@@ -102,12 +103,12 @@ def run(args: argparse.Namespace) -> int:
         executor.close()
     console.print(
         f"{stats.computed} IDAs computed, {stats.reused} reused; {stats.seconds:.1f} s; "
-        f"results in {out_dir}/"
+        f"results in {user(out_dir)}/"
     )
     if not args.no_figures:
         from frp_assess.study.figures import write_study_pdf
 
         written = write_study_pdf(out_dir)
         for w in written:
-            console.print(f"wrote {w}")
+            console.print(f"wrote {user(w)}")
     return 0

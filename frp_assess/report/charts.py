@@ -16,10 +16,15 @@ from reportlab.lib.colors import Color
 from reportlab.pdfbase.pdfmetrics import stringWidth
 
 from frp_assess.report import styles as st
-from frp_assess.report.tables import is_lower_bound, urm_case
+from frp_assess.report.tables import fmt_permille, is_lower_bound, urm_case
+from frp_assess.text_safety import pdf_plain
 
 Results = Mapping[str, Any]
 FS = st.CHART_FONT_SIZE
+#: longest chart label [characters] (user names in legends)
+LABEL_MAX_CHARS = 120
+#: width of a legend label beside the chart [pt]
+LEGEND_LABEL_WIDTH = 112.0
 
 
 # --- scales and ticks ---------------------------------------------------------------------
@@ -244,7 +249,7 @@ def _text(
     return String(
         x,
         y,
-        text,
+        pdf_plain(text, limit=LABEL_MAX_CHARS),
         fontName=st.FONT_BOLD if bold else st.FONT,
         fontSize=size,
         fillColor=color,
@@ -284,7 +289,17 @@ def legend(
                 shape=sty["marker"],
                 hollow=sty.get("hollow", False),
             )
-        d.add(_text(x + 20, yy, label))
+        d.add(_text(x + 20, yy, fit_label(label, LEGEND_LABEL_WIDTH)))
+
+
+def fit_label(text: str, width: float, size: float = FS) -> str:
+    """``text`` (plain) cut with an ellipsis to ``width`` [pt] in the chart font."""
+    text = pdf_plain(text, limit=LABEL_MAX_CHARS)
+    if stringWidth(text, st.FONT, size) <= width:
+        return text
+    while len(text) > 1 and stringWidth(text + "…", st.FONT, size) > width:
+        text = text[:-1]
+    return text + "…"
 
 
 # --- the charts ---------------------------------------------------------------------------
@@ -360,6 +375,19 @@ def option_series(results: Results) -> dict[tuple[str, str], list[Mapping[str, A
     return dict(sorted(groups.items()))
 
 
+def ratio_note(groups: Mapping[tuple[str, str], Sequence[Mapping[str, Any]]]) -> str:
+    """The legend note on the ratios ρ [‰] plotted along the lines of the options chart:
+    the list when every line has the same ratios, else their range."""
+    per_line = [sorted({float(c["ratio"]) for c in cs}) for cs in groups.values()]
+    every = sorted({r for line in per_line for r in line})
+    if not every:
+        return ""
+    if all(line == per_line[0] for line in per_line):
+        shown = ", ".join(fmt_permille(r) for r in per_line[0])
+        return f"ρ = {shown} ‰ along each line" if len(per_line) > 1 else f"ρ = {shown} ‰"
+    return f"ρ from {fmt_permille(every[0])} to {fmt_permille(every[-1])} ‰"
+
+
 def _series_style(key: tuple[str, str], i: int) -> dict[str, Any]:
     mat, pos = key
     color = st.MATERIAL_COLOURS.get(mat, st.SERIES[i % len(st.SERIES)])
@@ -426,7 +454,7 @@ def options_chart(
         )
     legend(d, x0 + w + 14, y0 + h - FS, items)
     note_y = y0 + h - FS - (len(items) + 0.6) * FS * 1.55
-    d.add(_text(x0 + w + 14, note_y, "ρ = 1, 2, 3 ‰ along each line", color=st.MUTED))
+    d.add(_text(x0 + w + 14, note_y, ratio_note(groups), color=st.MUTED))
     if any_bound:
         d.add(_text(x0 + w + 14, note_y - FS * 1.4, "open marker: lower bound", color=st.MUTED))
         d.add(_text(x0 + w + 14, note_y - FS * 2.6, "(no collapse ≤ C_max)", color=st.MUTED))

@@ -5,6 +5,7 @@ Public API: :func:`load_results`, :func:`build_story`, :func:`build_report`.
 
 from __future__ import annotations
 
+import datetime as _dt
 import json
 from collections.abc import Mapping
 from pathlib import Path
@@ -19,6 +20,7 @@ from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_path
 from frp_assess.report import sections
 from frp_assess.report import styles as st
+from frp_assess.text_safety import pdf_plain, plain
 
 #: top-level keys the report reads
 REQUIRED_KEYS = (
@@ -36,18 +38,45 @@ REQUIRED_KEYS = (
 )
 
 
+#: largest results.json read [bytes] (a run with time histories writes well under 10 MB)
+MAX_RESULTS_BYTES = 64 * 1024 * 1024
+#: top-level keys that hold a JSON object / a JSON array
+OBJECT_KEYS = ("project", "wall", "model", "materials", "costs", "seismic", "demand")
+ARRAY_KEYS = ("records", "cases")
+
+
 def load_results(results_dir: str | Path) -> dict[str, Any]:
-    """Read ``results_dir/results.json``; anything missing or malformed is an InputError."""
+    """Read ``results_dir/results.json``; anything missing or malformed is an InputError.
+
+    Checked here: size, JSON syntax (NaN and Infinity are not JSON), nesting depth, the
+    schema version, the presence and JSON type of the top-level keys the report reads.
+    A value deeper in that does not follow the contract shows when the report is built
+    (``frp-assess report`` turns it into one line, see :func:`contract_error`).
+    """
     d = Path(results_dir)
     if not d.is_dir():
         raise InputError("not a results directory (does not exist)", file=str(d))
     path = d / "results.json"
     if not path.is_file():
         raise InputError("no results.json here; run `frp-assess run` first", file=str(d))
+
+    def no_constant(name: str) -> None:
+        raise ValueError(f"{name} is not a JSON number")
+
     try:
-        results = json.loads(path.read_text(encoding="utf-8"))
+        if path.stat().st_size > MAX_RESULTS_BYTES:
+            raise InputError(
+                f"{path.stat().st_size} bytes, more than the {MAX_RESULTS_BYTES} a results "
+                "file can have",
+                file=str(path),
+            )
+        results = json.loads(path.read_text(encoding="utf-8"), parse_constant=no_constant)
     except json.JSONDecodeError as exc:
         raise InputError(f"invalid JSON: {exc.msg}", file=str(path), line=exc.lineno) from None
+    except RecursionError:
+        raise InputError("invalid JSON: nested too deeply", file=str(path)) from None
+    except ValueError as exc:  # NaN / Infinity
+        raise InputError(f"invalid JSON: {exc}", file=str(path)) from None
     except (OSError, UnicodeDecodeError) as exc:
         raise InputError(f"cannot read: {exc}", file=str(path)) from None
     if not isinstance(results, dict):
@@ -61,9 +90,41 @@ def load_results(results_dir: str | Path) -> dict[str, Any]:
     for key in REQUIRED_KEYS:
         if key not in results:
             raise InputError("missing", file=str(path), key=key)
+    for key in OBJECT_KEYS:
+        if not isinstance(results[key], dict):
+            raise InputError(
+                f"expected an object, found {_json_type(results[key])}", file=str(path), key=key
+            )
+    for key in ARRAY_KEYS:
+        if not isinstance(results[key], list):
+            raise InputError(
+                f"expected an array, found {_json_type(results[key])}", file=str(path), key=key
+            )
     if not results["cases"]:
         raise InputError("no cases", file=str(path), key="cases")
     return results
+
+
+def contract_error(exc: Exception, path: Path | str) -> InputError:
+    """The one line said when a results file passed :func:`load_results` but a value deeper
+    in does not follow the contract (docs/results-json.md): a key missing, a wrong type."""
+    if isinstance(exc, KeyError):
+        what = f"missing key {exc.args[0]!r}" if exc.args else "a key is missing"
+    else:
+        what = f"a value of the wrong type or range ({plain(str(exc))[:160]})"
+    return InputError(
+        f"does not follow the results contract (docs/results-json.md): {what}", file=str(path)
+    )
+
+
+#: what reading a results dict that does not follow the contract raises
+CONTRACT_ERRORS = (KeyError, TypeError, ValueError, AttributeError, IndexError, ZeroDivisionError)
+
+
+def _json_type(value: object) -> str:
+    return {dict: "an object", list: "an array", str: "a string", bool: "true/false"}.get(
+        type(value), "null" if value is None else "a number"
+    )
 
 
 def build_story(results: Mapping[str, Any]) -> list[Flowable]:
@@ -84,12 +145,34 @@ def build_story(results: Mapping[str, Any]) -> list[Flowable]:
 
 
 def _fit(text: str, font: str, size: float, width: float) -> str:
-    """``text`` shortened with an ellipsis to fit ``width``."""
+    """``text`` (plain, any length) shortened with an ellipsis to fit ``width`` [pt].
+
+    Bisection on the length, so a very long name costs a few width measurements."""
+    text = pdf_plain(text)
     if stringWidth(text, font, size) <= width:
         return text
-    while text and stringWidth(text + "…", font, size) > width:
-        text = text[:-1]
-    return text + "…"
+    lo, hi = 0, len(text)  # text[:lo] + "…" fits; text[:hi] + "…" does not
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        if stringWidth(text[:mid] + "…", font, size) <= width:
+            lo = mid
+        else:
+            hi = mid
+    return text[:lo] + "…"
+
+
+def pdf_date(created: object) -> str:
+    """The PDF date (``D:YYYYMMDDhhmmss+00'00'``) of the results' ``created`` field
+    (``YYYY-MM-DD`` or an ISO date-time), so that CreationDate and ModDate say when the
+    results were computed and a rebuild from the same results is byte-identical.
+    An unreadable value gives 2000-01-01."""
+    try:
+        when = _dt.datetime.fromisoformat(str(created))
+    except ValueError:
+        when = _dt.datetime(2000, 1, 1)
+    if when.tzinfo is not None:
+        when = when.astimezone(_dt.UTC)
+    return when.strftime("D:%Y%m%d%H%M%S+00'00'")
 
 
 class NumberedCanvas(Canvas):
@@ -131,10 +214,10 @@ class ReportTemplate(BaseDocTemplate):
             rightMargin=st.MARGIN_X,
             topMargin=st.MARGIN_TOP,
             bottomMargin=st.MARGIN_BOTTOM,
-            title=f"Seismic assessment – {p.get('name') or 'wall'}",
-            author=str(p.get("engineer") or ""),
+            title=pdf_plain(f"Seismic assessment – {p.get('name') or 'wall'}"),
+            author=pdf_plain(p.get("engineer") or ""),
             subject="Rocking masonry wall retrofitted with vertical FRP rebars",
-            creator=f"frp-assess {results.get('software', {}).get('version', '')}",
+            creator=pdf_plain(f"frp-assess {results.get('software', {}).get('version', '')}"),
             invariant=1,
             initialFontName=st.FONT,
             initialFontSize=st.BODY_SIZE,
@@ -193,14 +276,26 @@ class ReportTemplate(BaseDocTemplate):
             self.canv.addOutlineEntry(flowable.getPlainText(), key, level=level, closed=True)
 
 
-def build_report(results: Mapping[str, Any], out_path: Path | str) -> None:
+def build_report(
+    results: Mapping[str, Any], out_path: Path | str, *, story: list[Flowable] | None = None
+) -> None:
     """Write the PDF to ``out_path`` atomically (temp file in the same directory, then rename).
 
-    Two builds from the same results give byte-identical files.
+    Two builds from the same results give byte-identical files: the PDF's CreationDate and
+    ModDate are the results' date (:func:`pdf_date`), not the time of the build.
+    ``story``: the flowables of :func:`build_story` if already built.
     """
     out_path = Path(out_path)
     out_path.parent.mkdir(parents=True, exist_ok=True)
-    story = build_story(results)
+    if story is None:
+        story = build_story(results)
+    date = pdf_date(results.get("created"))
+
+    def canvas(*args: Any, **kwargs: Any) -> NumberedCanvas:
+        c = NumberedCanvas(*args, **kwargs)
+        c.setDateFormatter(lambda *_: date)
+        return c
+
     with atomic_path(out_path) as tmp:
         doc = ReportTemplate(str(tmp), results)
-        doc.build(story, canvasmaker=NumberedCanvas)
+        doc.build(story, canvasmaker=canvas)

@@ -1,20 +1,29 @@
-"""Small flowable builders shared by the report sections (escaping is done here)."""
+"""Small flowable builders shared by the report sections.
+
+Escaping is done here, at one place: every builder takes plain text and escapes it with
+:func:`esc` (:func:`frp_assess.text_safety.pdf`); only :class:`~frp_assess.text_safety.Markup`
+and :func:`markup` paragraphs, written by the code, carry markup.
+"""
 
 from __future__ import annotations
 
 import re
 from collections.abc import Sequence
-from xml.sax.saxutils import escape
 
 from reportlab.platypus import Flowable, Paragraph, Spacer, Table
 
 from frp_assess.report import styles as st
 from frp_assess.report.tables import TableData
+from frp_assess.text_safety import PDF_MAX_CHARS, pdf, pdf_plain
+
+#: longest plain-text paragraph (notes) [characters]; table cells hold PDF_MAX_CHARS
+PARAGRAPH_MAX_CHARS = 8 * PDF_MAX_CHARS
 
 
-def esc(text: object) -> str:
-    """User or data text made safe for Paragraph markup (``<``, ``&``, ``>``)."""
-    return escape(str(text))
+def esc(text: object, *, limit: int = PDF_MAX_CHARS) -> str:
+    """User or data text made safe for Paragraph markup: control characters replaced, length
+    capped, long words broken, ``<``, ``&``, ``>`` escaped; :class:`Markup` unchanged."""
+    return pdf(text, limit=limit)
 
 
 _SUB = re.compile(r"(?<![A-Za-z0-9])([A-Za-zαεθ])_([A-Za-z0-9]+)")
@@ -27,7 +36,7 @@ def with_subscripts(escaped: str) -> str:
 
 def para(text: object, style: str = "body") -> Paragraph:
     """A paragraph of plain text (escaped)."""
-    return Paragraph(esc(text), st.paragraph_styles()[style])
+    return Paragraph(esc(text, limit=PARAGRAPH_MAX_CHARS), st.paragraph_styles()[style])
 
 
 def markup(text: str, style: str = "body") -> Paragraph:
@@ -74,13 +83,16 @@ def grid(
     repeat_header: bool = True,
 ) -> Table:
     """A table with a header row. Columns in ``wrap`` hold wrapping (escaped) paragraphs;
-    the others plain strings (right-aligned from ``numeric_from``)."""
+    the others plain strings (right-aligned from ``numeric_from``); header cells are plain text
+    or :class:`~frp_assess.text_safety.Markup`."""
     s = st.paragraph_styles()
     head = s["head_small"] if small else s["head_center"]
     cell = s["cell_small"] if small else s["cell"]
-    body: list[list[Flowable | str]] = [[Paragraph(h, head) for h in data.header]]
+    body: list[list[Flowable | str]] = [[Paragraph(esc(h), head) for h in data.header]]
     for row in data.rows:
-        body.append([Paragraph(esc(v), cell) if j in wrap else v for j, v in enumerate(row)])
+        body.append(
+            [Paragraph(esc(v), cell) if j in wrap else pdf_plain(v) for j, v in enumerate(row)]
+        )
     total = sum(widths)
     scale = st.FRAME_WIDTH / total if total > st.FRAME_WIDTH else 1.0
     t = Table(

@@ -21,6 +21,13 @@ MECHANISM_TEXT = {
 }
 
 
+def design_statistic(results: Results) -> str:
+    """What the design a_dyn is: the mean of the records or the least favourable one."""
+    if tb.uses_mean(results):
+        return "the mean over the records"
+    return "the least favourable record, as there are fewer than 7 (EN 1998-1 §4.3.3.4.3)"
+
+
 def h1(text: str) -> Flowable:
     return markup(esc(text), "h1")
 
@@ -40,7 +47,7 @@ def _option_sentence(results: Results, c: Mapping[str, Any]) -> str:
         f"<b>{esc(c['name'])}</b>: {tb.fmt_mass(c['frp_mass'])} kg of {esc(c['material'])} "
         f"({tb.fmt_mass(c['frp_mass_per_m'])} kg per metre of wall), indicative cost "
         f"{tb.fmt_cost(c['frp_cost'])} {esc(cur)}; capacity/demand "
-        f"{esc(tb.bound(tb.fmt_ratio(c['capacity_demand']), lb))}, improvement "
+        f"{esc(tb.bound(tb.fmt_capacity(c, results['model']['target']), lb))}, improvement "
         f"{esc(tb.bound(tb.fmt_ratio(c['improvement']), lb))} × the unreinforced wall"
         + ("" if c["meets_target"] else " (does <b>not</b> reach the target)")
         + "."
@@ -101,9 +108,10 @@ def summary(results: Results) -> list[Flowable]:
     out.append(
         markup(
             f"<b>The wall as it is.</b> Over the {n_rec} records the unreinforced wall "
-            f"overturns at a mean ground acceleration a<sub>dyn</sub> = "
-            f"{esc(tb.bound(tb.fmt_acc(tb.design_a_dyn(urm)), lb))} g, i.e. "
-            f"{esc(tb.bound(tb.fmt_ratio(urm['capacity_demand']), lb))} times the demand."
+            f"overturns at a design ground acceleration a<sub>dyn</sub> = "
+            f"{esc(tb.bound(tb.fmt_acc(tb.design_a_dyn(urm)), lb))} g "
+            f"({esc(design_statistic(results))}), i.e. "
+            f"{esc(tb.bound(tb.fmt_capacity(urm, target), lb))} times the demand."
         )
     )
     out.append(
@@ -114,7 +122,7 @@ def summary(results: Results) -> list[Flowable]:
                 if ok
                 else "Verdict: the unreinforced wall is NOT adequate"
             )
-            + f" (capacity/demand {esc(tb.bound(tb.fmt_ratio(urm['capacity_demand']), lb))} "
+            + f" (capacity/demand {esc(tb.bound(tb.fmt_capacity(urm, target), lb))} "
             + ("≥" if ok else "<")
             + f" target {target:g}).",
         )
@@ -248,8 +256,8 @@ def seismic(results: Results) -> list[Flowable]:
     out.append(
         grid(
             tb.compliance_table(results),
-            [12 * mm, 32 * mm, 48 * mm, 44 * mm, 20 * mm, 14 * mm],
-            wrap=(1, 2, 3),
+            [18 * mm, 30 * mm, 46 * mm, 42 * mm, 20 * mm, 14 * mm],
+            wrap=(0, 1, 2, 3),
             numeric_from=4,
         )
     )
@@ -307,7 +315,12 @@ def options(results: Results) -> list[Flowable]:
     widths = [9, 26, 11, 14, 8, 12, 12, 11, 15, 13, 16, 16, 11]
     out.append(
         grid(
-            data, [x * mm for x in widths], wrap=(1,), small=True, numeric_from=4, highlight_rows=hl
+            data,
+            [x * mm for x in widths],
+            wrap=(1, 2, 3),
+            small=True,
+            numeric_from=4,
+            highlight_rows=hl,
         )
     )
     out.append(

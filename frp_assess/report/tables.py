@@ -1,7 +1,9 @@
 """Table contents as pure functions of the results dict (docs/results-json.md).
 
-Every function returns plain text (not markup): :mod:`frp_assess.report.document` escapes it.
-Header cells are the exception: they are constant markup written here (sub/superscripts).
+Every function returns plain text (not markup): :mod:`frp_assess.report.flow` escapes it for
+the PDF (:func:`frp_assess.text_safety.pdf`).  Header cells with sub/superscripts or line
+breaks are :class:`~frp_assess.text_safety.Markup` written here; any user text inside them
+(the currency) is escaped by :func:`head` first.
 Number formats, used everywhere in the report:
 
 - accelerations in g: 3 decimals (:func:`fmt_acc`);
@@ -15,6 +17,9 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
+from frp_assess.numbers import fmt_against
+from frp_assess.text_safety import Markup, pdf
+
 Results = Mapping[str, Any]
 DASH = "—"
 NO_COLLAPSE = "no collapse ≤ C_max"
@@ -22,10 +27,15 @@ NO_COLLAPSE = "no collapse ≤ C_max"
 
 @dataclass(frozen=True)
 class TableData:
-    """Header (markup, constant) and body rows (plain text)."""
+    """Header (plain text or :class:`Markup`) and body rows (plain text)."""
 
     header: list[str]
     rows: list[list[str]]
+
+
+def head(template: str, **user: object) -> Markup:
+    """A header cell of constant markup ``template`` with user values (escaped) filled in."""
+    return Markup(template.format(**{k: pdf(v) for k, v in user.items()}))
 
 
 # --- number formats -----------------------------------------------------------------------
@@ -40,6 +50,12 @@ def fmt_ratio(x: float | None) -> str:
 
 
 fmt_q = fmt_ratio
+
+
+def fmt_capacity(case: Mapping[str, Any], target: float) -> str:
+    """capacity/demand of a case with enough decimals to agree with its verdict against
+    ``target`` (0.997 → '0.997', not '1.00', when it does not meet 1)."""
+    return fmt_against(case["capacity_demand"], target, case.get("meets_target"))
 
 
 def fmt_mult(x: float | None) -> str:
@@ -119,7 +135,7 @@ def uses_mean(results: Results) -> bool:
 
 def a_dyn_label(results: Results) -> str:
     """Header markup of the design a_dyn column."""
-    return "mean a<sub>dyn</sub> [g]" if uses_mean(results) else "min a<sub>dyn</sub> [g]"
+    return Markup("mean a<sub>dyn</sub> [g]" if uses_mean(results) else "min a<sub>dyn</sub> [g]")
 
 
 def bound(text: str, lower: bool) -> str:
@@ -156,7 +172,7 @@ RANKING_HEADER = [
 ]
 
 
-def ranking_row(case: Mapping[str, Any]) -> list[str]:
+def ranking_row(case: Mapping[str, Any], target: float) -> list[str]:
     lb = is_lower_bound(case)
     return [
         DASH if case.get("rank") is None else str(case["rank"]),
@@ -170,7 +186,7 @@ def ranking_row(case: Mapping[str, Any]) -> list[str]:
         bound(fmt_acc(design_a_dyn(case)), lb),
         bound(fmt_q(case["mean_q"]), lb),
         bound(fmt_ratio(case["improvement"]), lb),
-        bound(fmt_ratio(case["capacity_demand"]), lb),
+        bound(fmt_capacity(case, target), lb),
         yes_no(case["meets_target"]),
     ]
 
@@ -178,8 +194,12 @@ def ranking_row(case: Mapping[str, Any]) -> list[str]:
 def ranking_table(results: Results) -> TableData:
     """Unreinforced wall first, then every option by rank."""
     cur = results["costs"]["currency"]
-    header = [h.format(cur=cur, a_dyn=a_dyn_label(results)) for h in RANKING_HEADER]
-    rows = [ranking_row(urm_case(results))] + [ranking_row(c) for c in ranked_options(results)]
+    header: list[str] = [
+        a_dyn_label(results) if h == "{a_dyn}" else head(h, cur=cur) for h in RANKING_HEADER
+    ]
+    target = float(results["model"]["target"])
+    cases = [urm_case(results), *ranked_options(results)]
+    rows = [ranking_row(c, target) for c in cases]
     return TableData(header, rows)
 
 
@@ -192,9 +212,9 @@ def summary_table(results: Results, n_alternatives: int = 3) -> TableData:
         "FRP wall [kg]",
         f"cost [{cur}]",
         a_dyn_label(results),
-        "improve-<br/>ment",
-        "capacity /<br/>demand",
-        "meets<br/>target",
+        Markup("improve-<br/>ment"),
+        Markup("capacity /<br/>demand"),
+        Markup("meets<br/>target"),
     ]
     ranked = ranked_options(results)
     chosen: list[tuple[str, Mapping[str, Any]]] = [("existing", urm_case(results))]
@@ -215,7 +235,7 @@ def summary_table(results: Results, n_alternatives: int = 3) -> TableData:
                 fmt_cost(c["frp_cost"]),
                 bound(fmt_acc(design_a_dyn(c)), lb),
                 bound(fmt_ratio(c["improvement"]), lb),
-                bound(fmt_ratio(c["capacity_demand"]), lb),
+                bound(fmt_capacity(c, float(results["model"]["target"])), lb),
                 yes_no(c["meets_target"]),
             ]
         )
@@ -250,7 +270,7 @@ def materials_table(results: Results) -> TableData:
     header = [
         "material",
         "E [GPa]",
-        "ε<sub>u</sub> [–]",
+        Markup("ε<sub>u</sub> [–]"),
         "density [kg/m³]",
         f"price [{cur}/kg]",
         "source",
@@ -384,7 +404,13 @@ def compliance_table(results: Results) -> TableData:
 
 
 def case_records_table(case: Mapping[str, Any]) -> TableData:
-    header = ["record", "PGA [g]", "collapse multiplier C", "a<sub>dyn</sub> [g]", "q [–]"]
+    header = [
+        "record",
+        "PGA [g]",
+        "collapse multiplier C",
+        Markup("a<sub>dyn</sub> [g]"),
+        "q [–]",
+    ]
     rows = [
         [
             r["record"],
@@ -406,7 +432,7 @@ def case_summary_rows(results: Results, case: Mapping[str, Any]) -> list[list[st
         ["mean q = a_dyn / a_RM", bound(fmt_q(case["mean_q"]), lb)],
         [
             "capacity/demand = a_dyn / a_g·S",
-            bound(fmt_ratio(case["capacity_demand"]), lb)
+            bound(fmt_capacity(case, float(results["model"]["target"])), lb)
             + f" (demand {fmt_acc(results['demand']['pga'])} g)",
         ],
         [
@@ -449,7 +475,7 @@ def comparison_table(results: Results) -> TableData:
             "IDA, rocking dynamics (this report)",
             bound(fmt_acc(design_a_dyn(urm)), lb),
             fmt_acc(results["demand"]["pga"]),
-            bound(fmt_ratio(urm["capacity_demand"]), lb),
+            bound(fmt_capacity(urm, float(results["model"]["target"])), lb),
             "satisfied" if urm["meets_target"] else "NOT satisfied",
         ],
         [

@@ -149,3 +149,29 @@ def test_unreadable_records(tmp_path, content, capsys):
     assert main(["ida", *WALL_ARGS, "--record", str(p)]) == 2
     err = capsys.readouterr().err.strip()
     assert str(p) in err and "\n" not in err
+
+
+def test_ida_means_count_records_without_collapse_like_run(tmp_path, capsys):
+    """One definition with `run`: a record that does not collapse up to C_max counts at
+    C_max·PGA (a lower bound), it is not left out of the mean."""
+    strong = tmp_path / "strong.AT2"
+    write_at2(Record("strong", 0.01, synthetic_record(3, duration=6.0, pga_g=0.6)), strong)
+    weak = tmp_path / "weak.AT2"
+    write_at2(Record("weak", 0.01, synthetic_record(4, duration=6.0, pga_g=0.02)), weak)
+    argv = ["ida", *WALL_ARGS, "--record", str(strong), "--record", str(weak)]
+    assert main([*argv, "--max-multiplier", "3", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    rows = out["records"]
+    assert out["records_without_collapse"] == sum(r["a_dyn"] is None for r in rows) >= 1
+    bounds = [
+        r["a_dyn"] if r["a_dyn"] is not None else 3 * out["a_rm"]  # C_max·PGA = 3·C0·PGA
+        for r in rows
+    ]
+    assert out["lower_bound"] is True
+    assert out["mean_a_dyn"] == pytest.approx(sum(bounds) / len(bounds))
+    assert out["min_a_dyn"] == pytest.approx(min(bounds))
+    assert out["design_a_dyn"] == pytest.approx(min(bounds))  # fewer than 7 records
+    assert out["mean_q"] == pytest.approx(out["mean_a_dyn"] / out["a_rm"])
+    assert main([*argv, "--max-multiplier", "3"]) == 0
+    text = " ".join(capsys.readouterr().out.split())
+    assert "lower bounds" in text and f"mean a_dyn = ≥ {out['mean_a_dyn']:.4f} g" in text

@@ -1,0 +1,254 @@
+"""The results folder of a run: checked before any work, locked while a run uses it, and its
+output files replaced as one set.
+
+A results folder holds the output set of one run — ``results.json``, ``results.csv``,
+``spectra.csv``, ``records/`` and ``report.pdf`` (:data:`SET_NAMES`) — and the IDA cache
+``.cache/``.  The rules:
+
+- **Checked first** (:func:`check_out_dir`): a folder that is a file, lies under a file, is a
+  device (``/dev/null``) or cannot be written is refused with one line before any work.
+- **Locked** (:class:`FolderLock`): writing a set takes an exclusive ``flock`` on ``.lock``
+  in the folder (the file holds the pid of the holder); ``frp-assess run`` holds it from
+  before the IDA until its set is written.
+  A second run into the same folder refuses at once (:class:`~frp_assess.errors.InputError`,
+  exit 2) and names the pid; the lock dies with its process, so ``kill -9`` leaves no stale
+  lock.  ``frp-assess report`` takes the same lock to replace ``report.pdf``.
+- **Staged, then swapped in** (:func:`staged_set`): the whole set is written into a fresh
+  ``.staging-<pid>-<random>/`` folder inside the results folder (same file system).  Only when
+  every file is complete is it moved into place: first the old ``results.json`` is removed
+  (from then on the folder holds no valid set), then every member is renamed over the old one
+  (members the new run does not produce, e.g. ``report.pdf`` with ``--no-pdf``, are removed),
+  ``results.json`` last.  ``results.json`` therefore only ever sits beside the files of its
+  own run: a failure while writing (disk full, an exception in the PDF) leaves the old set
+  untouched, and a kill during the swap leaves no ``results.json`` (no set) until the next run.
+- **Stale leftovers** of a killed run (staging folders, temporary ``.*.tmp`` files of an
+  atomic write) are removed by the next run once it holds the lock.
+"""
+
+from __future__ import annotations
+
+import errno
+import fcntl
+import os
+import secrets
+import shutil
+import stat
+import threading
+from collections.abc import Iterator
+from contextlib import contextmanager
+from pathlib import Path
+from types import TracebackType
+
+from frp_assess.errors import InputError
+
+#: the members of a run's output set, ``results.json`` (the one that validates the set) last
+SET_NAMES: tuple[str, ...] = ("results.csv", "spectra.csv", "records", "report.pdf", "results.json")
+LOCK_NAME = ".lock"
+STAGING_PREFIX = ".staging-"
+
+#: folders locked by this process -> the thread holding the lock (re-entrant in that thread)
+_held: dict[Path, int] = {}
+_held_guard = threading.Lock()
+
+
+def _nearest_existing(path: Path) -> Path:
+    p = path
+    while not os.path.lexists(p):
+        if p.parent == p:
+            break
+        p = p.parent
+    return p
+
+
+def _writable(directory: Path) -> bool:
+    """Whether new entries can be made in ``directory`` (permissions, read-only mounts)."""
+    if not os.access(directory, os.W_OK | os.X_OK):
+        return False
+    try:
+        return not os.statvfs(directory).f_flag & os.ST_RDONLY
+    except OSError:
+        return False
+
+
+def check_out_dir(path: Path, key: str = "--out") -> Path:
+    """``path`` if it can hold a results folder, else one :class:`InputError` line saying why.
+
+    Nothing is created: a folder that does not exist yet is fine if its nearest existing
+    parent is a writable folder.
+    """
+    path = Path(path)
+    shown = str(path)
+    if os.path.lexists(path) and not path.is_dir():
+        st = os.stat(path) if path.exists() else os.lstat(path)
+        kind = (
+            "a device"
+            if stat.S_ISCHR(st.st_mode) or stat.S_ISBLK(st.st_mode)
+            else "a file, not a folder"
+        )
+        raise InputError(f"{shown} is {kind}; give a folder for the results", key=key)
+    existing = _nearest_existing(path)
+    if not existing.is_dir():
+        raise InputError(f"{shown} lies under {existing}, which is a file, not a folder", key=key)
+    if not _writable(existing):
+        where = "" if existing == path else f" (its parent {existing})"
+        raise InputError(f"{shown}{where} is not writable", key=key)
+    return path
+
+
+class FolderLock:
+    """Exclusive lock of a results folder (see the module docstring); re-entrant within one
+    process.  Creates the folder if needed."""
+
+    def __init__(self, directory: Path, key: str = "--out") -> None:
+        self.directory = Path(directory)
+        self.key = key
+        self._fd: int | None = None
+
+    def __enter__(self) -> FolderLock:
+        d = self.directory
+        real = Path(os.path.realpath(d))
+        with _held_guard:
+            owner = _held.get(real)
+        if owner == threading.get_ident():
+            return self
+        if owner is not None:
+            raise InputError(
+                f"another run of this process (pid {os.getpid()}) is writing {d}; wait for it "
+                "to finish or choose another folder",
+                key=self.key,
+            )
+        try:
+            d.mkdir(parents=True, exist_ok=True)
+            fd = os.open(d / LOCK_NAME, os.O_RDWR | os.O_CREAT, 0o644)
+        except OSError as exc:
+            raise InputError(
+                f"cannot use {d} as the results folder: {exc.strerror}", key=self.key
+            ) from None
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError as exc:
+            holder = os.read(fd, 32).decode("ascii", "replace").strip() or "?"
+            os.close(fd)
+            if exc.errno in (errno.EWOULDBLOCK, errno.EACCES, errno.EAGAIN):
+                raise InputError(
+                    f"another frp-assess process (pid {holder}) is writing {d}; wait for it "
+                    "to finish or choose another folder",
+                    key=self.key,
+                ) from None
+            raise
+        os.ftruncate(fd, 0)
+        os.write(fd, f"{os.getpid()}\n".encode())
+        self._fd = fd
+        with _held_guard:
+            _held[real] = threading.get_ident()
+        remove_leftovers(d)
+        return self
+
+    def __exit__(
+        self,
+        exc_type: type[BaseException] | None,
+        exc: BaseException | None,
+        tb: TracebackType | None,
+    ) -> None:
+        if self._fd is None:
+            return
+        with _held_guard:
+            _held.pop(Path(os.path.realpath(self.directory)), None)
+        fcntl.flock(self._fd, fcntl.LOCK_UN)
+        os.close(self._fd)
+        self._fd = None
+
+
+def remove_leftovers(directory: Path) -> list[Path]:
+    """Remove what a killed run left in ``directory`` (call with the lock held): staging
+    folders and the temporary files of atomic writes of set members. Returns them."""
+    gone: list[Path] = []
+    try:
+        entries = list(Path(directory).iterdir())
+    except OSError:
+        return gone
+    for p in entries:
+        stale_tmp = p.name.endswith(".tmp") and any(
+            p.name.startswith(f".{name}.") for name in SET_NAMES
+        )
+        if p.name.startswith(STAGING_PREFIX) or stale_tmp:
+            _remove(p)
+            gone.append(p)
+    return gone
+
+
+def _remove(p: Path) -> None:
+    if p.is_dir() and not p.is_symlink():
+        shutil.rmtree(p, ignore_errors=True)
+    else:
+        p.unlink(missing_ok=True)
+
+
+@contextmanager
+def staged_set(out_dir: Path) -> Iterator[Path]:
+    """Yield a fresh, empty staging folder inside ``out_dir``; write the whole output set
+    there.  On success it replaces the set in ``out_dir`` (:func:`swap_in`); on any exception
+    (or interrupt) the staging folder is removed and ``out_dir`` is left as it was."""
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    staging = out_dir / f"{STAGING_PREFIX}{os.getpid()}-{secrets.token_hex(4)}"
+    staging.mkdir()
+    try:
+        yield staging
+        swap_in(staging, out_dir)
+    finally:
+        shutil.rmtree(staging, ignore_errors=True)
+
+
+def swap_in(staging: Path, out_dir: Path) -> None:
+    """Move the set written in ``staging`` into ``out_dir``, ``results.json`` removed first and
+    put back last (see the module docstring)."""
+    (out_dir / "results.json").unlink(missing_ok=True)
+    for name in SET_NAMES:
+        new = staging / name
+        target = out_dir / name
+        if not os.path.lexists(new):
+            if os.path.lexists(target):
+                _remove(target)
+            continue
+        if new.is_dir():
+            if os.path.lexists(target):
+                old = staging / f".old-{name}"
+                os.replace(target, old) if not target.is_dir() else target.rename(old)
+            new.rename(target)
+        else:
+            if target.is_dir() and not target.is_symlink():
+                shutil.rmtree(target)
+            os.replace(new, target)
+    _fsync_dir(out_dir)
+
+
+def _fsync_dir(directory: Path) -> None:
+    try:
+        fd = os.open(directory, os.O_RDONLY)
+    except OSError:
+        return
+    try:
+        os.fsync(fd)
+    except OSError:
+        pass
+    finally:
+        os.close(fd)
+
+
+def check_out_file(path: Path, key: str = "--out") -> Path:
+    """``path`` if a file can be written there (replacing a regular file is fine), else one
+    :class:`InputError` line: a folder, a device, a parent that is missing or a file, or not
+    writable."""
+    path = Path(path)
+    if path.is_dir():
+        raise InputError(f"{path} is a folder; give a file name", key=key)
+    if os.path.lexists(path) and not path.is_file():
+        raise InputError(f"{path} is not a regular file", key=key)
+    parent = path.parent
+    existing = _nearest_existing(parent)
+    if not existing.is_dir():
+        raise InputError(f"{path} lies under {existing}, which is a file, not a folder", key=key)
+    if not _writable(existing):
+        raise InputError(f"{path}: {existing} is not writable", key=key)
+    return path

@@ -1,0 +1,132 @@
+"""A damaged cache entry is computed again with one warning, never used, never a crash."""
+
+from __future__ import annotations
+
+import json
+import os
+from collections.abc import Callable
+from dataclasses import asdict, fields
+from pathlib import Path
+
+import pytest
+
+from frp_assess.assess.cache import FIELD_CHECKS, MAX_ENTRY_BYTES, IdaCache, cache_file
+from frp_assess.cli import main
+from frp_assess.dynamics import IdaResult
+from tests.cli.outputs_helpers import tiny_project
+
+GOOD = IdaResult(
+    pga=1.2, c0=0.8, collapse_multiplier=4.1, a_dyn=4.9, q=5.0, runs=23, survivor_multiplier=4.0
+)
+HAS_CURVE = "curve" in {f.name for f in fields(IdaResult)}
+KEY = "k" * 64
+
+
+def _entry(**change: object) -> str:
+    data = {**asdict(GOOD), **change}
+    return json.dumps(data)
+
+
+def _write(text: str) -> Callable[[Path], None]:
+    return lambda p: p.write_text(text, encoding="utf-8")
+
+
+DAMAGE: list[tuple[str, Callable[[Path], None]]] = [
+    ("bool for a number", _write(_entry(pga=True))),
+    ("bool for the count", _write(_entry(runs=False))),
+    ("string for a number", _write(_entry(c0="0.8"))),
+    ("null for a required number", _write(_entry(pga=None))),
+    ("NaN", _write(_entry().replace("4.9", "NaN"))),
+    ("Infinity", _write(_entry().replace("4.9", "Infinity"))),
+    ("negative", _write(_entry(a_dyn=-4.9))),
+    ("half collapsed", _write(_entry(a_dyn=None))),
+    ("float count", _write(_entry(runs=23.0))),
+    ("missing key", _write(json.dumps({"pga": 1.2}))),
+    ("extra key", _write(_entry(extra=1))),
+    ("list", _write("[1, 2, 3]")),
+    ("deep JSON", _write("[" * 3000 + "]" * 3000)),
+    ("truncated", _write(_entry()[:40])),
+    ("not UTF-8", lambda p: p.write_bytes(b"\xff\xfe{}")),
+    ("huge", _write(" " * (MAX_ENTRY_BYTES + 1) + _entry())),
+    ("a folder", lambda p: p.mkdir()),
+    ("symlink to /dev/zero", lambda p: p.symlink_to("/dev/zero")),
+    ("a FIFO", lambda p: os.mkfifo(p)),
+]
+
+
+@pytest.mark.parametrize("damage", [d[1] for d in DAMAGE], ids=[d[0] for d in DAMAGE])
+def test_damaged_entry_is_a_miss_with_one_warning(
+    tmp_path: Path, damage: Callable[[Path], None]
+) -> None:
+    warnings: list[str] = []
+    cache = IdaCache(tmp_path / ".cache", warn=warnings.append)
+    damage(cache_file(tmp_path / ".cache", KEY))
+    assert cache.get(KEY) is None
+    assert len(warnings) == 1 and "damaged cache entry" in warnings[0]
+    assert "\n" not in warnings[0]
+    cache.put(KEY, GOOD)  # the damaged entry is replaced
+    assert cache.get(KEY) == GOOD and len(warnings) == 1
+
+
+def test_valid_entries_and_misses_are_silent(tmp_path: Path) -> None:
+    warnings: list[str] = []
+    cache = IdaCache(tmp_path / ".cache", warn=warnings.append)
+    assert cache.get(KEY) is None
+    cache.put(KEY, GOOD)
+    none = IdaResult(1.2, 0.8, None, None, None, 40, 80.0)
+    cache.put("n" * 64, none)
+    assert cache.get(KEY) == GOOD and cache.get("n" * 64) == none
+    assert warnings == []
+
+
+def test_cache_that_is_a_file_is_replaced(tmp_path: Path) -> None:
+    warnings: list[str] = []
+    (tmp_path / ".cache").write_text("junk", encoding="utf-8")
+    cache = IdaCache(tmp_path / ".cache", warn=warnings.append)
+    assert (tmp_path / ".cache").is_dir() and len(warnings) == 1
+    cache.put(KEY, GOOD)
+    assert cache.get(KEY) == GOOD
+
+
+def test_run_recomputes_damaged_entries(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """Booleans in every entry used to be taken silently and changed the results."""
+    project = tiny_project(tmp_path)
+    out = tmp_path / "out"
+    assert main(["run", str(project), "--out", str(out), "--jobs", "1", "--no-pdf"]) == 0
+    first = (out / "results.json").read_bytes()
+    entries = sorted((out / ".cache").glob("*.json"))
+    for p in entries:
+        data = json.loads(p.read_text(encoding="utf-8"))
+        data["collapse_multiplier"] = True
+        p.write_text(json.dumps(data), encoding="utf-8")
+    capsys.readouterr()
+    assert main(["run", str(project), "--out", str(out), "--jobs", "1", "--no-pdf"]) == 0
+    cap = capsys.readouterr()
+    warnings = [line for line in cap.err.splitlines() if "damaged cache entry" in line]
+    assert len(warnings) == len(entries)
+    assert "Traceback" not in cap.err
+    assert f"{len(entries)} IDAs computed, 0 reused" in " ".join(cap.out.split())
+    assert (out / "results.json").read_bytes() == first
+
+
+def test_every_field_of_an_ida_result_is_checked() -> None:
+    """A field added to IdaResult needs its check here, or every entry reads as damaged."""
+    assert {f.name for f in fields(IdaResult)} <= set(FIELD_CHECKS)
+
+
+@pytest.mark.skipif(not HAS_CURVE, reason="IdaResult has no IDA curve in this version")
+@pytest.mark.parametrize(
+    "point",
+    [
+        {"multiplier": True, "collapsed": False, "peak_ratio": 0.5},
+        {"multiplier": 1.0, "collapsed": 1, "peak_ratio": 0.5},
+        {"multiplier": 1.0, "collapsed": False},
+        {"multiplier": 1.0, "collapsed": False, "peak_ratio": -1.0},
+        [1.0, False, 0.5],
+    ],
+)
+def test_damaged_curve_point(tmp_path: Path, point: object) -> None:
+    warnings: list[str] = []
+    cache = IdaCache(tmp_path / ".cache", warn=warnings.append)
+    cache_file(tmp_path / ".cache", KEY).write_text(_entry(curve=[point]), encoding="utf-8")
+    assert cache.get(KEY) is None and len(warnings) == 1
