@@ -49,20 +49,18 @@ class OrderedInput(Input):
     #: ``?`` opens the help instead of typing (fields where ``?`` is never valid)
     help_key = False
 
-    async def _on_key(self, event: events.Key) -> None:
+    def on_key(self, event: events.Key) -> None:
+        """Apply an editing key at once (before ``Input``'s own key handler, which still
+        runs for these keys: it restarts the cursor blink and inserts only printable keys)."""
         if self.help_key and event.key == "question_mark":
             event.stop()
-            event.prevent_default()
+            event.prevent_default()  # not typed into the field
             self.app.action_help()  # type: ignore[attr-defined]
             return
         action = self.EDIT_KEYS.get(event.key)
         if action is not None:
-            event.stop()
-            event.prevent_default()
-            self._restart_blink()
+            event.stop()  # never reaches the (later) bindings
             getattr(self, f"action_{action}")()
-            return
-        await super()._on_key(event)
 
 
 @dataclass(frozen=True)

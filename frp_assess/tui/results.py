@@ -138,15 +138,18 @@ class RankingTable(DataTable[Any]):
 
 
 class Tabbed(TabbedContent):
-    """TabbedContent that follows the focus into a pane only while the focus is still there
-    (a late focus message would otherwise switch back to a tab the user has left)."""
+    """TabbedContent whose tab is chosen by the tab bar and by the app, never by the focus.
 
-    def _on_tab_pane_focused(self, event: TabPane.Focused) -> None:
-        focused = self.app.focused
-        if focused is not None and event.tab_pane in focused.ancestors:
-            super()._on_tab_pane_focused(event)
-        else:
-            event.stop()
+    ``TabbedContent`` switches to the pane of any widget that gets the focus; a focus
+    message that arrives late (the first field focused at start, processed after the user
+    pressed F10) then sent the user back to a tab they had left.  Here the tab is only
+    changed on purpose, and the app moves the focus into the tab shown
+    (:meth:`FrpAssessApp.show_tab`), so the focus follows the tab and never the reverse.
+    """
+
+    def on_tab_pane_focused(self, event: TabPane.Focused) -> None:
+        event.stop()
+        event.prevent_default()  # TabbedContent's own handler would switch the tab
 
 
 class ResultsPane(Vertical):
