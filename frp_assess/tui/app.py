@@ -43,6 +43,7 @@ from frp_assess.config import Project, load_project_text, project_data
 from frp_assess.config.loader import parse_yaml
 from frp_assess.config.messages import Loc, format_path
 from frp_assess.errors import Cancelled, InputError
+from frp_assess.tui.core.text import printable
 from frp_assess.tui.dialogs import ConfirmQuit, PathPrompt
 from frp_assess.tui.editor import (
     ARTIFICIAL_DEFAULTS,
@@ -61,6 +62,7 @@ from frp_assess.tui.history import HistoryPane
 from frp_assess.tui.interventions import InterventionsEditor
 from frp_assess.tui.item_editor import ItemEditor
 from frp_assess.tui.keybar import KeyBar
+from frp_assess.tui.literal import literal, safe
 from frp_assess.tui.materials import MaterialsEditor
 from frp_assess.tui.model import (
     Problem,
@@ -255,6 +257,12 @@ class FrpAssessApp(App[None]):
         yield Static("", id="status")
         yield KeyBar(id="keybar")
 
+    def notify(self, message: str, *, title: str = "", **kw: Any) -> None:
+        """A notification; its text is shown as plain text (names may hold markup or
+        control characters), never as markup."""
+        kw["markup"] = False
+        super().notify(printable(message, newlines=True), title=printable(title), **kw)
+
     def get_system_commands(self, screen: Screen) -> Any:
         yield from super().get_system_commands(screen)
         yield SystemCommand("Save as…", "Save the project to another file", self.action_save_as)
@@ -360,7 +368,7 @@ class FrpAssessApp(App[None]):
         """Update a Static only when what it shows changed (``key``): typing stays cheap."""
         if self._shown.get(selector) != key:
             self._shown[selector] = key
-            self.w(selector).update(content)
+            self.w(selector).update(safe(content) if isinstance(content, str | Text) else content)
 
     def w(self, selector: str) -> Any:
         """``query_one`` with a cache: the layout never changes after mounting."""
@@ -477,7 +485,7 @@ class FrpAssessApp(App[None]):
                 text = sections.get(sid)
                 if isinstance(w, Static) and self._shown.get(sid) != text:
                     self._shown[sid] = text
-                    w.update(Text(f"✗ {text}", "red") if text else "")
+                    w.update(literal(f"✗ {text}", "red") if text else "")
                     w.display = bool(text)
         for _, editor in editors:
             editor.show_problems(problems)
@@ -574,9 +582,9 @@ class FrpAssessApp(App[None]):
         t.add_column(Text("option"))
         t.add_column(Text("FRP [kg/m]"), justify="right")
         t.add_column(Text("FRP [kg]"), justify="right")
-        t.add_column(Text(f"cost [{costs.currency}]"), justify="right")
+        t.add_column(literal(f"cost [{costs.currency}]"), justify="right")
         for r in rows:
-            t.add_row(*r)
+            t.add_row(*map(literal, r))
         self.set_content("#expanded-options", key, t)
 
     @staticmethod

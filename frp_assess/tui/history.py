@@ -18,7 +18,9 @@ from textual.message import Message
 from textual.widgets import Button, Input, Label, Select, Static
 
 from frp_assess.assess.results import below_collapse
+from frp_assess.tui.core.text import printable
 from frp_assess.tui.fields import OrderedInput
+from frp_assess.tui.literal import literal
 from frp_assess.tui.plots import PlotView, Rule, Series
 from frp_assess.tui.session import HistoryData
 
@@ -84,8 +86,8 @@ class HistoryPane(Vertical):
         cases = self.query_one("#hist-case", Select)
         records = self.query_one("#hist-record", Select)
         with self.app.prevent(Select.Changed):
-            cases.set_options([(c["name"], i) for i, c in enumerate(results["cases"])])
-            records.set_options([(r["name"], i) for i, r in enumerate(results["records"])])
+            cases.set_options([(literal(c["name"]), i) for i, c in enumerate(results["cases"])])
+            records.set_options([(literal(r["name"]), i) for i, r in enumerate(results["records"])])
         gov = results.get("governing")
         case, rec = 0, 0
         if gov:
@@ -192,8 +194,8 @@ class HistoryPane(Vertical):
     def show_history(self, h: HistoryData) -> None:
         """Plot a computed history."""
         info = Text()
-        info.append(f"{h.case}", "bold")
-        info.append(f" under {h.record} × C = {h.multiplier:.5g}: ")
+        info.append(printable(h.case), "bold")
+        info.append(printable(f" under {h.record} × C = {h.multiplier:.5g}: "))
         if h.collapsed:
             info.append("COLLAPSE", "bold red")
             if h.collapse_time is not None:
@@ -245,7 +247,7 @@ class HistoryPane(Vertical):
         )
 
     def show_error(self, message: str) -> None:
-        self.query_one("#hist-info", Static).update(Text(f"✗ {message}", "red"))
+        self.query_one("#hist-info", Static).update(literal(f"✗ {message}", "red"))
 
 
 def _sym_range(values: list[float], at_least: float, at_most: float = 2.0) -> tuple[float, float]:

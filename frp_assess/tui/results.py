@@ -21,6 +21,8 @@ from textual.message import Message
 from textual.widgets import DataTable, Label, Select, Static, TabbedContent, TabPane
 
 from frp_assess.assess.results import recommendation_text
+from frp_assess.tui.core.text import printable
+from frp_assess.tui.literal import literal, safe
 from frp_assess.tui.plots import PlotView, Rule, Series
 
 MATERIAL_STYLES = ("green", "yellow", "magenta", "cyan", "bright_blue", "red", "white")
@@ -29,7 +31,7 @@ POSITION_MARKERS = {"external": "●", "centred": "▲"}
 
 def _text(value: Any) -> Text:
     """A table cell as plain text (a str cell would be read as Rich markup)."""
-    return value if isinstance(value, Text) else Text(str(value))
+    return safe(value) if isinstance(value, Text) else literal(value)
 
 
 def _num(value: Any, fmt: str) -> str:
@@ -95,7 +97,7 @@ class RankingTable(DataTable[Any]):
         self.clear(columns=True)
         for i, (header, _, _) in enumerate(RANKING_COLUMNS):
             if header == "cost":
-                header = f"cost [{self.currency}]"
+                header = f"cost [{printable(self.currency)}]"
             mark = (" ▼" if self.sort_reverse else " ▲") if i == self.sort_column else ""
             self.add_column(Text(header + mark))
         self.order = sorted_order(self.cases, self.sort_column, self.sort_reverse)
@@ -211,7 +213,7 @@ class ResultsPane(Vertical):
         self.query_one(RankingTable).show(results["cases"], results["costs"]["currency"])
         sel = self.query_one("#case-select", Select)
         with self.app.prevent(Select.Changed):
-            sel.set_options([(c["name"], i) for i, c in enumerate(results["cases"])])
+            sel.set_options([(literal(c["name"]), i) for i, c in enumerate(results["cases"])])
             sel.value = 0
         self.show_case(0)
         self.draw_plot()
@@ -225,7 +227,7 @@ class ResultsPane(Vertical):
         self.query_one("#results-note", Static).update(
             Text.assemble(
                 ("Results of the last run, in ", "dim"),
-                (f"{self._out_dir}/", ""),
+                (printable(f"{self._out_dir}/"), ""),
                 ("  (edited since: ctrl+r to rerun)" if stale else "", "yellow"),
             )
         )
@@ -245,7 +247,9 @@ class ResultsPane(Vertical):
             "satisfied" if cc["passed"] else "NOT satisfied", "green" if cc["passed"] else "red"
         )
         t.append("\nRecommended: ", "bold")
-        t.append(recommendation_text(r), "bold green" if rec or urm["meets_target"] else "red")
+        t.append(
+            printable(recommendation_text(r)), "bold green" if rec or urm["meets_target"] else "red"
+        )
         self.query_one("#results-summary", Static).update(t)
 
     def show_case(self, index: int) -> None:
@@ -262,7 +266,7 @@ class ResultsPane(Vertical):
         table.clear()
         for rec in c["records"]:
             table.add_row(
-                Text(rec["record"]),
+                literal(rec["record"]),
                 f"{rec['pga']:.4f}",
                 _num(rec["collapse_multiplier"], ".4f")
                 if rec["collapse_multiplier"]
@@ -271,7 +275,7 @@ class ResultsPane(Vertical):
                 _num(rec["q"], ".3f"),
             )
         t = Text()
-        t.append(f"{c['name']}: ", "bold")
+        t.append(printable(f"{c['name']}: "), "bold")
         t.append(
             f"mean a_dyn = {c['mean_a_dyn']:.4f} g, min = {c['min_a_dyn']:.4f} g, "
             f"design a_dyn = {c['design_a_dyn']:.4f} g, mean q = {c['mean_q']:.2f}\n"
@@ -371,17 +375,17 @@ class ResultsPane(Vertical):
         table.add_column(Text("ρ [‰]"), justify="right", no_wrap=True)
         table.add_column(Text("C/D"), justify="right", no_wrap=True)
         table.add_column(Text("FRP [kg]"), justify="right", no_wrap=True)
-        table.add_column(Text(f"cost [{cur}]"), justify="right", no_wrap=True)
+        table.add_column(literal(f"cost [{cur}]"), justify="right", no_wrap=True)
         table.add_column(Text("note"), ratio=1)
         for d in found:
             table.add_row(
-                Text(d["material"]),
-                Text(d["position"]),
+                literal(d["material"]),
+                literal(d["position"]),
                 Text(_num(d["ratio"], "g")),
                 Text(_num(d["capacity_demand"], ".2f")),
                 Text(_num(d["frp_mass"], ".1f")),
                 Text(_num(d["frp_cost"], ".0f")),
-                Text(d["message"], "dim"),
+                literal(d["message"], "dim"),
             )
         out.update(table)
 
@@ -398,9 +402,9 @@ class ResultsPane(Vertical):
             code = "EC8" if "1998" in c["code"] else "NTC" if "NTC" in c["code"] else c["code"]
             table.add_row(
                 Text("✓", "green") if c["passed"] else Text("✗", "bold red"),
-                Text(f"{code} {c['clause']}"),
-                Text(c["requirement"]),
-                Text(c["found"]),
+                literal(f"{code} {c['clause']}"),
+                literal(c["requirement"]),
+                literal(c["found"]),
                 Text(margin, "green" if c["passed"] else "red"),
             )
         self.query_one("#compliance-table", Static).update(table)
@@ -408,7 +412,7 @@ class ResultsPane(Vertical):
         self.query_one("#compliance-summary", Static).update(
             Text.assemble(
                 ("Spectrum compatibility of the records ", "bold"),
-                (f"({s['records_kind']}, T1 = {s['t1']:g} s): ", ""),
+                (printable(f"({s['records_kind']}, T1 = {s['t1']:g} s): "), ""),
                 ("all checks passed", "green") if comp["passed"] else ("some checks FAIL", "red"),
             )
         )
