@@ -7,7 +7,10 @@ from __future__ import annotations
 import ast
 import importlib
 import inspect
+import re
 import textwrap
+import tomllib
+from importlib.metadata import version
 from pathlib import Path
 
 from textual.widgets import TabbedContent
@@ -78,3 +81,17 @@ class Overriding(TabbedContent):
 
 def test_the_check_finds_an_override():
     assert private_textual_names(Overriding) == ["_on_tab_pane_focused"]
+
+
+def test_textual_is_pinned_to_the_major_version_tested():
+    """pyproject.toml allows one major version of Textual, the one installed here (Textual
+    changes its API between major versions)."""
+    pyproject = Path(__file__).resolve().parents[2] / "pyproject.toml"
+    deps = tomllib.loads(pyproject.read_text(encoding="utf-8"))["project"]["dependencies"]
+    spec = next(d for d in deps if re.match(r"textual\b", d))
+    m = re.fullmatch(r"textual>=(\d+)\.(\d+),<(\d+)", spec.replace(" ", ""))
+    assert m is not None, spec
+    low, high = (int(m[1]), int(m[2])), int(m[3])
+    assert high == low[0] + 1
+    installed = tuple(int(x) for x in version("textual").split(".")[:2])
+    assert low <= installed and installed[0] < high
