@@ -1,21 +1,20 @@
 """`frp-assess tui`: the Textual application.
 
 The app owns the editing state: it builds the project data from the fields and tables,
-validates it with the loader's models (:mod:`frp_assess.tui.model`), shows each problem next
+validates it with the loader's models (:mod:`frp_assess.tui.core.model`), shows each problem next
 to its field, updates derived values and the spectrum preview, and runs the long operations
-(assessment, time histories, export) in worker threads through :mod:`frp_assess.tui.session`.
+(assessment, time histories, export) in worker threads through :mod:`frp_assess.tui.core.session`.
 """
 
 from __future__ import annotations
 
 import copy
-import json
-import re
 import threading
 import time
 from pathlib import Path
 from typing import Any, ClassVar
 
+from rich.table import Table
 from rich.text import Text
 from textual import on, work
 from textual.app import App, ComposeResult, SystemCommand
@@ -38,11 +37,39 @@ from textual.widgets import (
 from frp_assess.api import default_out_dir
 from frp_assess.assess.inputs import UNREINFORCED
 from frp_assess.assess.results import recommendation_text
-from frp_assess.assess.runner import design_value_rule
 from frp_assess.config import Project, load_project_text, project_data
 from frp_assess.config.loader import parse_yaml
 from frp_assess.config.messages import Loc, format_path
 from frp_assess.errors import Cancelled, InputError
+from frp_assess.tui.core.model import (
+    Problem,
+    get_path,
+    material_table,
+    record_file_problem,
+    set_path,
+    spectrum_preview,
+    validate_edit,
+    wall_derived,
+)
+from frp_assess.tui.core.new_project import new_project_text
+from frp_assess.tui.core.project_info import (
+    option_rows,
+    record_count,
+    records_summary,
+    retrofits_summary,
+)
+from frp_assess.tui.core.session import (
+    HistoryData,
+    RunEvent,
+    RunOutcome,
+    case_history,
+    execute_run,
+    export_outputs,
+    load_previous,
+    save_project,
+    yaml_path_problem,
+)
+from frp_assess.tui.core.tabs import TABS, tab_of, tab_title
 from frp_assess.tui.core.text import printable
 from frp_assess.tui.dialogs import ConfirmQuit, PathPrompt
 from frp_assess.tui.editor import (
@@ -64,44 +91,11 @@ from frp_assess.tui.item_editor import ItemEditor
 from frp_assess.tui.keybar import KeyBar
 from frp_assess.tui.literal import literal, safe
 from frp_assess.tui.materials import MaterialsEditor
-from frp_assess.tui.model import (
-    Problem,
-    get_path,
-    material_table,
-    record_file_problem,
-    set_path,
-    spectrum_preview,
-    validate_edit,
-    wall_derived,
-)
 from frp_assess.tui.plots import Rule, Series
 from frp_assess.tui.record_files import RecordFilesEditor
 from frp_assess.tui.results import RankingTable, ResultsPane, Tabbed
 from frp_assess.tui.run_panel import RunPanel
-from frp_assess.tui.session import (
-    HistoryData,
-    RunEvent,
-    RunOutcome,
-    case_history,
-    execute_run,
-    export_outputs,
-    load_previous,
-    save_project,
-    yaml_path_problem,
-)
 
-#: the tabs, in order (F2 … F10, or alt+1 … alt+9 where the terminal sends them)
-TABS: tuple[tuple[str, str], ...] = (
-    ("tab-wall", "Wall"),
-    ("tab-site", "Site"),
-    ("tab-records", "Records"),
-    ("tab-materials", "Materials"),
-    ("tab-retrofits", "Retrofits"),
-    ("tab-analysis", "Analysis"),
-    ("tab-run", "Run"),
-    ("tab-results", "Results"),
-    ("tab-history", "History"),
-)
 #: the widget that gets the focus when a tab is shown
 FIRST_FOCUS = {
     "tab-wall": "#f-wall-thickness-control",
@@ -119,20 +113,6 @@ EDITORS: tuple[tuple[Loc, str], ...] = (
     (("materials",), "#materials-editor"),
     (("interventions",), "#interventions-editor"),
 )
-
-
-def tab_of(path: Loc) -> str:
-    """The tab where the field of a key path is edited."""
-    head = path[0] if path else "wall"
-    if head in ("project", "wall"):
-        return "tab-wall"
-    if head == "seismic":
-        return "tab-records" if path[1:2] == ("records",) else "tab-site"
-    if head == "materials":
-        return "tab-materials"
-    if head == "interventions":
-        return "tab-retrofits"
-    return "tab-analysis"
 
 
 class RunProgress(Message):
@@ -331,15 +311,8 @@ class FrpAssessApp(App[None]):
             text = self.path.read_text(encoding="utf-8")
             name = str(self.path)
         else:
-            from frp_assess.cli.new import template_text
-
-            text = self.initial_text or template_text()
+            text = new_project_text(self.path, self.initial_text)
             name = str(self.path) if self.path else "new project"
-            if self.path is not None:  # as `frp-assess new`: the name from the file name
-                stem = self.path.stem.replace("_", " ").replace("-", " ").strip()
-                if not re.fullmatch(r"[A-Za-z0-9][\w .()-]*", stem):
-                    stem = json.dumps(stem, ensure_ascii=False)  # a quoted YAML scalar
-                text = text.replace("name: Example wall", f"name: {stem}", 1)
         try:
             data, _ = parse_yaml(text, name)
         except InputError as exc:  # the CLI reports this before starting; here just say it
@@ -533,47 +506,20 @@ class FrpAssessApp(App[None]):
             editor.set_materials(list(table))
             editor.refresh_table()
         self.w("#materials-editor").refresh_table()
-        if project is not None:
-            n_rec = self._record_count(project)
-            n = len(project.expand_interventions())
-            text = (
-                f"Retrofit options: {n} after expanding sweeps (repeats dropped); with the "
-                f"unreinforced wall {n + 1} cases × {n_rec} records = {(n + 1) * n_rec} IDAs"
-            )
-        else:
-            text = "Retrofit options (FRP mass per metre of wall, both faces if external)"
+        text = retrofits_summary(project)
         self.set_content("#retrofits-info", text, text)
         self._expanded_options(project, wall)
-        self._records_info(data, project)
+        self._records_info(project)
 
     def _expanded_options(self, project: Project | None, wall: Any) -> None:
         """The options the run will compare, with their FRP quantities and costs."""
         if project is None or isinstance(wall, str):
             self.set_content("#expanded-options", None, "")
             return
-        from rich.table import Table
-
-        from frp_assess.assess.from_project import material_of
-        from frp_assess.assess.inputs import Costs
-        from frp_assess.assess.quantities import frp_quantity
-
-        w, table = project.wall, project.material_table()
-        costs = Costs(str(project.costs.currency), project.costs.installation_per_metre)
-        rows = []
-        for o in project.expand_interventions():
-            q = frp_quantity(
-                w.thickness,
-                w.height,
-                w.length,
-                material_of(table[o.material]),
-                o.position,
-                o.ratio,
-                costs,
-            )
-            rows.append((str(o.name), f"{q.mass_per_m:.2f}", f"{q.mass:.1f}", f"{q.cost:.0f}"))
-        key = (tuple(rows), costs.currency, w.length)
+        rows = option_rows(project)
+        currency, length = str(project.costs.currency), project.wall.length
         t = Table(
-            title=Text(f"Options compared (wall length L = {w.length:g} m)", "bold"),
+            title=Text(f"Options compared (wall length L = {length:g} m)", "bold"),
             title_justify="left",
             min_width=60,
             box=None,
@@ -582,36 +528,16 @@ class FrpAssessApp(App[None]):
         t.add_column(Text("option"))
         t.add_column(Text("FRP [kg/m]"), justify="right")
         t.add_column(Text("FRP [kg]"), justify="right")
-        t.add_column(literal(f"cost [{costs.currency}]"), justify="right")
+        t.add_column(literal(f"cost [{currency}]"), justify="right")
         for r in rows:
-            t.add_row(*map(literal, r))
-        self.set_content("#expanded-options", key, t)
+            t.add_row(literal(r.name), f"{r.mass_per_m:.2f}", f"{r.mass:.1f}", f"{r.cost:.0f}")
+        self.set_content("#expanded-options", (tuple(rows), currency, length), t)
 
-    @staticmethod
-    def _record_count(project: Project) -> int:
-        recs = project.seismic.records
-        return recs.artificial.count if recs.artificial is not None else len(recs.files or [])
-
-    def _records_info(self, data: dict[str, Any], project: Project | None) -> None:
+    def _records_info(self, project: Project | None) -> None:
         if project is None:
             self.set_content("#records-info", "", "")
             return
-        recs = project.seismic.records
-        n = self._record_count(project)
-        rule = design_value_rule(n)
-        if recs.artificial is not None:
-            a = recs.artificial
-            text = (
-                f"{a.count} artificial records of {a.duration:g} s at dt = {a.dt:g} s "
-                f"({int(round(a.duration / a.dt)) + 1} samples), compatible with the site "
-                f"spectrum; seed {a.seed}."
-            )
-        else:
-            text = f"{n} record files, " + (
-                "scaled together to a_g·S of the spectrum."
-                if recs.scale_to_spectrum
-                else "used as recorded."
-            )
+        text, rule = records_summary(project)
         self.set_content(
             "#records-info",
             (text, rule),
@@ -677,7 +603,7 @@ class FrpAssessApp(App[None]):
         else:
             p = self.problems[0]
             more = f" (+{len(self.problems) - 1} more)" if len(self.problems) > 1 else ""
-            tab = dict(TABS)[tab_of(p.target)]
+            tab = tab_title(tab_of(p.target))
             t.append(f"✗ {p}{more} [{tab}]", "red")
         if self.running:
             t.append("  │ running…", "yellow")
@@ -831,7 +757,7 @@ class FrpAssessApp(App[None]):
         self.show_tab("tab-run")
         if self.problems or self.project is None:
             p = self.problems[0] if self.problems else "the project is not valid"
-            tab = dict(TABS)[tab_of(p.target)] if isinstance(p, Problem) else ""
+            tab = tab_title(tab_of(p.target)) if isinstance(p, Problem) else ""
             panel.log_line(f"cannot run: {p} (fix it in the {tab} tab)", "red")
             panel.set_state(Text("cannot run: fix the problems first", style="bold red"))
             return
@@ -844,7 +770,7 @@ class FrpAssessApp(App[None]):
         names = [UNREINFORCED, *(str(o.name) for o in project.expand_interventions())]
         if self.modified():
             panel.log_line("note: running the project as edited (not saved yet)", "yellow")
-        panel.start(names, self._record_count(project), str(out_dir))
+        panel.start(names, record_count(project), str(out_dir))
         self.cancel_event = threading.Event()
         self.running = True
         self._update_status()

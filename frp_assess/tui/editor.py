@@ -35,8 +35,8 @@ from frp_assess.config.schema import (
     TableSpectrum,
     WallSpec,
 )
+from frp_assess.tui.core.model import WallDerived
 from frp_assess.tui.fields import FieldRow, FieldSpec, choice, field_help, items, num, text
-from frp_assess.tui.model import WallDerived
 from frp_assess.tui.plots import PlotView
 from frp_assess.tui.record_files import RecordFilesEditor
 

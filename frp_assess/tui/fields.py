@@ -20,9 +20,9 @@ from textual.containers import Horizontal, Vertical
 from textual.widgets import Input, Label, Select, Static
 
 from frp_assess.config.messages import Loc
+from frp_assess.tui.core.model import MISSING, format_value, parse_list, parse_scalar
 from frp_assess.tui.core.text import printable
 from frp_assess.tui.literal import literal
-from frp_assess.tui.model import MISSING, format_value, parse_list, parse_scalar
 
 Kind = Literal["scalar", "text", "choice", "list"]
 

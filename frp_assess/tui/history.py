@@ -18,11 +18,11 @@ from textual.message import Message
 from textual.widgets import Button, Input, Label, Select, Static
 
 from frp_assess.assess.results import below_collapse
+from frp_assess.tui.core.session import HistoryData
 from frp_assess.tui.core.text import printable
 from frp_assess.tui.fields import OrderedInput
 from frp_assess.tui.literal import literal
 from frp_assess.tui.plots import PlotView, Rule, Series
-from frp_assess.tui.session import HistoryData
 
 
 class HistoryPane(Vertical):

@@ -10,9 +10,9 @@ from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.widgets import Button, Label, ProgressBar, RichLog, Static
 
+from frp_assess.tui.core.progress import CaseCount
+from frp_assess.tui.core.session import RunEvent
 from frp_assess.tui.literal import literal, safe
-from frp_assess.tui.progress import CaseCount
-from frp_assess.tui.session import RunEvent
 
 STAGES = {
     "records": "generating/reading the records and checking them",
