@@ -295,3 +295,8 @@ class FieldRow(Vertical):
         self.query_one(".f-error", Static).update(
             "" if message is None else literal(f"✗ {message}")
         )
+
+
+def section_error(section_id: str) -> Static:
+    """Where a problem of a section that is not one field's is shown (hidden when none)."""
+    return Static("", id=section_id, classes="section-error")

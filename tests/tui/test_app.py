@@ -17,7 +17,7 @@ from frp_assess.config import load_project, load_project_text
 from frp_assess.tui.app import FrpAssessApp
 from frp_assess.tui.help import HelpScreen
 from frp_assess.tui.interventions import InterventionsEditor
-from frp_assess.tui.results import RankingTable
+from frp_assess.tui.ranking_table import RankingTable
 from frp_assess.tui.run_panel import RunPanel
 from tests.tui.conftest import after_workers, run_async, settle
 
