@@ -18,6 +18,7 @@ from textual import on
 from textual.app import App, ComposeResult, SystemCommand
 from textual.binding import Binding, BindingType
 from textual.screen import Screen
+from textual.widget import Widget
 from textual.widgets import Button, Input, Select, TabbedContent, TabPane
 
 from frp_assess.api import default_out_dir
@@ -101,9 +102,17 @@ class FrpAssessApp(App[None]):
 
     # ------------------------------------------------------------------------ layout
     def compose(self) -> ComposeResult:
-        panes = (WallPane(), SitePane(), RecordsPane(), MaterialsPane(classes="pane"))
-        panes += (RetrofitsPane(classes="pane"), AnalysisPane(), RunPanel(id="run-panel"))
-        panes += (ResultsPane(id="results-pane"), HistoryPane(id="history-pane"))
+        panes: tuple[Widget, ...] = (
+            WallPane(),
+            SitePane(),
+            RecordsPane(),
+            MaterialsPane(classes="pane"),
+            RetrofitsPane(classes="pane"),
+            AnalysisPane(),
+            RunPanel(id="run-panel"),
+            ResultsPane(id="results-pane"),
+            HistoryPane(id="history-pane"),
+        )
         with MainTabs(id="tabs"):
             for (tab_id, title), pane in zip(TABS, panes, strict=True):
                 with TabPane(title, id=tab_id):

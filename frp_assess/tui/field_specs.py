@@ -157,7 +157,7 @@ RECORD_SOURCE = FieldSpec(
     help=field_help(RecordsSpec, "artificial") + " / " + field_help(RecordsSpec, "files"),
 )
 #: what artificial records start with when chosen: the schema's defaults
-ARTIFICIAL_DEFAULTS = ArtificialRecords().model_dump(mode="json")
+ARTIFICIAL_DEFAULTS = ArtificialRecords.model_validate({}).model_dump(mode="json")
 ARTIFICIAL_FIELDS = in_variant(
     "records",
     "artificial",
@@ -235,7 +235,7 @@ DESIGN_MODE = FieldSpec(
     help="Design mode: the smallest ratio meeting the target per material and position.",
 )
 #: what design mode starts with when switched on: GFRP, and the schema's defaults
-DESIGN_DEFAULTS = DesignSpec(materials=["GFRP"]).model_dump(mode="json")
+DESIGN_DEFAULTS = DesignSpec.model_validate({"materials": ["GFRP"]}).model_dump(mode="json")
 DESIGN_FIELDS = in_variant(
     "design",
     "on",

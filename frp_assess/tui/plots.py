@@ -118,7 +118,7 @@ def _finite(v: float | None) -> bool:
 
 def data_range(values: Sequence[float | None], pad: float = 0.0) -> tuple[float, float]:
     """(min, max) of the finite values, widened by ``pad`` of the span; (0, 1) if none."""
-    finite = [float(v) for v in values if _finite(v)]
+    finite = [float(v) for v in values if v is not None and _finite(v)]
     if not finite:
         return 0.0, 1.0
     lo, hi = min(finite), max(finite)
