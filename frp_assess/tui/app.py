@@ -1,172 +1,58 @@
 """`frp-assess tui`: the Textual application.
 
-The app owns the editing state: it builds the project data from the fields and tables,
-validates it with the loader's models (:mod:`frp_assess.tui.model`), shows each problem next
-to its field, updates derived values and the spectrum preview, and runs the long operations
-(assessment, time histories, export) in worker threads through :mod:`frp_assess.tui.session`.
+The app composes the panes (one per tab, each in its own module), binds the keys and routes
+the messages between them.  The editing state is :class:`~frp_assess.tui.project_form.
+ProjectForm`; the long operations (assessment, last results, export) run in worker threads
+(:mod:`frp_assess.tui.jobs`) through the headless session (:mod:`frp_assess.tui.core`).
 """
 
 from __future__ import annotations
 
-import copy
-import json
-import re
 import threading
-import time
+from functools import partial
 from pathlib import Path
 from typing import Any, ClassVar
 
 from rich.text import Text
-from textual import on, work
+from textual import on
 from textual.app import App, ComposeResult, SystemCommand
 from textual.binding import Binding, BindingType
-from textual.containers import ScrollableContainer, Vertical
-from textual.message import Message
 from textual.screen import Screen
 from textual.widget import Widget
-from textual.widgets import (
-    Button,
-    DataTable,
-    Input,
-    Select,
-    Static,
-    TabbedContent,
-    TabPane,
-    Tabs,
-)
+from textual.widgets import Button, Input, Select, TabbedContent, TabPane
 
 from frp_assess.api import default_out_dir
 from frp_assess.assess.inputs import UNREINFORCED
 from frp_assess.assess.results import recommendation_text
-from frp_assess.assess.runner import design_value_rule
-from frp_assess.config import Project, load_project_text, project_data
-from frp_assess.config.loader import parse_yaml
-from frp_assess.config.messages import Loc, format_path
-from frp_assess.errors import Cancelled, InputError
+from frp_assess.config import Project
+from frp_assess.errors import InputError
+from frp_assess.tui.analysis_pane import AnalysisPane
+from frp_assess.tui.core.model import Problem
+from frp_assess.tui.core.opening import opening_data
+from frp_assess.tui.core.project_info import record_count
+from frp_assess.tui.core.session import RunOutcome, save_project, yaml_path_problem
+from frp_assess.tui.core.tabs import TABS, tab_of, tab_title
+from frp_assess.tui.core.text import printable
 from frp_assess.tui.dialogs import ConfirmQuit, PathPrompt
-from frp_assess.tui.editor import (
-    ARTIFICIAL_DEFAULTS,
-    DESIGN_DEFAULTS,
-    SECTIONS,
-    SPECTRUM_DEFAULTS,
-    AnalysisPane,
-    RecordsPane,
-    SitePane,
-    WallPane,
-    derived_wall_table,
-)
 from frp_assess.tui.fields import FieldRow
 from frp_assess.tui.help import HelpScreen
+from frp_assess.tui.help_line import HelpLine
 from frp_assess.tui.history import HistoryPane
-from frp_assess.tui.interventions import InterventionsEditor
 from frp_assess.tui.item_editor import ItemEditor
+from frp_assess.tui.jobs import export_job, previous_results_job, run_assessment_job
 from frp_assess.tui.keybar import KeyBar
-from frp_assess.tui.materials import MaterialsEditor
-from frp_assess.tui.model import (
-    Problem,
-    get_path,
-    material_table,
-    record_file_problem,
-    set_path,
-    spectrum_preview,
-    validate_edit,
-    wall_derived,
-)
-from frp_assess.tui.plots import Rule, Series
-from frp_assess.tui.record_files import RecordFilesEditor
-from frp_assess.tui.results import RankingTable, ResultsPane, Tabbed
+from frp_assess.tui.main_tabs import MainTabs
+from frp_assess.tui.materials_pane import MaterialsPane
+from frp_assess.tui.messages import ExportDone, PreviousLoaded, RunDone, RunProgress
+from frp_assess.tui.project_form import ProjectForm
+from frp_assess.tui.ranking_table import RankingTable
+from frp_assess.tui.records_pane import RecordsPane
+from frp_assess.tui.results import ResultsPane
+from frp_assess.tui.retrofits_pane import RetrofitsPane
 from frp_assess.tui.run_panel import RunPanel
-from frp_assess.tui.session import (
-    HistoryData,
-    RunEvent,
-    RunOutcome,
-    case_history,
-    execute_run,
-    export_outputs,
-    load_previous,
-    save_project,
-    yaml_path_problem,
-)
-
-#: the tabs, in order (F2 … F10, or alt+1 … alt+9 where the terminal sends them)
-TABS: tuple[tuple[str, str], ...] = (
-    ("tab-wall", "Wall"),
-    ("tab-site", "Site"),
-    ("tab-records", "Records"),
-    ("tab-materials", "Materials"),
-    ("tab-retrofits", "Retrofits"),
-    ("tab-analysis", "Analysis"),
-    ("tab-run", "Run"),
-    ("tab-results", "Results"),
-    ("tab-history", "History"),
-)
-#: the widget that gets the focus when a tab is shown
-FIRST_FOCUS = {
-    "tab-wall": "#f-wall-thickness-control",
-    "tab-site": "#f-seismic-spectrum-type-control",
-    "tab-records": "#f-seismic-records-source-control",
-    "tab-materials": "#materials-editor DataTable",
-    "tab-retrofits": "#interventions-editor DataTable",
-    "tab-analysis": "#f-analysis-restitution-control",
-    "tab-run": "#run-button",
-    "tab-results": "#ranking-table",
-    "tab-history": "#hist-case",
-}
-EDITORS: tuple[tuple[Loc, str], ...] = (
-    (("seismic", "records", "files"), "#files-editor"),
-    (("materials",), "#materials-editor"),
-    (("interventions",), "#interventions-editor"),
-)
-
-
-def tab_of(path: Loc) -> str:
-    """The tab where the field of a key path is edited."""
-    head = path[0] if path else "wall"
-    if head in ("project", "wall"):
-        return "tab-wall"
-    if head == "seismic":
-        return "tab-records" if path[1:2] == ("records",) else "tab-site"
-    if head == "materials":
-        return "tab-materials"
-    if head == "interventions":
-        return "tab-retrofits"
-    return "tab-analysis"
-
-
-class RunProgress(Message):
-    """A progress event of the run (posted from the worker thread)."""
-
-    def __init__(self, event: RunEvent) -> None:
-        super().__init__()
-        self.event = event
-
-
-class RunDone(Message):
-    """The run ended: status ``done`` | ``cancelled`` | ``error``."""
-
-    def __init__(self, status: str, outcome: RunOutcome | None, message: str) -> None:
-        super().__init__()
-        self.status, self.outcome, self.message = status, outcome, message
-
-
-class PreviousLoaded(Message):
-    """The results of the last run, rebuilt from the cache at start (None: none match)."""
-
-    def __init__(self, outcome: RunOutcome | None, error: str = "") -> None:
-        super().__init__()
-        self.outcome, self.error = outcome, error
-
-
-class HistoryDone(Message):
-    def __init__(self, data: HistoryData | None, error: str = "") -> None:
-        super().__init__()
-        self.data, self.error = data, error
-
-
-class ExportDone(Message):
-    def __init__(self, files: list[Path], error: str = "") -> None:
-        super().__init__()
-        self.files, self.error = files, error
+from frp_assess.tui.site_pane import SitePane
+from frp_assess.tui.status_bar import StatusBar
+from frp_assess.tui.wall_pane import WallPane
 
 
 class FrpAssessApp(App[None]):
@@ -206,53 +92,33 @@ class FrpAssessApp(App[None]):
         self.jobs = jobs
         self.base_dir = (self.path.parent if self.path else Path.cwd()).resolve()
         self.initial_text = text
-        self.variants: dict[str, str] = {"spectrum": "ntc2018", "records": "artificial"}
-        self.variants["design"] = "off"
-        self.problems: list[Problem] = []
-        self.project: Project | None = None
-        self.saved_data: Any = None
+        self.form = ProjectForm(self)
         self.outcome: RunOutcome | None = None
         self.cancel_event: threading.Event | None = None
         self.running = False
-        self.load_message = ""
-        self._pending_run = False
-        self._field_rows: list[FieldRow] | None = None
-        self._widget_cache: dict[str, Any] = {}
-        self._shown: dict[str, Any] = {}
-        self._quitting = False
-        self._last_data: Any = None
-        self._previous_event = threading.Event()  #: cancels rebuilding the last run's results
+        self.pending_run = False  #: run once the new project is saved
+        self.quitting = False
+        self.previous_cancel = threading.Event()  #: stops rebuilding the last results
 
     # ------------------------------------------------------------------------ layout
     def compose(self) -> ComposeResult:
-        with Tabbed(id="tabs"):
-            with TabPane("Wall", id="tab-wall"):
-                yield WallPane()
-            with TabPane("Site", id="tab-site"):
-                yield SitePane()
-            with TabPane("Records", id="tab-records"):
-                yield RecordsPane()
-            with TabPane("Materials", id="tab-materials"):
-                with Vertical(classes="pane"):
-                    yield Static(
-                        "FRP bar materials (library and the project's)", classes="section-title"
-                    )
-                    yield MaterialsEditor(id="materials-editor")
-            with TabPane("Retrofits", id="tab-retrofits"):
-                with Vertical(classes="pane"):
-                    yield Static("", id="retrofits-info", classes="section-title")
-                    yield InterventionsEditor(id="interventions-editor")
-                    yield Static("", id="expanded-options")
-            with TabPane("Analysis", id="tab-analysis"):
-                yield AnalysisPane()
-            with TabPane("Run", id="tab-run"):
-                yield RunPanel(id="run-panel")
-            with TabPane("Results", id="tab-results"):
-                yield ResultsPane(id="results-pane")
-            with TabPane("History", id="tab-history"):
-                yield HistoryPane(id="history-pane")
-        yield Static("", id="help-line")
-        yield Static("", id="status")
+        panes: tuple[Widget, ...] = (
+            WallPane(),
+            SitePane(),
+            RecordsPane(),
+            MaterialsPane(classes="pane"),
+            RetrofitsPane(classes="pane"),
+            AnalysisPane(),
+            RunPanel(id="run-panel"),
+            ResultsPane(id="results-pane"),
+            HistoryPane(id="history-pane"),
+        )
+        with MainTabs(id="tabs"):
+            for (tab_id, title), pane in zip(TABS, panes, strict=True):
+                with TabPane(title, id=tab_id):
+                    yield pane
+        yield HelpLine("", id="help-line")
+        yield StatusBar("", id="status")
         yield KeyBar(id="keybar")
 
     def get_system_commands(self, screen: Screen) -> Any:
@@ -262,44 +128,79 @@ class FrpAssessApp(App[None]):
         yield SystemCommand("Export", "Export the PDF report and results", self.action_export)
         yield SystemCommand("Help", "Keys and usage (?)", self.action_help)
 
+    def notify(self, message: str, *, title: str = "", **kw: Any) -> None:
+        """A notification; its text is shown as plain text (names may hold markup or
+        control characters), never as markup."""
+        kw["markup"] = False
+        super().notify(printable(message, newlines=True), title=printable(title), **kw)
+
+    # ------------------------------------------------------------- the project edited
+    @property
+    def project(self) -> Project | None:
+        """The project as typed, if valid."""
+        return self.form.project
+
+    @property
+    def problems(self) -> list[Problem]:
+        """What is wrong with the project as typed (empty: valid)."""
+        return self.form.problems
+
+    @property
+    def rows(self) -> list[FieldRow]:
+        """The fields of the project (not those of the tables' forms)."""
+        return self.form.rows
+
+    def modified(self) -> bool:
+        """Whether the fields differ from the file as last opened or saved."""
+        return self.form.modified()
+
+    def revalidate(self, force: bool = False) -> None:
+        """Validate what is typed and show the outcome (nothing redone if unchanged)."""
+        data = self.form.revalidate(self.base_dir, force)
+        if data is not None:
+            self.update_status(data)
+
+    def update_status(self, data: dict[str, Any] | None = None) -> None:
+        """The status line, and whether the results shown are of the project as it is."""
+        modified = self.form.modified(data)
+        self.query_one(StatusBar).show_state(self.path, modified, self.problems, self.running)
+        if self.outcome is not None:
+            stale = self.project is None or self.project != self.outcome.project
+            self.query_one(ResultsPane).mark_stale(stale)
+
     # ---------------------------------------------------------------------- opening
     def on_mount(self) -> None:
-        data = self._initial_data()
-        self.populate(data)
-        self.saved_data = self.collect()
+        data, message = opening_data(self.path, self.initial_text, self.base_dir)
+        self.form.populate(data)
+        self.form.saved_data = self.form.collect()
         if self.path is not None and not self.path.exists():
-            self.saved_data = None  # a new file: not saved yet
+            self.form.saved_data = None  # a new file: not saved yet
         self.revalidate()
-        if self.load_message:
-            self.notify(self.load_message, severity="warning", timeout=8, markup=False)
+        if message:
+            self.notify(message, severity="warning", timeout=8)
         self.query_one("#f-wall-thickness-control", Input).focus()
         if self.path is not None and self.project is not None and not self.problems:
-            if (default_out_dir(self.path) / "results.json").is_file():
-                self._previous_worker(self.project, self.path.name, default_out_dir(self.path))
-
-    @work(thread=True, exclusive=True, group="previous", exit_on_error=False)
-    def _previous_worker(self, project: Project, input_file: str, out_dir: Path) -> None:
-        try:
-            outcome = load_previous(
-                project,
-                self.base_dir,
-                input_file,
-                out_dir,
-                cancel=self._previous_event,
-                jobs=self.jobs,
-            )
-        except Cancelled:
-            return
-        except Exception as exc:  # noqa: BLE001 - a note in the run log, never a crash
-            self.post_message(PreviousLoaded(None, f"{type(exc).__name__}: {exc}"))
-        else:
-            self.post_message(PreviousLoaded(outcome))
+            out_dir = default_out_dir(self.path)
+            if (out_dir / "results.json").is_file():
+                job = partial(
+                    previous_results_job,
+                    self.post_message,
+                    self.project,
+                    self.base_dir,
+                    self.path.name,
+                    out_dir,
+                    self.previous_cancel,
+                    self.jobs,
+                )
+                self.run_worker(
+                    job, thread=True, exclusive=True, group="previous", exit_on_error=False
+                )
 
     @on(PreviousLoaded)
     def _previous_loaded(self, message: PreviousLoaded) -> None:
-        if self._quitting or self.running or self.outcome is not None or self.path is None:
+        if self.quitting or self.running or self.outcome is not None or self.path is None:
             return
-        panel = self.w("#run-panel")
+        panel = self.query_one(RunPanel)
         out_dir = default_out_dir(self.path)
         o = message.outcome
         if o is None:
@@ -309,411 +210,35 @@ class FrpAssessApp(App[None]):
                 "ctrl+r runs it"
             )
             return
-        self.outcome = o
         panel.log_line(
             f"results of the run of {o.results.get('created')} shown (rebuilt from the cache in "
             f"{out_dir}/); recommended: {recommendation_text(o.results)}"
         )
-        self.w("#results-pane").show(o.results, str(o.out_dir), self.project != o.project)
-        self.w("#history-pane").show_results(o.results)
-        self._update_status()
+        self.show_outcome(o)
 
-    def _initial_data(self) -> Any:
-        if self.path is not None and self.path.exists():
-            text = self.path.read_text(encoding="utf-8")
-            name = str(self.path)
-        else:
-            from frp_assess.cli.new import template_text
+    def show_outcome(self, outcome: RunOutcome) -> None:
+        """Show the results of a run in the Results and History tabs."""
+        self.outcome = outcome
+        stale = self.project != outcome.project
+        self.query_one(ResultsPane).show(outcome.results, str(outcome.out_dir), stale)
+        self.query_one(HistoryPane).show_outcome(outcome)
+        self.update_status()
 
-            text = self.initial_text or template_text()
-            name = str(self.path) if self.path else "new project"
-            if self.path is not None:  # as `frp-assess new`: the name from the file name
-                stem = self.path.stem.replace("_", " ").replace("-", " ").strip()
-                if not re.fullmatch(r"[A-Za-z0-9][\w .()-]*", stem):
-                    stem = json.dumps(stem, ensure_ascii=False)  # a quoted YAML scalar
-                text = text.replace("name: Example wall", f"name: {stem}", 1)
-        try:
-            data, _ = parse_yaml(text, name)
-        except InputError as exc:  # the CLI reports this before starting; here just say it
-            self.load_message = str(exc)
-            return {}
-        try:
-            loaded = load_project_text(text, name, base_dir=self.base_dir, check_files=False)
-        except InputError as exc:
-            self.load_message = f"{exc}"
-            return data if isinstance(data, dict) else {}
-        return project_data(loaded.project)
-
-    # -------------------------------------------------------------------- data <-> UI
-    @property
-    def rows(self) -> list[FieldRow]:
-        """The fields of the project (not those of the tables' forms)."""
-        if self._field_rows is None:
-            self._field_rows = [
-                r
-                for r in self.query(FieldRow)
-                if not any(isinstance(a, ItemEditor) for a in r.ancestors)
-            ]
-        return self._field_rows
-
-    def set_content(self, selector: str, key: Any, content: Any) -> None:
-        """Update a Static only when what it shows changed (``key``): typing stays cheap."""
-        if self._shown.get(selector) != key:
-            self._shown[selector] = key
-            self.w(selector).update(content)
-
-    def w(self, selector: str) -> Any:
-        """``query_one`` with a cache: the layout never changes after mounting."""
-        widget = self._widget_cache.get(selector)
-        if widget is None:
-            widget = self._widget_cache[selector] = self.query_one(selector)
-        return widget
-
-    def _variant_of(self, data: Any, group: str) -> str:
-        if group == "spectrum":
-            t = get_path(data, ("seismic", "spectrum", "type"))
-            return t if t in SPECTRUM_DEFAULTS else "ntc2018"
-        if group == "records":
-            recs = get_path(data, ("seismic", "records"), {})
-            return "files" if isinstance(recs, dict) and "files" in recs else "artificial"
-        return "on" if isinstance(data, dict) and data.get("design") is not None else "off"
-
-    def _defaults(self, group: str, value: str) -> dict[str, Any]:
-        if group == "spectrum":
-            return {"seismic": {"spectrum": SPECTRUM_DEFAULTS[value]}}
-        if group == "records":
-            return {"seismic": {"records": {"artificial": ARTIFICIAL_DEFAULTS}}}
-        return {"design": DESIGN_DEFAULTS}
-
-    def populate(self, data: Any) -> None:
-        """Show ``data`` (the project as the YAML loader reads it) in every field."""
-        data = copy.deepcopy(data)
-        self.variants = {g: self._variant_of(data, g) for g in ("spectrum", "records", "design")}
-        with self.prevent(Input.Changed, Select.Changed):
-            for row in self.rows:
-                spec = row.spec
-                if spec.selects is not None:
-                    row.set_value(self.variants[spec.selects])
-                    continue
-                source = data
-                if spec.variant is not None and self.variants[spec.variant[0]] != spec.variant[1]:
-                    source = self._defaults(*spec.variant)
-                row.set_value(get_path(source, spec.path))
-        files = get_path(data, ("seismic", "records", "files"), [])
-        self.query_one(RecordFilesEditor).load(list(files) if isinstance(files, list) else [])
-        self.query_one(MaterialsEditor).load_entries(data.get("materials") or {})
-        items = data.get("interventions") or []
-        self.query_one(InterventionsEditor).load(list(items) if isinstance(items, list) else [])
-        self.apply_variants()
-
-    def apply_variants(self) -> None:
-        """Show the fields of the chosen spectrum type, record source and design mode."""
-        for container in self.query(".variant"):
-            _, group, value = str(container.id).split("-", 2)
-            container.display = self.variants.get(group) == value
-
-    def collect(self) -> dict[str, Any]:
-        """The project data as typed (the dict the YAML loader would produce)."""
-        data: dict[str, Any] = {}
-        for row in self.rows:
-            spec = row.spec
-            if spec.virtual:
-                continue
-            if spec.variant is not None and self.variants[spec.variant[0]] != spec.variant[1]:
-                continue
-            set_path(data, spec.path, row.data_value())
-        if self.variants["records"] == "files":
-            files = copy.deepcopy(self.w("#files-editor").items)
-            set_path(data, ("seismic", "records", "files"), files)
-        data["materials"] = copy.deepcopy(self.w("#materials-editor").data())
-        data["interventions"] = copy.deepcopy(self.w("#interventions-editor").items)
-        return data
-
-    # ------------------------------------------------------------------- validation
-    def revalidate(self, force: bool = False) -> None:
-        """Validate what is typed; show problems, derived values, preview and status.
-
-        Nothing is redone when the data did not change (``force``: redo anyway, e.g. after a
-        save, when record paths are read from another folder).
-        """
-        data = self.collect()
-        if not force and data == self._last_data:
-            return
-        self._last_data = copy.deepcopy(data)
-        project, problems = validate_edit(data)
-        if project is not None:
-            missing = record_file_problem(project, self.base_dir)
-            if missing is not None:
-                problems = [missing]
-        self.problems = problems
-        self.project = project
-        self._show_problems(problems)
-        self._show_derived(data, project)
-        self._update_status(data)
-
-    def _show_problems(self, problems: list[Problem]) -> None:
-        rows = [r for r in self.rows if not r.spec.virtual and self._active(r)]
-        messages: dict[int, str] = {}
-        sections: dict[str, str] = {}
-        editors = [(root, self.w(sel)) for root, sel in EDITORS]
-        for p in problems:
-            if any(p.target[: len(root)] == root for root, _ in editors):
-                continue
-            row = self._row_for(rows, p.target)
-            if row is not None:
-                rest = p.target[len(row.spec.path) :]
-                msg = f"{format_path(rest)}: {p.message}" if rest else p.message
-                messages.setdefault(id(row), msg)
-                continue
-            section = self._section_for(p.target)
-            sections.setdefault(section, str(p))
-        for r in self.rows:
-            r.show_error(messages.get(id(r)))
-        for sid in sorted(set(SECTIONS.values())):
-            cached = self._widget_cache.get(sid)
-            found = self.query(f"#{sid}") if cached is None else [cached]
-            for w in found:
-                self._widget_cache.setdefault(sid, w)
-                text = sections.get(sid)
-                if isinstance(w, Static) and self._shown.get(sid) != text:
-                    self._shown[sid] = text
-                    w.update(Text(f"✗ {text}", "red") if text else "")
-                    w.display = bool(text)
-        for _, editor in editors:
-            editor.show_problems(problems)
-        bad_tabs = {tab_of(p.target) for p in problems}
-        tabs = self.w("#tabs")
-        for tab_id, title in TABS:
-            label = f"{title} ✗" if tab_id in bad_tabs else title
-            tab = tabs.get_tab(tab_id)
-            if str(tab.label) != label:
-                tab.label = Text(label, style="bold red") if tab_id in bad_tabs else label
-
-    def _active(self, row: FieldRow) -> bool:
-        v = row.spec.variant
-        return v is None or self.variants[v[0]] == v[1]
-
-    @staticmethod
-    def _row_for(rows: list[FieldRow], target: Loc) -> FieldRow | None:
-        best = None
-        for r in rows:
-            n = len(r.spec.path)
-            if target[:n] == r.spec.path and (best is None or n > len(best.spec.path)):
-                best = r
-        return best
-
-    @staticmethod
-    def _section_for(target: Loc) -> str:
-        for n in range(len(target), 0, -1):
-            sid = SECTIONS.get(tuple(str(t) for t in target[:n]))
-            if sid:
-                return sid
-        return "err-wall"
-
-    def _show_derived(self, data: dict[str, Any], project: Project | None) -> None:
-        wall = wall_derived(data.get("wall"))
-        spectrum = spectrum_preview(get_path(data, ("seismic", "spectrum")))
-        pga = None if isinstance(spectrum, str) else spectrum.pga_g
-        n_options = None if project is None else len(project.expand_interventions())
-        self.set_content(
-            "#derived-wall", (wall, pga, n_options), derived_wall_table(wall, pga, n_options)
-        )
-        self._show_spectrum(spectrum, data)
-        table = material_table(data.get("materials"))
-        for editor in (self.w("#interventions-editor"),):
-            editor.context = {"wall": wall, "wall_data": data.get("wall"), "materials": table}
-            editor.set_materials(list(table))
-            editor.refresh_table()
-        self.w("#materials-editor").refresh_table()
-        if project is not None:
-            n_rec = self._record_count(project)
-            n = len(project.expand_interventions())
-            text = (
-                f"Retrofit options: {n} after expanding sweeps (repeats dropped); with the "
-                f"unreinforced wall {n + 1} cases × {n_rec} records = {(n + 1) * n_rec} IDAs"
-            )
-        else:
-            text = "Retrofit options (FRP mass per metre of wall, both faces if external)"
-        self.set_content("#retrofits-info", text, text)
-        self._expanded_options(project, wall)
-        self._records_info(data, project)
-
-    def _expanded_options(self, project: Project | None, wall: Any) -> None:
-        """The options the run will compare, with their FRP quantities and costs."""
-        if project is None or isinstance(wall, str):
-            self.set_content("#expanded-options", None, "")
-            return
-        from rich.table import Table
-
-        from frp_assess.assess.from_project import material_of
-        from frp_assess.assess.inputs import Costs
-        from frp_assess.assess.quantities import frp_quantity
-
-        w, table = project.wall, project.material_table()
-        costs = Costs(str(project.costs.currency), project.costs.installation_per_metre)
-        rows = []
-        for o in project.expand_interventions():
-            q = frp_quantity(
-                w.thickness,
-                w.height,
-                w.length,
-                material_of(table[o.material]),
-                o.position,
-                o.ratio,
-                costs,
-            )
-            rows.append((str(o.name), f"{q.mass_per_m:.2f}", f"{q.mass:.1f}", f"{q.cost:.0f}"))
-        key = (tuple(rows), costs.currency, w.length)
-        t = Table(
-            title=Text(f"Options compared (wall length L = {w.length:g} m)", "bold"),
-            title_justify="left",
-            min_width=60,
-            box=None,
-            padding=(0, 2, 0, 0),
-        )
-        t.add_column(Text("option"))
-        t.add_column(Text("FRP [kg/m]"), justify="right")
-        t.add_column(Text("FRP [kg]"), justify="right")
-        t.add_column(Text(f"cost [{costs.currency}]"), justify="right")
-        for r in rows:
-            t.add_row(*r)
-        self.set_content("#expanded-options", key, t)
-
-    @staticmethod
-    def _record_count(project: Project) -> int:
-        recs = project.seismic.records
-        return recs.artificial.count if recs.artificial is not None else len(recs.files or [])
-
-    def _records_info(self, data: dict[str, Any], project: Project | None) -> None:
-        if project is None:
-            self.set_content("#records-info", "", "")
-            return
-        recs = project.seismic.records
-        n = self._record_count(project)
-        rule = design_value_rule(n)
-        if recs.artificial is not None:
-            a = recs.artificial
-            text = (
-                f"{a.count} artificial records of {a.duration:g} s at dt = {a.dt:g} s "
-                f"({int(round(a.duration / a.dt)) + 1} samples), compatible with the site "
-                f"spectrum; seed {a.seed}."
-            )
-        else:
-            text = f"{n} record files, " + (
-                "scaled together to a_g·S of the spectrum."
-                if recs.scale_to_spectrum
-                else "used as recorded."
-            )
-        self.set_content(
-            "#records-info",
-            (text, rule),
-            Text.assemble(text, ("\nDesign value of a_dyn: ", "dim"), rule),
-        )
-
-    def _show_spectrum(self, spectrum: Any, data: dict[str, Any]) -> None:
-        plot = self.w("#spectrum-plot")
-        t1 = get_path(data, ("seismic", "t1"), 1.0)
-        key = spectrum if isinstance(spectrum, str) else (spectrum, spectrum.description, t1)
-        if self._shown.get("#spectrum-plot") == key:
-            return
-        self._shown["#spectrum-plot"] = key
-        info = self.w("#spectrum-info")
-        if isinstance(spectrum, str):
-            plot.show_message(f"no preview: {spectrum}")
-            info.update("")
-            return
-        import numpy as np
-
-        t_max = 4.0
-        periods = np.linspace(0.0, t_max, 321)
-        sa = spectrum.sa(periods)
-        rules = (
-            [Rule(float(t1), "x", "yellow", f"T1 = {t1:g} s")]
-            if isinstance(t1, int | float) and not isinstance(t1, bool) and 0 < t1 <= t_max
-            else []
-        )
-        plot.show(
-            [Series(periods.tolist(), sa.tolist(), style="cyan", label="Se(T)")],
-            x_range=(0.0, t_max),
-            y_range=(0.0, float(max(sa)) * 1.1 or 1.0),
-            rules=rules,
-            x_label="T [s]",
-            y_label="Se [g]",
-        )
-        corners = ", ".join(
-            f"{k} = {v:.3g} s"
-            for k, v in (("T_B", spectrum.T_B), ("T_C", spectrum.T_C), ("T_D", spectrum.T_D))
-            if v is not None
-        )
-        info.update(
-            Text.assemble(
-                ("a_g·S = ", "bold cyan"),
-                (f"{spectrum.pga_g:.4f} g", "bold"),
-                (f"   plateau {spectrum.plateau_g:.4f} g\n", ""),
-                (corners, "dim"),
-            )
-        )
-
-    def modified(self, data: dict[str, Any] | None = None) -> bool:
-        """Whether the fields differ from the file as last opened or saved."""
-        return self.saved_data is None or (data or self.collect()) != self.saved_data
-
-    def _update_status(self, data: dict[str, Any] | None = None) -> None:
-        where = self.path.name if self.path else "new project (not saved)"
-        t = Text(f" {where}", style="bold")
-        if self.path is not None and self.modified(data):
-            t.append("  ● modified", "yellow")
-        t.append("  │ ")
-        if not self.problems:
-            t.append("✓ valid", "green")
-        else:
-            p = self.problems[0]
-            more = f" (+{len(self.problems) - 1} more)" if len(self.problems) > 1 else ""
-            tab = dict(TABS)[tab_of(p.target)]
-            t.append(f"✗ {p}{more} [{tab}]", "red")
-        if self.running:
-            t.append("  │ running…", "yellow")
-        t.truncate(max(self.size.width, 20) - 1, overflow="ellipsis")
-        self.set_content("#status", t.markup, t)
-        if self.outcome is not None:
-            stale = self.project is None or self.project != self.outcome.project
-            self.w("#results-pane").mark_stale(stale)
-
-    # ----------------------------------------------------------------------- events
+    # ----------------------------------------------------------------------- editing
     @on(Input.Changed)
     @on(Select.Changed)
     def _field_changed(self, event: Input.Changed | Select.Changed) -> None:
         row = next((a for a in event.control.ancestors if isinstance(a, FieldRow)), None)
-        if row is None:
-            return
-        if row.spec.selects is not None and not any(
-            isinstance(a, ItemEditor) for a in row.ancestors
-        ):
-            value = row.control.value  # the event may be older than the value shown
-            if isinstance(value, str) and value != self.variants.get(row.spec.selects):
-                self.variants[row.spec.selects] = value
-                self.apply_variants()
-        self.revalidate()
+        if row is not None:
+            self.form.choose_variant(row)
+            self.revalidate()
 
     @on(ItemEditor.Edited)
     def _items_edited(self, event: ItemEditor.Edited) -> None:
         self.revalidate()
 
     def on_descendant_focus(self, event: Any) -> None:
-        widget: Widget = event.widget
-        line = self.w("#help-line")
-        row = next((a for a in widget.ancestors_with_self if isinstance(a, FieldRow)), None)
-        if row is not None:
-            line.update(Text(row.spec.help or row.spec.label, style="italic"))
-        elif isinstance(widget, DataTable):
-            hint = {
-                "ranking-table": "←/→ column · s sort · enter: per-record IDA of the case",
-            }.get(str(widget.id), "↑/↓ select · a add · d duplicate · del remove · enter edit")
-            line.update(Text(hint, style="italic"))
-        elif isinstance(widget, Tabs):
-            line.update(Text("←/→ switch tab · tab: into the tab · F2…F10: main tabs", "italic"))
-        else:
-            line.update(Text("tab: next field · ?/F1: help", style="italic dim"))
+        self.query_one(HelpLine).show_for(event.widget)
 
     # ------------------------------------------------------------------------ tabs
     def action_tab(self, index: int) -> None:
@@ -721,36 +246,20 @@ class FrpAssessApp(App[None]):
             self.show_tab(TABS[index][0])
 
     def action_next_tab(self, step: int) -> None:
-        tabs = self.w("#tabs")
-        ids = [t for t, _ in TABS]
-        i = ids.index(tabs.active) if tabs.active in ids else 0
-        self.show_tab(ids[(i + step) % len(ids)])
+        self.query_one(MainTabs).step(step)
 
     def show_tab(self, tab_id: str) -> None:
         """Show a tab and put the focus on its first field (never on a hidden one)."""
-        tabs = self.w("#tabs")
-        tabs.active = tab_id
-        self.call_after_refresh(self._focus_in, tab_id)
+        self.query_one(MainTabs).show(tab_id)
 
-    def _focus_in(self, tab_id: str) -> None:
-        if self.w("#tabs").active != tab_id:
-            return  # the user has moved on
-        pane = self.query_one(f"#{tab_id}", TabPane)
-        focused = self.focused
-        if focused is not None and pane in focused.ancestors:
-            return
-        chain = self.screen.focus_chain  # only widgets that are shown
-        first = FIRST_FOCUS.get(tab_id)
-        if first is not None:
-            target = self.query_one(first)
-            if target in chain:
-                target.focus(scroll_visible=False)  # the pane starts at its top
-                return
-        for widget in chain:
-            if pane in widget.ancestors and not isinstance(widget, ScrollableContainer | Tabs):
-                widget.focus()
-                return
-        self.screen.set_focus(None)  # nothing to focus here: never type into a hidden tab
+    @on(TabbedContent.TabActivated, "#tabs")
+    def _tab_activated(self, event: TabbedContent.TabActivated) -> None:
+        if event.pane.id == "tab-history":
+            self.query_one(HistoryPane).refresh_if_needed()
+
+    @on(RankingTable.CaseChosen)
+    def _case_chosen(self, message: RankingTable.CaseChosen) -> None:
+        self.query_one(HistoryPane).set_case(message.index)
 
     def action_help(self) -> None:
         if not isinstance(self.screen, HelpScreen):
@@ -761,20 +270,20 @@ class FrpAssessApp(App[None]):
         if self.path is None:
             self.action_save_as()
             return
-        self._save_to(self.path)
+        self.save_to(self.path)
 
     def action_save_as(self, then_run: bool = False) -> None:
         default = str(self.path) if self.path else str(Path.cwd() / "wall.yaml")
 
         def done(path: Path | None) -> None:
             if path is None:
-                self._pending_run = False
+                self.pending_run = False
                 return
-            if self._save_to(path) and self._pending_run:
-                self._pending_run = False
+            if self.save_to(path) and self.pending_run:
+                self.pending_run = False
                 self.action_run()
 
-        self._pending_run = then_run
+        self.pending_run = then_run
         self.push_screen(
             PathPrompt(
                 "Save the project as",
@@ -785,28 +294,28 @@ class FrpAssessApp(App[None]):
             done,
         )
 
-    def _save_to(self, path: Path) -> bool:
+    def save_to(self, path: Path) -> bool:
+        """Save the project to ``path`` (keeping the comments of the file opened)."""
         if self.project is None:
             first = self.problems[0] if self.problems else None
             self.notify(
                 f"cannot save: {first}" if first else "cannot save: the project is not valid",
                 title="Not saved",
                 severity="error",
-                markup=False,
             )
             return False
         opened = self.path if self.path is not None and self.path.is_file() else None
         try:
             kept = save_project(self.project, path, opened_from=opened)
         except InputError as exc:
-            self.notify(str(exc), title="Not saved", severity="error", markup=False)
+            self.notify(str(exc), title="Not saved", severity="error")
             return False
         self.path = Path(path).absolute()
         self.base_dir = self.path.parent  # relative record paths are read from there now
-        self.saved_data = self.collect()
+        self.form.saved_data = self.form.collect()
         self.revalidate(force=True)
         how = "only the changes; its comments kept" if kept else "the whole project"
-        self.notify(f"saved {path} ({how})", title="Saved", markup=False)
+        self.notify(f"saved {path} ({how})", title="Saved")
         return True
 
     # -------------------------------------------------------------------------- run
@@ -816,14 +325,14 @@ class FrpAssessApp(App[None]):
         return True
 
     def action_run(self) -> None:
-        panel = self.w("#run-panel")
+        panel = self.query_one(RunPanel)
         if self.running:
-            self.notify("a run is already in progress (esc cancels it)", markup=False)
+            self.notify("a run is already in progress (esc cancels it)")
             return
         self.show_tab("tab-run")
         if self.problems or self.project is None:
             p = self.problems[0] if self.problems else "the project is not valid"
-            tab = dict(TABS)[tab_of(p.target)] if isinstance(p, Problem) else ""
+            tab = tab_title(tab_of(p.target)) if isinstance(p, Problem) else ""
             panel.log_line(f"cannot run: {p} (fix it in the {tab} tab)", "red")
             panel.set_state(Text("cannot run: fix the problems first", style="bold red"))
             return
@@ -836,80 +345,55 @@ class FrpAssessApp(App[None]):
         names = [UNREINFORCED, *(str(o.name) for o in project.expand_interventions())]
         if self.modified():
             panel.log_line("note: running the project as edited (not saved yet)", "yellow")
-        panel.start(names, self._record_count(project), str(out_dir))
+        panel.start(names, record_count(project), str(out_dir))
         self.cancel_event = threading.Event()
         self.running = True
-        self._update_status()
-        self._run_worker(project, self.path.name, out_dir, self.cancel_event)
-
-    @work(thread=True, exclusive=True, group="run", exit_on_error=False)
-    def _run_worker(
-        self, project: Project, input_file: str, out_dir: Path, cancel: threading.Event
-    ) -> None:
-        last: dict[str, float] = {}
-
-        def emit(ev: RunEvent) -> None:
-            # at most ~10 updates a second: the UI thread shares the GIL with the run
-            now = time.monotonic()
-            if ev.message or ev.done in (0, ev.total) or now - last.get(ev.stage, 0.0) >= 0.1:
-                last[ev.stage] = now
-                self.post_message(RunProgress(ev))
-
-        try:
-            outcome = execute_run(
-                project,
-                self.base_dir,
-                input_file,
-                out_dir,
-                cancel=cancel,
-                emit=emit,
-                jobs=self.jobs,
-            )
-        except Cancelled:
-            self.post_message(RunDone("cancelled", None, "finished analyses are kept in the cache"))
-        except InputError as exc:
-            self.post_message(RunDone("error", None, str(exc)))
-        except Exception as exc:  # noqa: BLE001 - shown in the run panel, never a crash
-            self.post_message(RunDone("error", None, f"{type(exc).__name__}: {exc}"))
-        else:
-            self.post_message(RunDone("done", outcome, ""))
+        self.update_status()
+        job = partial(
+            run_assessment_job,
+            self.post_message,
+            project,
+            self.base_dir,
+            self.path.name,
+            out_dir,
+            self.cancel_event,
+            self.jobs,
+        )
+        self.run_worker(job, thread=True, exclusive=True, group="run", exit_on_error=False)
 
     @on(RunProgress)
     def _run_progress(self, message: RunProgress) -> None:
-        if not self._quitting and self.w("#run-panel").is_attached:
-            self.w("#run-panel").show_event(message.event)
+        if not self.quitting:
+            self.query_one(RunPanel).show_event(message.event)
 
     @on(RunDone)
     def _run_done(self, message: RunDone) -> None:
         self.running = False
         self.cancel_event = None
-        if self._quitting or not self.w("#run-panel").is_attached:
+        if self.quitting:
             return
-        panel = self.w("#run-panel")
+        panel = self.query_one(RunPanel)
         if message.status == "done" and message.outcome is not None:
             o = message.outcome
-            self.outcome = o
-            rec = recommendation_text(o.results)
             panel.finish(
                 "done",
                 f"{o.stats.computed} IDAs computed, {o.stats.reused} reused from the cache; "
-                f"recommended: {rec}; results and report.pdf in {o.out_dir}/",
+                f"recommended: {recommendation_text(o.results)}; results and report.pdf in "
+                f"{o.out_dir}/",
             )
-            stale = self.project != o.project
-            self.w("#results-pane").show(o.results, str(o.out_dir), stale)
-            self.w("#history-pane").show_results(o.results)
-            self.notify("run finished: see the Results tab (F9)", title="Done", markup=False)
+            self.show_outcome(o)
+            self.notify("run finished: see the Results tab (F9)", title="Done")
         else:
             panel.finish(message.status, message.message)
             if message.status == "error":
-                self.notify(message.message, title="Run failed", severity="error", markup=False)
-        self._update_status()
+                self.notify(message.message, title="Run failed", severity="error")
+        self.update_status()
         self.refresh_bindings()
 
     def action_cancel_run(self) -> None:
         if self.running and self.cancel_event is not None:
             self.cancel_event.set()
-            self.w("#run-panel").set_state(Text("cancelling…", style="bold yellow"))
+            self.query_one(RunPanel).set_state(Text("cancelling…", style="bold yellow"))
 
     @on(Button.Pressed, "#run-button")
     def _run_pressed(self) -> None:
@@ -919,55 +403,11 @@ class FrpAssessApp(App[None]):
     def _cancel_pressed(self) -> None:
         self.action_cancel_run()
 
-    # --------------------------------------------------------------- results & history
-    @on(RankingTable.CaseChosen)
-    def _case_chosen(self, message: RankingTable.CaseChosen) -> None:
-        self.w("#history-pane").set_case(message.index)
-
-    @on(TabbedContent.TabActivated, "#tabs")
-    def _tab_activated(self, event: TabbedContent.TabActivated) -> None:
-        focused = self.focused
-        if focused is None or (
-            not isinstance(focused, Tabs) and event.pane not in focused.ancestors
-        ):
-            self.call_after_refresh(self._focus_in, str(event.pane.id))
-        if event.pane.id == "tab-history":
-            self.w("#history-pane").refresh_if_needed()
-
-    @on(HistoryPane.Requested)
-    def _history_requested(self, message: HistoryPane.Requested) -> None:
-        if self.outcome is None:
-            return
-        self._history_worker(self.outcome, message.case, message.record, message.multiplier)
-
-    @work(thread=True, exclusive=True, group="history", exit_on_error=False)
-    def _history_worker(
-        self, outcome: RunOutcome, case: int, record: int, multiplier: float
-    ) -> None:
-        try:
-            data = case_history(outcome, case, record, multiplier)
-        except Exception as exc:  # noqa: BLE001 - shown in the History tab
-            self.post_message(HistoryDone(None, f"{type(exc).__name__}: {exc}"))
-        else:
-            self.post_message(HistoryDone(data))
-
-    @on(HistoryDone)
-    def _history_done(self, message: HistoryDone) -> None:
-        pane = self.w("#history-pane")
-        if not pane.is_attached or self._quitting:
-            return  # the app is closing
-        if message.data is not None:
-            pane.show_history(message.data)
-        else:
-            pane.show_error(message.error)
-
     # ----------------------------------------------------------------------- export
     def action_export(self) -> None:
         if self.outcome is None:
             self.notify(
-                "nothing to export yet: run the assessment first (ctrl+r)",
-                severity="warning",
-                markup=False,
+                "nothing to export yet: run the assessment first (ctrl+r)", severity="warning"
             )
             return
         outcome = self.outcome
@@ -979,8 +419,11 @@ class FrpAssessApp(App[None]):
 
         def done(path: Path | None) -> None:
             if path is not None:
-                self.notify(f"exporting into {path}/ …", markup=False)
-                self._export_worker(outcome, path)
+                self.notify(f"exporting into {path}/ …")
+                job = partial(export_job, self.post_message, outcome, path)
+                self.run_worker(
+                    job, thread=True, exclusive=True, group="export", exit_on_error=False
+                )
 
         self.push_screen(
             PathPrompt(
@@ -992,62 +435,45 @@ class FrpAssessApp(App[None]):
             done,
         )
 
-    @work(thread=True, exclusive=True, group="export", exit_on_error=False)
-    def _export_worker(self, outcome: RunOutcome, directory: Path) -> None:
-        try:
-            files = export_outputs(outcome, directory)
-        except InputError as exc:
-            self.post_message(ExportDone([], str(exc)))
-        except Exception as exc:  # noqa: BLE001 - reported, never a crash
-            self.post_message(ExportDone([], f"{type(exc).__name__}: {exc}"))
-        else:
-            self.post_message(ExportDone(files))
-
     @on(ExportDone)
     def _export_done(self, message: ExportDone) -> None:
-        panel = self.w("#run-panel")
-        if self._quitting or not panel.is_attached:
+        if self.quitting:
             return
+        panel = self.query_one(RunPanel)
         if message.error:
-            self.notify(message.error, title="Export failed", severity="error", markup=False)
+            self.notify(message.error, title="Export failed", severity="error")
             panel.log_line(f"export failed: {message.error}", "red")
             return
+        names = ", ".join(f.name for f in message.files)
         pdf = next((f for f in message.files if f.name == "report.pdf"), None)
         where = pdf.parent if pdf else (message.files[0].parent if message.files else "")
-        self.notify(
-            f"wrote {', '.join(f.name for f in message.files)} into {where}/",
-            title="Exported",
-            markup=False,
-        )
-        panel.log_line(f"exported into {where}/: " + ", ".join(f.name for f in message.files))
+        self.notify(f"wrote {names} into {where}/", title="Exported")
+        panel.log_line(f"exported into {where}/: {names}")
 
     # ------------------------------------------------------------------------- quit
     def action_quit_app(self) -> None:
-        if self.modified():
-            what = (
-                "The project has unsaved changes."
-                if self.path
-                else ("The new project was never saved.")
-            )
-
-            def done(choice: str | None) -> None:
-                if choice == "save":
-                    if self.path is None:
-                        self.action_save_as()
-                        return
-                    if not self._save_to(self.path):
-                        return
-                    self._quit_now()
-                elif choice == "discard":
-                    self._quit_now()
-
-            self.push_screen(ConfirmQuit(what), done)
+        if not self.modified():
+            self.quit_now()
             return
-        self._quit_now()
+        what = (
+            "The project has unsaved changes." if self.path else "The new project was never saved."
+        )
 
-    def _quit_now(self) -> None:
-        self._quitting = True
-        self._previous_event.set()
+        def done(choice: str | None) -> None:
+            if choice == "save":
+                if self.path is None:
+                    self.action_save_as()
+                elif self.save_to(self.path):
+                    self.quit_now()
+            elif choice == "discard":
+                self.quit_now()
+
+        self.push_screen(ConfirmQuit(what), done)
+
+    def quit_now(self) -> None:
+        """Stop the workers and leave."""
+        self.quitting = True
+        self.previous_cancel.set()
         if self.cancel_event is not None:
             self.cancel_event.set()
         self.exit()

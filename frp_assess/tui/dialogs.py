@@ -6,7 +6,6 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import ClassVar
 
-from rich.text import Text
 from textual import on
 from textual.app import ComposeResult
 from textual.binding import Binding, BindingType
@@ -15,6 +14,7 @@ from textual.screen import ModalScreen
 from textual.widgets import Button, Input, Label, Static
 
 from frp_assess.tui.fields import OrderedInput
+from frp_assess.tui.literal import literal
 
 #: checks a typed path: an error message, or None if it can be used
 PathCheck = Callable[[Path], str | None]
@@ -54,7 +54,7 @@ class PathPrompt(ModalScreen[Path | None]):
         if error is None and self.check is not None:
             error = self.check(path)
         if error:
-            self.query_one("#path-error", Static).update(Text(f"✗ {error}", "red"))
+            self.query_one("#path-error", Static).update(literal(f"✗ {error}", "red"))
             return
         self.dismiss(path)
 

@@ -13,13 +13,16 @@ from typing import Any, ClassVar, Literal, get_args, get_origin
 
 from pydantic import BaseModel
 from pydantic_core import PydanticUndefined
+from rich.text import Text
 from textual import events
 from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical
 from textual.widgets import Input, Label, Select, Static
 
 from frp_assess.config.messages import Loc
-from frp_assess.tui.model import MISSING, format_value, parse_list, parse_scalar
+from frp_assess.tui.core.model import MISSING, format_value, parse_list, parse_scalar
+from frp_assess.tui.core.text import printable
+from frp_assess.tui.literal import literal
 
 Kind = Literal["scalar", "text", "choice", "list"]
 
@@ -49,20 +52,18 @@ class OrderedInput(Input):
     #: ``?`` opens the help instead of typing (fields where ``?`` is never valid)
     help_key = False
 
-    async def _on_key(self, event: events.Key) -> None:
+    def on_key(self, event: events.Key) -> None:
+        """Apply an editing key at once (before ``Input``'s own key handler, which still
+        runs for these keys: it restarts the cursor blink and inserts only printable keys)."""
         if self.help_key and event.key == "question_mark":
             event.stop()
-            event.prevent_default()
+            event.prevent_default()  # not typed into the field
             self.app.action_help()  # type: ignore[attr-defined]
             return
         action = self.EDIT_KEYS.get(event.key)
         if action is not None:
-            event.stop()
-            event.prevent_default()
-            self._restart_blink()
+            event.stop()  # never reaches the (later) bindings
             getattr(self, f"action_{action}")()
-            return
-        await super()._on_key(event)
 
 
 @dataclass(frozen=True)
@@ -172,6 +173,11 @@ def items(path: Loc, label: str, model: type[BaseModel], **kw: Any) -> FieldSpec
     return FieldSpec(path, label, "list", help=field_help(model, str(path[-1])), **kw)
 
 
+def choice_options(choices: Sequence[tuple[str, Any]]) -> list[tuple[Text, Any]]:
+    """The options of a Select: labels as plain text (a name is never read as markup)."""
+    return [(literal(label), value) for label, value in choices]
+
+
 class FieldRow(Vertical):
     """A label, an input or a select, a unit, and the validation message under them."""
 
@@ -189,6 +195,8 @@ class FieldRow(Vertical):
         super().__init__(id=id or spec.dom_id)
         self.spec = spec
         self.error: str | None = None
+        #: (text shown, text read) of a value whose control characters are shown visibly
+        self.shown_text: tuple[str, str] | None = None
 
     def compose(self) -> ComposeResult:
         s = self.spec
@@ -196,7 +204,7 @@ class FieldRow(Vertical):
             yield Label(s.label, classes="f-label")
             if s.kind == "choice":
                 select: Select[Any] = Select(
-                    [(label, value) for label, value in s.choices],
+                    choice_options(s.choices),
                     allow_blank=s.optional,
                     compact=True,
                     prompt="(none)",
@@ -230,6 +238,8 @@ class FieldRow(Vertical):
         if isinstance(c, Select):
             return MISSING if c.value is Select.NULL else c.value
         text = c.value
+        if self.shown_text is not None and text == self.shown_text[0]:
+            text = self.shown_text[1]  # unchanged: the value as read, with its control characters
         if self.spec.kind == "text":
             return MISSING if self.spec.optional and not text.strip() else text
         if self.spec.kind == "list":
@@ -248,12 +258,17 @@ class FieldRow(Vertical):
                 return
             values = [v for _, v in self.spec.choices]
             if value not in values:  # keep what the file says, so that its error shows
-                c.set_options([*self.spec.choices, (f"{value} (?)", value)])
+                c.set_options(
+                    [*choice_options(self.spec.choices), (literal(f"{value} (?)"), value)]
+                )
             c.value = value
         else:
             if value is MISSING or value is None:
                 value = self.spec.default
-            c.value = format_value(value)
+            text = format_value(value)
+            shown = printable(text)
+            self.shown_text = (shown, text) if shown != text else None
+            c.value = shown
 
     def set_choices(self, choices: Sequence[tuple[str, Any]]) -> None:
         """Replace the options of a choice, keeping the value (no change event is posted)."""
@@ -265,9 +280,9 @@ class FieldRow(Vertical):
         values = [v for _, v in choices]
         with self.app.prevent(Select.Changed):
             if current is not Select.NULL and current not in values:
-                c.set_options([*choices, (f"{current} (?)", current)])
+                c.set_options([*choice_options(choices), (literal(f"{current} (?)"), current)])
             else:
-                c.set_options(list(choices))
+                c.set_options(choice_options(choices))
             if current is not Select.NULL:
                 c.value = current
 
@@ -277,4 +292,11 @@ class FieldRow(Vertical):
             return
         self.error = message
         self.set_class(message is not None, "-error")
-        self.query_one(".f-error", Static).update("" if message is None else f"✗ {message}")
+        self.query_one(".f-error", Static).update(
+            "" if message is None else literal(f"✗ {message}")
+        )
+
+
+def section_error(section_id: str) -> Static:
+    """Where a problem of a section that is not one field's is shown (hidden when none)."""
+    return Static("", id=section_id, classes="section-error")

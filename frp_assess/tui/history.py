@@ -10,7 +10,7 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from rich.text import Text
-from textual import on
+from textual import on, work
 from textual.app import ComposeResult
 from textual.binding import Binding, BindingType
 from textual.containers import Horizontal, Vertical
@@ -18,26 +18,29 @@ from textual.message import Message
 from textual.widgets import Button, Input, Label, Select, Static
 
 from frp_assess.assess.results import below_collapse
+from frp_assess.tui.core.session import HistoryData, RunOutcome, case_history
+from frp_assess.tui.core.text import printable
 from frp_assess.tui.fields import OrderedInput
+from frp_assess.tui.literal import literal
 from frp_assess.tui.plots import PlotView, Rule, Series
-from frp_assess.tui.session import HistoryData
+
+
+class HistoryDone(Message):
+    """A time history computed (``data``), or why not (``error``)."""
+
+    def __init__(self, data: HistoryData | None, error: str = "") -> None:
+        super().__init__()
+        self.data, self.error = data, error
 
 
 class HistoryPane(Vertical):
-    """Controls and the two plots; the app computes the history in a worker."""
+    """Controls and the two plots; the history is computed in a worker thread."""
 
     BINDINGS: ClassVar[list[BindingType]] = [
         Binding("c", "preset('collapse')", "C collapse"),
         Binding("b", "preset('below')", "C below"),
         Binding("1", "preset('one')", "C=1"),
     ]
-
-    class Requested(Message):
-        """Compute the history of case ``case`` under record ``record`` at ``multiplier``."""
-
-        def __init__(self, case: int, record: int, multiplier: float) -> None:
-            super().__init__()
-            self.case, self.record, self.multiplier = case, record, multiplier
 
     def compose(self) -> ComposeResult:
         with Horizontal(classes="control-row"):
@@ -57,6 +60,7 @@ class HistoryPane(Vertical):
         yield PlotView(id="hist-strain")
 
     def on_mount(self) -> None:
+        self.outcome: RunOutcome | None = None
         self.results: dict[str, Any] | None = None
         self.tolerance = 0.005
         self._needs_update = False
@@ -77,15 +81,20 @@ class HistoryPane(Vertical):
             self.action_preset("below", quiet=True)
 
     # ------------------------------------------------------------------------ results
+    def show_outcome(self, outcome: RunOutcome) -> None:
+        """A new run (or the last one, reloaded): offer its cases and records."""
+        self.outcome = outcome
+        self.show_results(outcome.results)
+
     def show_results(self, results: dict[str, Any]) -> None:
-        """A new run: offer its cases and records."""
+        """Offer the cases and records of ``results`` (of :attr:`outcome`)."""
         self.results = results
         self.tolerance = float(results["model"]["ida"]["tolerance"])
         cases = self.query_one("#hist-case", Select)
         records = self.query_one("#hist-record", Select)
         with self.app.prevent(Select.Changed):
-            cases.set_options([(c["name"], i) for i, c in enumerate(results["cases"])])
-            records.set_options([(r["name"], i) for i, r in enumerate(results["records"])])
+            cases.set_options([(literal(c["name"]), i) for i, c in enumerate(results["cases"])])
+            records.set_options([(literal(r["name"]), i) for i, r in enumerate(results["records"])])
         gov = results.get("governing")
         case, rec = 0, 0
         if gov:
@@ -164,7 +173,28 @@ class HistoryPane(Vertical):
             return
         err.update("")
         self.query_one("#hist-info", Static).update(Text("computing…", "dim"))
-        self.post_message(self.Requested(cur[0], cur[1], value))
+        if self.outcome is not None:
+            self.compute(self.outcome, cur[0], cur[1], value)
+
+    @work(thread=True, exclusive=True, group="history", exit_on_error=False)
+    def compute(self, outcome: RunOutcome, case: int, record: int, multiplier: float) -> None:
+        """The history of case ``case`` under record ``record`` scaled by ``multiplier``
+        (in a worker thread; posts HistoryDone)."""
+        try:
+            data = case_history(outcome, case, record, multiplier)
+        except Exception as exc:  # noqa: BLE001 - shown in the History tab
+            self.post_message(HistoryDone(None, f"{type(exc).__name__}: {exc}"))
+        else:
+            self.post_message(HistoryDone(data))
+
+    @on(HistoryDone)
+    def _computed(self, message: HistoryDone) -> None:
+        if not self.is_attached or self.app.return_code is not None:
+            return  # the app is closing
+        if message.data is not None:
+            self.show_history(message.data)
+        else:
+            self.show_error(message.error)
 
     @on(Select.Changed, "#hist-case")
     @on(Select.Changed, "#hist-record")
@@ -192,8 +222,8 @@ class HistoryPane(Vertical):
     def show_history(self, h: HistoryData) -> None:
         """Plot a computed history."""
         info = Text()
-        info.append(f"{h.case}", "bold")
-        info.append(f" under {h.record} × C = {h.multiplier:.5g}: ")
+        info.append(printable(h.case), "bold")
+        info.append(printable(f" under {h.record} × C = {h.multiplier:.5g}: "))
         if h.collapsed:
             info.append("COLLAPSE", "bold red")
             if h.collapse_time is not None:
@@ -245,7 +275,7 @@ class HistoryPane(Vertical):
         )
 
     def show_error(self, message: str) -> None:
-        self.query_one("#hist-info", Static).update(Text(f"✗ {message}", "red"))
+        self.query_one("#hist-info", Static).update(literal(f"✗ {message}", "red"))
 
 
 def _sym_range(values: list[float], at_least: float, at_most: float = 2.0) -> tuple[float, float]:

@@ -14,9 +14,9 @@ from textual.binding import Binding, BindingType
 
 from frp_assess.config import FRP_MATERIALS
 from frp_assess.config.schema import Intervention, SweepAxes, option_name
+from frp_assess.tui.core.model import expand_item, format_value, frp_mass_per_m
 from frp_assess.tui.fields import choice, items, num, text
 from frp_assess.tui.item_editor import ItemEditor
-from frp_assess.tui.model import expand_item, format_value, frp_mass_per_m
 
 
 class InterventionsEditor(ItemEditor):

@@ -20,8 +20,9 @@ from textual.message import Message
 from textual.widgets import Button, DataTable, Input, Select, Static
 
 from frp_assess.config.messages import Loc, format_path
+from frp_assess.tui.core.model import Problem, get_path, set_path
 from frp_assess.tui.fields import FieldRow, FieldSpec
-from frp_assess.tui.model import Problem, get_path, set_path
+from frp_assess.tui.literal import literal, safe
 
 
 class ItemEditor(Vertical):
@@ -132,7 +133,9 @@ class ItemEditor(Vertical):
         bad = {p.path[len(self.ROOT)] for p in self.problems if len(p.path) > len(self.ROOT)}
         rows: list[list[Text]] = []
         for i, item in enumerate(self.items):
-            cells = [c if isinstance(c, Text) else Text(str(c)) for c in self.row_cells(i, item)]
+            cells = [
+                safe(c) if isinstance(c, Text) else literal(c) for c in self.row_cells(i, item)
+            ]
             cells.append(Text("✗", style="bold red") if self._key_of(i) in bad else Text(""))
             rows.append(cells)
         keys = [[t.markup for t in r] for r in rows]
@@ -190,7 +193,7 @@ class ItemEditor(Vertical):
         self.refresh_table()
         if text != self._problem_text:
             self._problem_text = text
-            self.query_one(".ie-problem", Static).update(text)
+            self.query_one(".ie-problem", Static).update(literal(text))
         self.show_form_problems()
 
     def show_form_problems(self) -> None:
@@ -213,7 +216,7 @@ class ItemEditor(Vertical):
         general = [p for p in mine if p.target == base]
         text = f"Selected: {self.item_label(i)}"
         title.update(
-            Text(text) + (Text(f"  ✗ {general[0].message}", style="red") if general else Text(""))
+            literal(text) + (literal(f"  ✗ {general[0].message}", "red") if general else Text(""))
         )
 
     # ------------------------------------------------------------------------- events

@@ -8,6 +8,7 @@ with the same content (the keys of the focused widget first, then the app's).
 from __future__ import annotations
 
 from rich.text import Text
+from textual.binding import Binding
 from textual.screen import Screen
 from textual.widgets import Static
 
@@ -36,13 +37,9 @@ class KeyBar(Static):
         seen: set[str] = set()
         local: list[tuple[str, str]] = []
         app: list[tuple[int, str, str]] = []
-        order = {
-            b.action: i
-            for i, b in enumerate(
-                self.app._bindings.key_to_bindings
-                and [b for bs in self.app._bindings.key_to_bindings.values() for b in bs]
-            )
-        }
+        order: dict[str, int] = {}
+        for i, b in enumerate(Binding.make_bindings(self.app.BINDINGS)):
+            order.setdefault(b.action, i)
         for node, binding, enabled, _tooltip in self.screen.active_bindings.values():
             if not binding.show or not enabled or binding.action in seen:
                 continue

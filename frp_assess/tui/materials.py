@@ -20,9 +20,9 @@ from textual.widgets import Button, Input, Label
 from frp_assess.config import FRP_MATERIALS
 from frp_assess.config.messages import Loc
 from frp_assess.config.schema import MaterialSpec
+from frp_assess.tui.core.model import MISSING, format_value, get_path, set_path
 from frp_assess.tui.fields import OrderedInput, num, text
 from frp_assess.tui.item_editor import ItemEditor
-from frp_assess.tui.model import MISSING, format_value, get_path, set_path
 
 MATERIAL_FIELDS = tuple(MaterialSpec.model_fields)
 

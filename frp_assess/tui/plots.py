@@ -17,6 +17,8 @@ from rich.text import Text
 from textual.app import RenderResult
 from textual.widget import Widget
 
+from frp_assess.tui.core.text import printable
+
 #: bit of the braille dot at (column 0-1, row 0-3) of a cell (Unicode U+2800 block)
 _DOT_BITS = ((0x01, 0x02, 0x04, 0x40), (0x08, 0x10, 0x20, 0x80))
 BRAILLE_BASE = 0x2800
@@ -116,7 +118,7 @@ def _finite(v: float | None) -> bool:
 
 def data_range(values: Sequence[float | None], pad: float = 0.0) -> tuple[float, float]:
     """(min, max) of the finite values, widened by ``pad`` of the span; (0, 1) if none."""
-    finite = [float(v) for v in values if _finite(v)]
+    finite = [float(v) for v in values if v is not None and _finite(v)]
     if not finite:
         return 0.0, 1.0
     lo, hi = min(finite), max(finite)
@@ -148,13 +150,13 @@ def _header(
         for s in series:
             if s.label:
                 mark = s.marker if s.kind == "points" else "━"
-                items.append(Text.assemble((mark, s.style), f" {s.label}"))
+                items.append(Text.assemble((mark, s.style), printable(f" {s.label}")))
         for r in rules:
             if r.label:
-                items.append(Text.assemble(("┄", r.style), f" {r.label}"))
+                items.append(Text.assemble(("┄", r.style), printable(f" {r.label}")))
     if not y_label and not items:
         return []
-    lines = [Text(y_label, style="bold")]
+    lines = [Text(printable(y_label), style="bold")]
     for item in items:
         line = lines[-1]
         if line.cell_len and line.cell_len + 2 + item.cell_len > width:
@@ -259,7 +261,7 @@ def render_plot(
         start = positions[1] + len(xt[1]) + 2
         room = positions[2] - 2 - start
         if room >= 3:
-            label = x_label[:room]
+            label = printable(x_label)[:room]
             last = last[:start] + label.center(room) + last[start + room :]
     out.append(Text(last, style="grey62"))
     return out

@@ -9,9 +9,9 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from frp_assess.config.schema import RecordFile
+from frp_assess.tui.core.model import format_value
 from frp_assess.tui.fields import choice, num, schema_default, text
 from frp_assess.tui.item_editor import ItemEditor
-from frp_assess.tui.model import format_value
 
 #: the defaults of a record file's format and units (the schema's)
 FORMAT, UNITS = schema_default(RecordFile, "format"), schema_default(RecordFile, "units")

@@ -1,152 +1,35 @@
 """The Results tab: ranking (sortable), IDA per record, FRP plot, spectrum compliance.
 
 Everything is read from the results dict of the run (docs/results-json.md), as the PDF
-report does.  In the ranking, ←/→ choose a column and ``s`` sorts by it (again: reverse);
-the highlighted row is the case shown in "Per record" and in the History tab.
+report does.  The ranking (:mod:`frp_assess.tui.ranking_table`): the highlighted row is the
+case shown in "Per record" and in the History tab.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import Any, ClassVar
+from typing import Any
 
 from rich import box
 from rich.table import Table
 from rich.text import Text
 from textual import on
 from textual.app import ComposeResult
-from textual.binding import Binding, BindingType
 from textual.containers import Horizontal, Vertical, VerticalScroll
-from textual.message import Message
-from textual.widgets import DataTable, Label, Select, Static, TabbedContent, TabPane
+from textual.widgets import DataTable, Label, Select, Static, TabPane
 
 from frp_assess.assess.results import recommendation_text
+from frp_assess.tui.core.text import printable
+from frp_assess.tui.literal import literal
 from frp_assess.tui.plots import PlotView, Rule, Series
+from frp_assess.tui.ranking_table import RankingTable
+from frp_assess.tui.tabbed import Tabbed
 
 MATERIAL_STYLES = ("green", "yellow", "magenta", "cyan", "bright_blue", "red", "white")
 POSITION_MARKERS = {"external": "●", "centred": "▲"}
 
 
-def _text(value: Any) -> Text:
-    """A table cell as plain text (a str cell would be read as Rich markup)."""
-    return value if isinstance(value, Text) else Text(str(value))
-
-
 def _num(value: Any, fmt: str) -> str:
     return "—" if value is None else format(value, fmt)
-
-
-#: (header, sort key, cell) of the ranking table
-RANKING_COLUMNS: list[tuple[str, Callable[[dict[str, Any]], Any], Callable[..., Any]]] = [
-    ("rank", lambda c: (c["rank"] is None, c["rank"] or 0), lambda c: c["rank"] or "—"),
-    ("option", lambda c: c["name"], lambda c: c["name"]),
-    ("kg/m", lambda c: c["frp_mass_per_m"], lambda c: f"{c['frp_mass_per_m']:.2f}"),
-    ("FRP kg", lambda c: c["frp_mass"], lambda c: f"{c['frp_mass']:.1f}"),
-    ("cost", lambda c: c["frp_cost"], lambda c: f"{c['frp_cost']:.0f}"),
-    ("a_dyn [g]", lambda c: c["design_a_dyn"], lambda c: f"{c['design_a_dyn']:.3f}"),
-    ("q", lambda c: c["mean_q"], lambda c: f"{c['mean_q']:.2f}"),
-    ("impr.", lambda c: c["improvement"], lambda c: f"{c['improvement']:.2f}"),
-    ("C/D", lambda c: c["capacity_demand"], lambda c: f"{c['capacity_demand']:.2f}"),
-    (
-        "meets",
-        lambda c: c["meets_target"],
-        lambda c: Text("yes", "green") if c["meets_target"] else Text("no", "red"),
-    ),
-]
-
-
-def sorted_order(cases: list[dict[str, Any]], column: int, reverse: bool) -> list[int]:
-    """Indices of the cases ordered by a ranking column (stable; ``rank`` puts the
-    unreinforced wall last)."""
-    key = RANKING_COLUMNS[column][1]
-    return sorted(range(len(cases)), key=lambda i: key(cases[i]), reverse=reverse)
-
-
-class RankingTable(DataTable[Any]):
-    """The options, ranked; ``s`` sorts by the column under the cursor."""
-
-    BINDINGS: ClassVar[list[BindingType]] = [
-        Binding("s", "sort", "Sort"),
-        Binding("enter", "show_case", "Per record", show=False),
-    ]
-
-    class CaseChosen(Message):
-        """A case was highlighted (index in results["cases"])."""
-
-        def __init__(self, index: int) -> None:
-            super().__init__()
-            self.index = index
-
-    def __init__(self, **kw: Any) -> None:
-        super().__init__(cursor_type="cell", zebra_stripes=True, **kw)
-        self.cases: list[dict[str, Any]] = []
-        self.order: list[int] = []
-        self.sort_column = 0
-        self.sort_reverse = False
-        self.currency = ""
-
-    def show(self, cases: list[dict[str, Any]], currency: str) -> None:
-        self.cases = cases
-        self.currency = currency
-        self._fill()
-
-    def _fill(self) -> None:
-        row, col = self.cursor_coordinate
-        self.clear(columns=True)
-        for i, (header, _, _) in enumerate(RANKING_COLUMNS):
-            if header == "cost":
-                header = f"cost [{self.currency}]"
-            mark = (" ▼" if self.sort_reverse else " ▲") if i == self.sort_column else ""
-            self.add_column(Text(header + mark))
-        self.order = sorted_order(self.cases, self.sort_column, self.sort_reverse)
-        for i in self.order:
-            self.add_row(*[_text(cell(self.cases[i])) for _, _, cell in RANKING_COLUMNS])
-        if self.cases:
-            self.move_cursor(row=min(row, len(self.cases) - 1), column=col, animate=False)
-
-    def sort_by(self, column: int) -> None:
-        """Sort by ``column``; the same column again reverses the order."""
-        if column == self.sort_column:
-            self.sort_reverse = not self.sort_reverse
-        else:
-            self.sort_column, self.sort_reverse = column, False
-        self._fill()
-
-    def action_sort(self) -> None:
-        self.sort_by(self.cursor_coordinate.column)
-
-    def on_data_table_header_selected(self, event: DataTable.HeaderSelected) -> None:
-        event.stop()
-        self.sort_by(event.column_index)
-
-    def selected_case(self) -> int | None:
-        if not self.order:
-            return None
-        return self.order[min(self.cursor_coordinate.row, len(self.order) - 1)]
-
-    def on_data_table_cell_highlighted(self, event: DataTable.CellHighlighted) -> None:
-        i = self.selected_case()
-        if i is not None:
-            self.post_message(self.CaseChosen(i))
-
-    def action_show_case(self) -> None:
-        i = self.selected_case()
-        if i is not None:
-            self.post_message(self.CaseChosen(i))
-            self.app.query_one("#results-tabs", TabbedContent).active = "res-records"
-            self.app.call_after_refresh(self.app.query_one("#records-table").focus)
-
-
-class Tabbed(TabbedContent):
-    """TabbedContent that follows the focus into a pane only while the focus is still there
-    (a late focus message would otherwise switch back to a tab the user has left)."""
-
-    def _on_tab_pane_focused(self, event: TabPane.Focused) -> None:
-        focused = self.app.focused
-        if focused is not None and event.tab_pane in focused.ancestors:
-            super()._on_tab_pane_focused(event)
-        else:
-            event.stop()
 
 
 class ResultsPane(Vertical):
@@ -208,7 +91,7 @@ class ResultsPane(Vertical):
         self.query_one(RankingTable).show(results["cases"], results["costs"]["currency"])
         sel = self.query_one("#case-select", Select)
         with self.app.prevent(Select.Changed):
-            sel.set_options([(c["name"], i) for i, c in enumerate(results["cases"])])
+            sel.set_options([(literal(c["name"]), i) for i, c in enumerate(results["cases"])])
             sel.value = 0
         self.show_case(0)
         self.draw_plot()
@@ -222,7 +105,7 @@ class ResultsPane(Vertical):
         self.query_one("#results-note", Static).update(
             Text.assemble(
                 ("Results of the last run, in ", "dim"),
-                (f"{self._out_dir}/", ""),
+                (printable(f"{self._out_dir}/"), ""),
                 ("  (edited since: ctrl+r to rerun)" if stale else "", "yellow"),
             )
         )
@@ -242,7 +125,9 @@ class ResultsPane(Vertical):
             "satisfied" if cc["passed"] else "NOT satisfied", "green" if cc["passed"] else "red"
         )
         t.append("\nRecommended: ", "bold")
-        t.append(recommendation_text(r), "bold green" if rec or urm["meets_target"] else "red")
+        t.append(
+            printable(recommendation_text(r)), "bold green" if rec or urm["meets_target"] else "red"
+        )
         self.query_one("#results-summary", Static).update(t)
 
     def show_case(self, index: int) -> None:
@@ -259,7 +144,7 @@ class ResultsPane(Vertical):
         table.clear()
         for rec in c["records"]:
             table.add_row(
-                Text(rec["record"]),
+                literal(rec["record"]),
                 f"{rec['pga']:.4f}",
                 _num(rec["collapse_multiplier"], ".4f")
                 if rec["collapse_multiplier"]
@@ -268,7 +153,7 @@ class ResultsPane(Vertical):
                 _num(rec["q"], ".3f"),
             )
         t = Text()
-        t.append(f"{c['name']}: ", "bold")
+        t.append(printable(f"{c['name']}: "), "bold")
         t.append(
             f"mean a_dyn = {c['mean_a_dyn']:.4f} g, min = {c['min_a_dyn']:.4f} g, "
             f"design a_dyn = {c['design_a_dyn']:.4f} g, mean q = {c['mean_q']:.2f}\n"
@@ -368,17 +253,17 @@ class ResultsPane(Vertical):
         table.add_column(Text("ρ [‰]"), justify="right", no_wrap=True)
         table.add_column(Text("C/D"), justify="right", no_wrap=True)
         table.add_column(Text("FRP [kg]"), justify="right", no_wrap=True)
-        table.add_column(Text(f"cost [{cur}]"), justify="right", no_wrap=True)
+        table.add_column(literal(f"cost [{cur}]"), justify="right", no_wrap=True)
         table.add_column(Text("note"), ratio=1)
         for d in found:
             table.add_row(
-                Text(d["material"]),
-                Text(d["position"]),
+                literal(d["material"]),
+                literal(d["position"]),
                 Text(_num(d["ratio"], "g")),
                 Text(_num(d["capacity_demand"], ".2f")),
                 Text(_num(d["frp_mass"], ".1f")),
                 Text(_num(d["frp_cost"], ".0f")),
-                Text(d["message"], "dim"),
+                literal(d["message"], "dim"),
             )
         out.update(table)
 
@@ -395,9 +280,9 @@ class ResultsPane(Vertical):
             code = "EC8" if "1998" in c["code"] else "NTC" if "NTC" in c["code"] else c["code"]
             table.add_row(
                 Text("✓", "green") if c["passed"] else Text("✗", "bold red"),
-                Text(f"{code} {c['clause']}"),
-                Text(c["requirement"]),
-                Text(c["found"]),
+                literal(f"{code} {c['clause']}"),
+                literal(c["requirement"]),
+                literal(c["found"]),
                 Text(margin, "green" if c["passed"] else "red"),
             )
         self.query_one("#compliance-table", Static).update(table)
@@ -405,7 +290,7 @@ class ResultsPane(Vertical):
         self.query_one("#compliance-summary", Static).update(
             Text.assemble(
                 ("Spectrum compatibility of the records ", "bold"),
-                (f"({s['records_kind']}, T1 = {s['t1']:g} s): ", ""),
+                (printable(f"({s['records_kind']}, T1 = {s['t1']:g} s): "), ""),
                 ("all checks passed", "green") if comp["passed"] else ("some checks FAIL", "red"),
             )
         )

@@ -10,8 +10,9 @@ from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.widgets import Button, Label, ProgressBar, RichLog, Static
 
-from frp_assess.tui.progress import CaseCount
-from frp_assess.tui.session import RunEvent
+from frp_assess.tui.core.progress import CaseCount
+from frp_assess.tui.core.session import RunEvent
+from frp_assess.tui.literal import literal, safe
 
 STAGES = {
     "records": "generating/reading the records and checking them",
@@ -31,7 +32,7 @@ class CaseBar(Horizontal):
         self.done = 0
 
     def compose(self) -> ComposeResult:
-        yield Label(self.case_name[:30], classes="case-name")
+        yield Label(literal(self.case_name[:30]), classes="case-name")
         yield ProgressBar(total=self.total, show_eta=False, show_percentage=False)
         yield Label(f"0/{self.total}", classes="case-count")
 
@@ -70,7 +71,9 @@ class RunPanel(Vertical):
     def log_line(self, text: str | Text, style: str = "") -> None:
         """Append a line to the run log."""
         stamp = time.strftime("%H:%M:%S ")
-        line = Text(stamp, style="dim") + (text if isinstance(text, Text) else Text(text, style))
+        line = Text(stamp, style="dim") + safe(
+            text if isinstance(text, Text) else Text(text, style)
+        )
         self.query_one("#run-log", RichLog).write(line)
 
     def start(self, names: Sequence[str], per_case: int, out_dir: str) -> None:
@@ -133,7 +136,7 @@ class RunPanel(Vertical):
         return out
 
     def set_state(self, text: str | Text) -> None:
-        self.query_one("#run-state", Static).update(text)
+        self.query_one("#run-state", Static).update(safe(text))
 
     def finish(self, status: str, message: str) -> None:
         """The run ended: ``done``, ``cancelled`` or ``error`` (message: one line)."""

@@ -58,13 +58,23 @@ def run_async(fn: Callable[[], Awaitable[Any]]) -> Any:
     return asyncio.run(fn())
 
 
-async def wait_for(
-    pilot: Any, condition: Callable[[], bool], timeout: float = 30.0, step: float = 0.05
-) -> None:
-    """Let the app run until ``condition()`` holds (or fail after ``timeout`` seconds)."""
-    loop = asyncio.get_running_loop()
-    end = loop.time() + timeout
-    while not condition():
-        if loop.time() > end:
-            raise AssertionError("timed out waiting for the app")
-        await pilot.pause(step)
+#: rounds of ``pilot.pause()`` a wait allows before it fails: each round lets the app
+#: handle what is queued (a round lasts longer while a worker thread computes)
+MAX_ROUNDS = 600
+
+
+async def settle(pilot: Any, condition: Callable[[], bool], rounds: int = MAX_ROUNDS) -> None:
+    """Let the app handle its messages until ``condition()`` holds (fail after ``rounds``)."""
+    for _ in range(rounds):
+        if condition():
+            return
+        await pilot.pause()
+    if not condition():
+        raise AssertionError(f"the app did not reach the state waited for in {rounds} rounds")
+
+
+async def after_workers(pilot: Any, condition: Callable[[], bool] = lambda: True) -> None:
+    """Wait until the app's workers (run, history, export...) have finished, then until the
+    app has handled what they posted and ``condition()`` holds."""
+    await pilot.app.workers.wait_for_complete()
+    await settle(pilot, condition)

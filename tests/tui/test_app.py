@@ -8,7 +8,7 @@ from typing import Any
 
 import pytest
 from rich.console import Console
-from textual.widgets import Input, Select, Static, TabbedContent
+from textual.widgets import Input, Select, Static, TabbedContent, TabPane
 
 from frp_assess.api import CACHE_DIR, default_out_dir, run_assessment
 from frp_assess.assess.from_project import inputs_from_project
@@ -17,9 +17,9 @@ from frp_assess.config import load_project, load_project_text
 from frp_assess.tui.app import FrpAssessApp
 from frp_assess.tui.help import HelpScreen
 from frp_assess.tui.interventions import InterventionsEditor
-from frp_assess.tui.results import RankingTable
+from frp_assess.tui.ranking_table import RankingTable
 from frp_assess.tui.run_panel import RunPanel
-from tests.tui.conftest import run_async, wait_for
+from tests.tui.conftest import after_workers, run_async, settle
 
 SIZE = (100, 30)
 
@@ -40,6 +40,12 @@ async def type_into(pilot: Any, selector: str, text: str) -> None:
     box.cursor_position = len(box.value)
     await pilot.press(text[-1])  # ...which is pressed
     await pilot.pause()
+
+
+def history_shown(app: FrpAssessApp) -> bool:
+    """The History tab is shown with the θ/α plot of a computed time history."""
+    tabs = app.query_one("#tabs", TabbedContent)
+    return tabs.active == "tab-history" and "θ/α" in app.query_one("#hist-theta").render().plain
 
 
 def row_error(app: FrpAssessApp, path: tuple[str, ...]) -> str | None:
@@ -152,7 +158,7 @@ def test_run_to_the_end_matches_batch_mode(small_project: Path, tmp_path: Path):
         async with app.run_test(size=SIZE) as pilot:
             await pilot.pause()
             await pilot.press("ctrl+r")
-            await wait_for(pilot, lambda: not app.running and app.outcome is not None)
+            await after_workers(pilot, lambda: not app.running and app.outcome is not None)
             panel = app.query_one(RunPanel)
             assert [(c.done, c.total) for c in panel.case_counts()] == [(3, 3)] * 3
             assert app.outcome is not None and app.outcome.stats.computed == 9
@@ -162,7 +168,7 @@ def test_run_to_the_end_matches_batch_mode(small_project: Path, tmp_path: Path):
             results = app.outcome.results
             # rerun: every IDA comes from the cache, as in batch mode
             await pilot.press("ctrl+r")
-            await wait_for(pilot, lambda: not app.running)
+            await after_workers(pilot, lambda: not app.running)
             assert app.outcome.stats.computed == 0 and app.outcome.stats.reused == 9
             # results: sorting, per record, history of the highlighted case
             await pilot.press("f9")
@@ -176,7 +182,7 @@ def test_run_to_the_end_matches_batch_mode(small_project: Path, tmp_path: Path):
             await pilot.pause()
             assert app.query_one("#results-tabs", TabbedContent).active == "res-records"
             await pilot.press("f10")
-            await wait_for(pilot, lambda: "θ/α" in app.query_one("#hist-theta").render().plain)
+            await after_workers(pilot, lambda: history_shown(app))
             assert "under art-" in plain(app.query_one("#hist-info", Static))
         return {"names": names, "results": results}
 
@@ -208,15 +214,15 @@ def test_cancel_a_run_keeps_the_ui_responsive(big_project: Path):
             derived = app.query_one("#derived-wall", Static)
             app.action_run()  # ctrl+r (the key itself is tested with the small project)
             assert app.running
-            await wait_for(pilot, lambda: panel.last_stage == "ida", timeout=40)
+            await settle(pilot, lambda: panel.last_stage == "ida")
             # the editor works while the run goes on: a new height, derived values follow
             app.action_tab(0)
             box = app.query_one("#f-wall-height-control", Input)
             box.value = "4"
-            await wait_for(pilot, lambda: "4.289°" in plain(derived), timeout=5)
+            await settle(pilot, lambda: "4.289°" in plain(derived))
             assert app.running
             await pilot.press("escape")
-            await wait_for(pilot, lambda: not app.running, timeout=30)
+            await after_workers(pilot, lambda: not app.running)
             assert "cancelled" in plain(app.query_one("#run-state", Static))
             assert app.outcome is None
             done = sum(c.done for c in panel.case_counts())
@@ -304,15 +310,15 @@ def test_export_pdf_and_help(small_project: Path, tmp_path: Path):
             await pilot.pause()
             assert not app.screen.query("#path-input")
             await pilot.press("ctrl+r")
-            await wait_for(pilot, lambda: not app.running and app.outcome is not None)
+            await after_workers(pilot, lambda: not app.running and app.outcome is not None)
             await pilot.press("ctrl+e")
             await pilot.pause()
             box = app.screen.query_one("#path-input", Input)
             assert box.value == str(default_out_dir(small_project))
             box.value = str(export)
             await pilot.press("enter")
-            await wait_for(pilot, lambda: (export / "report.pdf").exists(), timeout=30)
-            await wait_for(pilot, lambda: (export / "results.json").exists())
+            await after_workers(pilot, lambda: (export / "results.json").exists())
+            assert (export / "report.pdf").exists()
             # help: F1 anywhere, ? outside free-text fields (also in a number field)
             await pilot.press("f2")
             await pilot.press("question_mark")
@@ -395,12 +401,32 @@ def test_opening_a_project_shows_its_last_run(small_project: Path):
     async def body() -> None:
         app = FrpAssessApp(small_project)
         async with app.run_test(size=SIZE) as pilot:
-            await wait_for(pilot, lambda: app.outcome is not None)
+            await after_workers(pilot, lambda: app.outcome is not None)
             assert app.outcome.stats.computed == 0 and not app.running
             assert app.outcome.results["cases"] == json.loads(json.dumps(stored["cases"]))
             assert app.query_one(RankingTable).row_count == 3
             await pilot.press("f10")
-            await wait_for(pilot, lambda: "θ/α" in app.query_one("#hist-theta").render().plain)
+            await after_workers(pilot, lambda: history_shown(app))
 
     run_async(body)
     assert (out / "results.json").stat().st_mtime_ns == stamp
+
+
+def test_a_late_focus_message_does_not_switch_the_tab(small_project: Path):
+    """The tab is changed on purpose only: the focus message of a field of the Wall tab that
+    is handled after the user went to another tab leaves that tab shown (and the focus
+    follows the tab shown)."""
+
+    async def body() -> None:
+        app = FrpAssessApp(small_project)
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause()
+            wall = app.query_one("#tab-wall", TabPane)
+            assert app.focused is not None and wall in app.focused.ancestors
+            tabs = app.query_one("#tabs", TabbedContent)
+            tabs.active = "tab-history"  # as F10, before the focus has left the Wall tab
+            wall.post_message(TabPane.Focused(wall))  # the late message
+            await settle(pilot, lambda: app.focused is None or wall not in app.focused.ancestors)
+            assert tabs.active == "tab-history"
+
+    run_async(body)

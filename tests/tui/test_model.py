@@ -14,7 +14,7 @@ from frp_assess.assess.from_project import inputs_from_project
 from frp_assess.config import load_project_text, project_data, validate_data
 from frp_assess.dynamics import Wall
 from frp_assess.errors import InputError
-from frp_assess.tui.model import (
+from frp_assess.tui.core.model import (
     MISSING,
     format_value,
     frp_mass_per_m,
@@ -27,8 +27,8 @@ from frp_assess.tui.model import (
     validate_edit,
     wall_derived,
 )
+from frp_assess.tui.core.progress import CaseProgress
 from frp_assess.tui.plots import BRAILLE_BASE, Rule, Series, data_range, render_plot, tick
-from frp_assess.tui.progress import CaseProgress
 from tests.tui.conftest import SMALL
 
 
@@ -217,7 +217,7 @@ def test_load_previous_rebuilds_the_last_run_only_when_it_matches(tmp_path):
     project changed since (an IDA not in the cache) or never run gives None."""
     import threading
 
-    from frp_assess.tui.session import load_previous
+    from frp_assess.tui.core.session import load_previous
 
     project = load_project_text(SMALL, "small.yaml").project
     stop = threading.Event()
@@ -239,7 +239,7 @@ def test_save_project_refuses_bad_paths_and_says_whether_comments_were_kept(tmp_
     """A bad file name is refused with the same message the save dialog shows; a new file
     gets the whole project, an opened one keeps its text (here, its comment)."""
     from frp_assess.config import load_project
-    from frp_assess.tui.session import save_project, yaml_path_problem
+    from frp_assess.tui.core.session import save_project, yaml_path_problem
 
     project = load_project_text(SMALL, "small.yaml").project
     for bad in (tmp_path / "wall.txt", tmp_path / "no-such-dir" / "wall.yaml", tmp_path):

@@ -30,7 +30,7 @@ from frp_assess.config import Project, dump_project, load_project_text
 from frp_assess.config.yaml_update import update_project_text
 from frp_assess.errors import Cancelled, InputError
 from frp_assess.io_utils import atomic_write_text
-from frp_assess.tui.progress import CaseCount, CaseProgress
+from frp_assess.tui.core.progress import CaseCount, CaseProgress
 
 
 @dataclass(frozen=True)

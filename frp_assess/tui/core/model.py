@@ -186,11 +186,12 @@ def validate_edit(data: Any) -> tuple[Project | None, list[Problem]]:
     unknown = [e for e in errors if e["type"] == "extra_forbidden"]
     ordered = unknown + [e for e in errors if e["type"] != "extra_forbidden"]
     out: list[Problem] = []
-    for err in ordered:
-        path, message = describe(Project, err)
-        ctx = dict(err.get("ctx") or {})
-        full = locate(Project, tuple(err["loc"]) + tuple(ctx.get("loc", ()))).path
-        out.append(Problem(tuple(path), message, tuple(full) if err["type"] == "missing" else path))
+    for detail in ordered:
+        path, message = describe(Project, detail)
+        ctx = dict(detail.get("ctx") or {})
+        full = locate(Project, tuple(detail["loc"]) + tuple(ctx.get("loc", ()))).path
+        missing = detail["type"] == "missing"
+        out.append(Problem(tuple(path), message, tuple(full) if missing else path))
     return None, out
 
 
@@ -235,7 +236,7 @@ def wall_derived(wall: Any) -> WallDerived | str:
     return WallDerived(w.alpha, w.R, w.p, w.a_rm_g, w.mass, spec.unit_weight_kn)
 
 
-_SPECTRUM = TypeAdapter(Spectrum)
+_SPECTRUM: TypeAdapter[Any] = TypeAdapter(Spectrum)
 
 
 def spectrum_preview(spec: Any) -> Any:
@@ -309,8 +310,9 @@ def expand_item(item: Any) -> list[tuple[str, str, Any]]:
         return []
     if "sweep" in item:
         ax = item["sweep"] if isinstance(item["sweep"], Mapping) else {}
-        mats = ax.get("material") if isinstance(ax.get("material"), list) else []
-        poss = ax.get("position") if isinstance(ax.get("position"), list) else []
-        rats = ax.get("ratio") if isinstance(ax.get("ratio"), list) else []
+        mats, poss, rats = (
+            value if isinstance(value := ax.get(key), list) else []
+            for key in ("material", "position", "ratio")
+        )
         return [(str(m), str(p), r) for m in mats for p in poss for r in rats]
     return [(str(item.get("material")), str(item.get("position")), item.get("ratio"))]

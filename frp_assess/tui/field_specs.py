@@ -1,20 +1,15 @@
-"""The editor panes: wall, site spectrum, records, analysis options.
+"""The fields of the editor panes (wall, site spectrum, records, analysis options).
 
 Every input is a :class:`~frp_assess.tui.fields.FieldRow` bound to a key path of the
 project file; the help text of each field is the schema's own description (units, range).
-Panes only lay fields out; the app collects, validates and shows derived values.
+The panes (``wall_pane``, ``site_pane``, ``records_pane``, ``analysis_pane``) lay them out;
+:class:`~frp_assess.tui.project_form.ProjectForm` collects and validates them.
 """
 
 from __future__ import annotations
 
 from dataclasses import replace
 from typing import Any
-
-from rich.table import Table
-from rich.text import Text
-from textual.app import ComposeResult
-from textual.containers import Horizontal, Vertical, VerticalScroll
-from textual.widgets import Static
 
 from frp_assess.assess.code_check import CONFIDENCE_FACTORS
 from frp_assess.config import MASONRY
@@ -35,10 +30,7 @@ from frp_assess.config.schema import (
     TableSpectrum,
     WallSpec,
 )
-from frp_assess.tui.fields import FieldRow, FieldSpec, choice, field_help, items, num, text
-from frp_assess.tui.model import WallDerived
-from frp_assess.tui.plots import PlotView
-from frp_assess.tui.record_files import RecordFilesEditor
+from frp_assess.tui.fields import FieldSpec, choice, field_help, items, num, text
 
 W = ("wall",)
 SP = ("seismic", "spectrum")
@@ -165,7 +157,7 @@ RECORD_SOURCE = FieldSpec(
     help=field_help(RecordsSpec, "artificial") + " / " + field_help(RecordsSpec, "files"),
 )
 #: what artificial records start with when chosen: the schema's defaults
-ARTIFICIAL_DEFAULTS = ArtificialRecords().model_dump(mode="json")
+ARTIFICIAL_DEFAULTS = ArtificialRecords.model_validate({}).model_dump(mode="json")
 ARTIFICIAL_FIELDS = in_variant(
     "records",
     "artificial",
@@ -243,7 +235,7 @@ DESIGN_MODE = FieldSpec(
     help="Design mode: the smallest ratio meeting the target per material and position.",
 )
 #: what design mode starts with when switched on: GFRP, and the schema's defaults
-DESIGN_DEFAULTS = DesignSpec(materials=["GFRP"]).model_dump(mode="json")
+DESIGN_DEFAULTS = DesignSpec.model_validate({"materials": ["GFRP"]}).model_dump(mode="json")
 DESIGN_FIELDS = in_variant(
     "design",
     "on",
@@ -265,114 +257,3 @@ SECTIONS: dict[tuple[str, ...], str] = {
     ("costs",): "err-analysis",
     ("design",): "err-analysis",
 }
-
-
-def section_error(section_id: str) -> Static:
-    return Static("", id=section_id, classes="section-error")
-
-
-class WallPane(VerticalScroll):
-    """Project information, the wall and its derived constants."""
-
-    def compose(self) -> ComposeResult:
-        with Horizontal(classes="columns"):
-            with Vertical(classes="col-left"):
-                yield Static("Project", classes="section-title")
-                for spec in PROJECT_FIELDS:
-                    yield FieldRow(spec)
-                yield Static("Wall (rigid rocking block)", classes="section-title")
-                yield section_error("err-wall")
-                for spec in WALL_FIELDS:
-                    yield FieldRow(spec)
-            with Vertical(classes="col-right"):
-                yield Static("", id="derived-wall", classes="derived")
-
-
-class SitePane(VerticalScroll):
-    """The elastic spectrum of the site and its live preview."""
-
-    def compose(self) -> ComposeResult:
-        with Horizontal(classes="columns"):
-            with Vertical(classes="col-left col-narrow"):
-                yield Static("Elastic spectrum (5 % damping)", classes="section-title")
-                yield section_error("err-site")
-                yield FieldRow(SITE_TYPE)
-                for kind, specs in SITE_FIELDS.items():
-                    with Vertical(classes="variant", id=f"var-spectrum-{kind}"):
-                        for spec in specs:
-                            yield FieldRow(spec)
-                yield FieldRow(T1_FIELD)
-                yield Static("", id="spectrum-info", classes="derived")
-            with Vertical(classes="col-right"):
-                yield PlotView(id="spectrum-plot")
-
-
-class RecordsPane(VerticalScroll):
-    """The accelerograms: artificial ones or record files."""
-
-    def compose(self) -> ComposeResult:
-        yield Static("Ground-motion records", classes="section-title")
-        yield section_error("err-records")
-        yield FieldRow(RECORD_SOURCE)
-        with Vertical(classes="variant", id="var-records-artificial"):
-            for spec in ARTIFICIAL_FIELDS:
-                yield FieldRow(spec)
-        with Vertical(classes="variant", id="var-records-files"):
-            yield RecordFilesEditor(id="files-editor")
-        yield FieldRow(SCALE_FIELD)
-        yield Static("", id="records-info", classes="derived")
-
-
-class AnalysisPane(VerticalScroll):
-    """Model options, IDA settings, code check, costs and design mode."""
-
-    def compose(self) -> ComposeResult:
-        yield section_error("err-analysis")
-        with Horizontal(classes="columns"):
-            with Vertical(classes="col-half"):
-                yield Static("Model and IDA", classes="section-title")
-                for spec in ANALYSIS_FIELDS:
-                    yield FieldRow(spec)
-            with Vertical(classes="col-half"):
-                yield Static("Code kinematic check (§C8.7.1)", classes="section-title")
-                for spec in CODE_FIELDS:
-                    yield FieldRow(spec)
-                yield Static("Costs (indicative)", classes="section-title")
-                for spec in COST_FIELDS:
-                    yield FieldRow(spec)
-                yield Static("Design mode", classes="section-title")
-                yield FieldRow(DESIGN_MODE)
-                with Vertical(classes="variant", id="var-design-on"):
-                    for spec in DESIGN_FIELDS:
-                        yield FieldRow(spec)
-
-
-def derived_wall_table(
-    wall: WallDerived | str, pga_g: float | None, n_options: int | None
-) -> Table | Text:
-    """The derived constants as a small table (or the reason they cannot be computed)."""
-    if isinstance(wall, str):
-        return Text.assemble(("Derived values\n", "bold"), (f"— {wall}", "red"))
-    t = Table(
-        title="Derived (as you type)",
-        title_justify="left",
-        box=None,
-        show_header=False,
-        padding=(0, 1, 0, 0),
-    )
-    t.add_column(style="bold cyan", no_wrap=True)
-    t.add_column(justify="right", no_wrap=True)
-    t.add_column(style="dim", no_wrap=True, overflow="ellipsis")
-    t.add_row("α", f"{wall.alpha_deg:.3f}°", f"{wall.alpha:.4f} rad")
-    t.add_row("R", f"{wall.R:.3f} m", "half diagonal")
-    t.add_row("p", f"{wall.p:.3f} rad/s", "frequency")
-    t.add_row("a_RM", f"{wall.a_rm:.4f} g", "g·tan α")
-    t.add_row("mass", f"{wall.mass:.0f} kg/m", "per metre")
-    t.add_row("w", f"{wall.unit_weight:g} kN/m³", "unit weight")
-    if pga_g is not None:
-        t.add_row("a_g·S", f"{pga_g:.4f} g", "demand")
-        ratio = wall.a_rm / pga_g
-        t.add_row("a_RM/a_g·S", f"{ratio:.3f}", "no rocking" if ratio > 1 else "rocks")
-    if n_options is not None:
-        t.add_row("options", str(n_options), "retrofits")
-    return t

@@ -1,0 +1,97 @@
+"""The long operations of the app, run in worker threads; each posts its result as a
+message (:mod:`frp_assess.tui.messages`) through ``post`` (thread-safe)."""
+
+from __future__ import annotations
+
+import threading
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+from textual.message import Message
+
+from frp_assess.config import Project
+from frp_assess.errors import Cancelled, InputError
+from frp_assess.tui.core.session import (
+    RunEvent,
+    RunOutcome,
+    execute_run,
+    export_outputs,
+    load_previous,
+)
+from frp_assess.tui.messages import ExportDone, PreviousLoaded, RunDone, RunProgress
+
+Post = Callable[[Message], object]
+
+#: the least time between two progress messages of one stage [s] (the UI thread shares the
+#: GIL with the run: at most ~10 updates a second)
+PROGRESS_INTERVAL = 0.1
+
+
+def run_assessment_job(
+    post: Post,
+    project: Project,
+    base_dir: Path,
+    input_file: str,
+    out_dir: Path,
+    cancel: threading.Event,
+    jobs: int | None,
+) -> None:
+    """Run the assessment (as ``frp-assess run``); posts RunProgress, then RunDone."""
+    last: dict[str, float] = {}
+
+    def emit(ev: RunEvent) -> None:
+        now = time.monotonic()
+        if (
+            ev.message
+            or ev.done in (0, ev.total)
+            or now - last.get(ev.stage, 0.0) >= PROGRESS_INTERVAL
+        ):
+            last[ev.stage] = now
+            post(RunProgress(ev))
+
+    try:
+        outcome = execute_run(
+            project, base_dir, input_file, out_dir, cancel=cancel, emit=emit, jobs=jobs
+        )
+    except Cancelled:
+        post(RunDone("cancelled", None, "finished analyses are kept in the cache"))
+    except InputError as exc:
+        post(RunDone("error", None, str(exc)))
+    except Exception as exc:  # noqa: BLE001 - shown in the run panel, never a crash
+        post(RunDone("error", None, f"{type(exc).__name__}: {exc}"))
+    else:
+        post(RunDone("done", outcome, ""))
+
+
+def previous_results_job(
+    post: Post,
+    project: Project,
+    base_dir: Path,
+    input_file: str,
+    out_dir: Path,
+    cancel: threading.Event,
+    jobs: int | None,
+) -> None:
+    """Rebuild the last run's results from the cache; posts PreviousLoaded (not if
+    cancelled)."""
+    try:
+        outcome = load_previous(project, base_dir, input_file, out_dir, cancel=cancel, jobs=jobs)
+    except Cancelled:
+        return
+    except Exception as exc:  # noqa: BLE001 - a note in the run log, never a crash
+        post(PreviousLoaded(None, f"{type(exc).__name__}: {exc}"))
+    else:
+        post(PreviousLoaded(outcome))
+
+
+def export_job(post: Post, outcome: RunOutcome, directory: Path) -> None:
+    """Write the report and results of ``outcome`` into ``directory``; posts ExportDone."""
+    try:
+        files = export_outputs(outcome, directory)
+    except InputError as exc:
+        post(ExportDone([], str(exc)))
+    except Exception as exc:  # noqa: BLE001 - reported, never a crash
+        post(ExportDone([], f"{type(exc).__name__}: {exc}"))
+    else:
+        post(ExportDone(files))

@@ -1,0 +1,121 @@
+"""The ranking of the options (Results tab): ←/→ choose a column, ``s`` sorts by it (again:
+reverse), enter shows the per-record IDA of the highlighted case."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any, ClassVar
+
+from rich.text import Text
+from textual.binding import Binding, BindingType
+from textual.message import Message
+from textual.widgets import DataTable, TabbedContent
+
+from frp_assess.tui.core.text import printable
+from frp_assess.tui.literal import literal, safe
+
+
+def _text(value: Any) -> Text:
+    """A table cell as plain text (a str cell would be read as Rich markup)."""
+    return safe(value) if isinstance(value, Text) else literal(value)
+
+
+#: (header, sort key, cell) of the ranking table
+RANKING_COLUMNS: list[tuple[str, Callable[[dict[str, Any]], Any], Callable[..., Any]]] = [
+    ("rank", lambda c: (c["rank"] is None, c["rank"] or 0), lambda c: c["rank"] or "—"),
+    ("option", lambda c: c["name"], lambda c: c["name"]),
+    ("kg/m", lambda c: c["frp_mass_per_m"], lambda c: f"{c['frp_mass_per_m']:.2f}"),
+    ("FRP kg", lambda c: c["frp_mass"], lambda c: f"{c['frp_mass']:.1f}"),
+    ("cost", lambda c: c["frp_cost"], lambda c: f"{c['frp_cost']:.0f}"),
+    ("a_dyn [g]", lambda c: c["design_a_dyn"], lambda c: f"{c['design_a_dyn']:.3f}"),
+    ("q", lambda c: c["mean_q"], lambda c: f"{c['mean_q']:.2f}"),
+    ("impr.", lambda c: c["improvement"], lambda c: f"{c['improvement']:.2f}"),
+    ("C/D", lambda c: c["capacity_demand"], lambda c: f"{c['capacity_demand']:.2f}"),
+    (
+        "meets",
+        lambda c: c["meets_target"],
+        lambda c: Text("yes", "green") if c["meets_target"] else Text("no", "red"),
+    ),
+]
+
+
+def sorted_order(cases: list[dict[str, Any]], column: int, reverse: bool) -> list[int]:
+    """Indices of the cases ordered by a ranking column (stable; ``rank`` puts the
+    unreinforced wall last)."""
+    key = RANKING_COLUMNS[column][1]
+    return sorted(range(len(cases)), key=lambda i: key(cases[i]), reverse=reverse)
+
+
+class RankingTable(DataTable[Any]):
+    """The options, ranked; ``s`` sorts by the column under the cursor."""
+
+    BINDINGS: ClassVar[list[BindingType]] = [
+        Binding("s", "sort", "Sort"),
+        Binding("enter", "show_case", "Per record", show=False),
+    ]
+
+    class CaseChosen(Message):
+        """A case was highlighted (index in results["cases"])."""
+
+        def __init__(self, index: int) -> None:
+            super().__init__()
+            self.index = index
+
+    def __init__(self, **kw: Any) -> None:
+        super().__init__(cursor_type="cell", zebra_stripes=True, **kw)
+        self.cases: list[dict[str, Any]] = []
+        self.order: list[int] = []
+        self.sort_column = 0
+        self.sort_reverse = False
+        self.currency = ""
+
+    def show(self, cases: list[dict[str, Any]], currency: str) -> None:
+        self.cases = cases
+        self.currency = currency
+        self._fill()
+
+    def _fill(self) -> None:
+        row, col = self.cursor_coordinate
+        self.clear(columns=True)
+        for i, (header, _, _) in enumerate(RANKING_COLUMNS):
+            if header == "cost":
+                header = f"cost [{printable(self.currency)}]"
+            mark = (" ▼" if self.sort_reverse else " ▲") if i == self.sort_column else ""
+            self.add_column(Text(header + mark))
+        self.order = sorted_order(self.cases, self.sort_column, self.sort_reverse)
+        for i in self.order:
+            self.add_row(*[_text(cell(self.cases[i])) for _, _, cell in RANKING_COLUMNS])
+        if self.cases:
+            self.move_cursor(row=min(row, len(self.cases) - 1), column=col, animate=False)
+
+    def sort_by(self, column: int) -> None:
+        """Sort by ``column``; the same column again reverses the order."""
+        if column == self.sort_column:
+            self.sort_reverse = not self.sort_reverse
+        else:
+            self.sort_column, self.sort_reverse = column, False
+        self._fill()
+
+    def action_sort(self) -> None:
+        self.sort_by(self.cursor_coordinate.column)
+
+    def on_data_table_header_selected(self, event: DataTable.HeaderSelected) -> None:
+        event.stop()
+        self.sort_by(event.column_index)
+
+    def selected_case(self) -> int | None:
+        if not self.order:
+            return None
+        return self.order[min(self.cursor_coordinate.row, len(self.order) - 1)]
+
+    def on_data_table_cell_highlighted(self, event: DataTable.CellHighlighted) -> None:
+        i = self.selected_case()
+        if i is not None:
+            self.post_message(self.CaseChosen(i))
+
+    def action_show_case(self) -> None:
+        i = self.selected_case()
+        if i is not None:
+            self.post_message(self.CaseChosen(i))
+            self.app.query_one("#results-tabs", TabbedContent).active = "res-records"
+            self.app.call_after_refresh(self.app.query_one("#records-table").focus)
