@@ -22,15 +22,15 @@ divides by the confidence factor FC of Tab. C8.5.IV (1.35 / 1.20 / 1.00); a part
 
 **Pivot.** The rocking model assumes a rigid block turning about the edge of its base.  The
 base actually carries the compressive force N = W + T (weight of the wall above the pivot and
-tension of the bars) on a compressed zone of finite depth x.  With the stress block of
-0.85·f_d over x (the rectangular block of EN 1996-1-1 §6.6.2 and of NTC 2018 §4.5.6.2 for
-masonry), equilibrium gives x = N / (0.85·f_d·1 m).  The resultant of the block lies at x/2
-from the edge, so the pivot moves inward by x/2 and every lever arm measured from the edge
-shrinks by x/2 (Circolare 2019 §C8.7.1 allows the finite compressive strength of masonry to
-be accounted for precisely by moving the hinge inward).  The lever arm of gravity falls from
-B/2 to (B − x)/2, i.e. by the fraction x/B: the premise is kept while x ≤ k·B with k = 0.1
-by default (edge-pivot moments within 10 % of the crushed-pivot ones), a stated choice that
-the caller can change.
+tension of the bars) on a compressed zone of finite depth x.  With the stress block of 0.85·f_d
+over x (the rectangular block behind the flexural strength of masonry piers, NTC 2018
+§7.8.2.2.1, M_u = (l²·t·σ0/2)·(1 − σ0/(0.85·f_d))), equilibrium gives x = N / (0.85·f_d·1 m).
+The resultant of the block lies at x/2 from the edge, so the pivot moves inward by x/2 and
+every lever arm measured from the edge shrinks by x/2 (Circolare 2019 §C8.7.1 allows the finite
+compressive strength of masonry to be accounted for precisely by moving the hinge inward).  The
+lever arm of gravity falls from B/2 to (B − x)/2, i.e. by the fraction x/B: the premise is
+kept while x ≤ k·B with k = 0.1 by default (edge-pivot moments within 10 % of the crushed-pivot
+ones), a stated choice that the caller can change.
 """
 
 from __future__ import annotations
@@ -44,7 +44,7 @@ from frp_assess.errors import InputError
 
 KnowledgeLevel = Literal["LC1", "LC2", "LC3"]
 
-#: Depth of the equivalent rectangular stress block as a fraction of f_d (EN 1996-1-1 §6.6.2).
+#: Stress of the rectangular stress block as a fraction of f_d (NTC 2018 §7.8.2.2.1).
 STRESS_BLOCK_FACTOR = 0.85
 
 #: Default largest x/B for which the edge-pivot premise is accepted (see the module docstring).
