@@ -25,13 +25,13 @@ each end.  Spacing rule (stated, not taken from a code clause for this technique
   clear distance of at least the bar diameter and 10 mm between bars in mortar; 0.10 m
   between axes is a practical minimum for drilled masonry, an assumption of this tool.
 
-**Design strain** (CNR-DT 200 R1/2013 §3.5): ε_d = c·η_a·ε_fk/γ_f, with the characteristic
-rupture strain ε_fk (5 % fractile), the environmental conversion factor η_a of Table 3.2
-(:data:`ENVIRONMENTAL_FACTORS`), the partial factor γ_f = 1.10 for the rupture of FRP
-(Table 3.1) and the cyclic reduction c = 0.5 of ``docs/model.md`` §2.  The values of η_a
+**Design strain** (CNR-DT 200 R1/2013 §3, design values of the FRP): ε_d = c·η_a·ε_fk/γ_f, with
+the characteristic rupture strain ε_fk (5 % fractile), the environmental conversion factor η_a
+of Table 3.2 (:data:`ENVIRONMENTAL_FACTORS`), the partial factor γ_f = 1.10 for the rupture of
+FRP (Table 3.1) and the cyclic reduction c = 0.5 of ``docs/model.md`` §2.  The values of η_a
 are those of CNR-DT 200 R1/2013 Table 3.2 (they coincide with the environmental reduction
-factors C_E of ACI 440.2R).  Basalt is not in the table: BFRP takes the glass values, the
-fibre whose alkali and moisture sensitivity is closest (a conservative choice).
+factors C_E of ACI 440.2R).  Basalt is not in the table: BFRP takes the glass values, the fibre
+whose alkali and moisture sensitivity is closest (a conservative choice).
 
 **Anchorage.** The design force per bar at rupture is F = A_b·E·ε (A_b [mm²]·E [GPa]·ε gives
 kN).  A bar bonded in a resin-filled hole of diameter d_h needs the bond length
@@ -46,7 +46,8 @@ no default is assumed.  The masonry pull-out cone is a check: a 45° cone from t
 the bond length, projected area π·l_b² (TMS 402 anchor bolts in masonry, A_pt = π·l_b²),
 clipped by the faces of the wall and shared with the neighbouring bars (its base is limited
 to the strip of width s around the bar), with the tensile strength f_t = 1.5·τ0d of the
-masonry (the relation behind Circolare 2019 Eq. C8.7.1.16).
+masonry (the Turnšek–Čačovič relation behind the diagonal-cracking shear strength of
+Circolare 2019 §C8.7.1).
 """
 
 from __future__ import annotations
