@@ -426,3 +426,28 @@ def crushing_restoring_moment(
         moment=g_moment + b_moment,
         edge_moment=weight * 0.5 * thickness + bar_force * arm,
     )
+
+
+def max_ratio_for_pivot(
+    weight: float,
+    thickness: float,
+    elastic_modulus: float,
+    strain: float,
+    f_d: float,
+    limit: float = DEFAULT_PIVOT_LIMIT,
+) -> float:
+    """Largest bar ratio ρ [‰] whose pivot check holds: x(W + T) = limit·B.
+
+    From x = (W + T)/(0.85·f_d·1 m) ≤ k·B and T = E·ρ·B·ε (:func:`bar_force`):
+    ρ_max = (k·B·0.85·f_d − W) / (E·B·ε), 0 when the wall alone already exceeds the limit.
+
+    Args:
+        weight: W [kN/m].  thickness: B [m].  elastic_modulus: E [GPa].
+        strain: ε of the bar at the state checked (rupture or peak) [-].
+        f_d: [MPa].  limit: k, the largest accepted x/B [-].
+    """
+    if not (thickness > 0 and elastic_modulus > 0 and strain > 0 and f_d > 0):
+        raise ValueError("thickness, elastic_modulus, strain and f_d must be > 0")
+    capacity = limit * thickness * STRESS_BLOCK_FACTOR * f_d * 1e3  # [kN/m]
+    per_permille = elastic_modulus * 1e6 * 1e-3 * thickness * strain  # T of ρ = 1 ‰ [kN/m]
+    return max(capacity - weight, 0.0) / per_permille

@@ -14,6 +14,7 @@ from frp_assess.assess.masonry import (
     bar_force,
     crushing_restoring_moment,
     masonry_design_values,
+    max_ratio_for_pivot,
     pivot_check,
     wall_weight,
 )
@@ -129,3 +130,14 @@ def test_crushing_restoring_moment_external_equals_moments_about_the_edge():
 def test_edge_pivot_when_no_strength_given():
     m = crushing_restoring_moment(21.6, 138.0, 0.4, "centred", None)
     assert m.depth == 0.0 and m.moment == m.edge_moment and m.reduction == 0.0
+
+
+def test_largest_ratio_the_pivot_can_carry_by_hand():
+    # B = 0.4, W = 21.6 kN/m, f_d = 2.875 MPa, k = 0.1: 0.1·0.4·2443.75 = 97.75 kN/m at the
+    # limit; GFRP at rupture, T(1 ‰) = 46e6·4e-4·0.0075 = 138 kN/m → ρ_max = 76.15/138 ‰
+    rho = max_ratio_for_pivot(21.6, 0.4, 46.0, 0.0075, 2.875)
+    assert rho == pytest.approx(76.15 / 138)
+    at_limit = pivot_check(21.6, bar_force(rho, 0.4, 46.0, 0.0075), 0.4, 2.875)
+    assert at_limit.depth_ratio == pytest.approx(0.1)
+    # a wall whose own weight already needs x > 0.1·B admits no bars
+    assert max_ratio_for_pivot(200.0, 0.4, 46.0, 0.0075, 2.875) == 0.0
