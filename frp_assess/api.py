@@ -30,6 +30,7 @@ from frp_assess.assess.results import (
 )
 from frp_assess.assess.runner import DesignResult, IdaRunner, design_search, summarise
 from frp_assess.assess.seismic import SeismicInput, build_records
+from frp_assess.assess.verification import verify
 from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_write_text
 from frp_assess.motions import write_at2
@@ -102,6 +103,15 @@ def run_assessment(
     all_results = runner.run(
         models, progress=lambda d, n: report("ida", d, n), on_pair=case_progress
     )
+    numerical_check = None
+    if inputs.verify:
+        numerical_check = verify(
+            runner,
+            models,
+            all_results,
+            inputs.ida.tolerance,
+            progress=lambda d, n: report("verify", d, n),
+        )
     summaries = [summarise(r, inputs.ida.max_multiplier, a_rm) for r in all_results]
     urm_design = summaries[0].design_a_dyn
     options = [None, *inputs.options]
@@ -143,6 +153,7 @@ def run_assessment(
         governing=governing,
         materials=materials,
         created=created or _dt.date.today().isoformat(),
+        numerical_check=numerical_check,
     )
     if write:
         report("writing", 0, 1)

@@ -113,7 +113,9 @@ def inputs_from_project(project: Project, base_dir: Path, input_file: str = "") 
             rupture=analysis.rupture,
             collapse=analysis.collapse,
             free_vibration_tail=analysis.free_vibration_tail,
+            tolerance=analysis.integration.tolerance,
         ),
+        verify=analysis.integration.verify,
         strain_factor=analysis.strain_factor,
         ida=IdaSettings(
             analysis.ida.step_ratio, analysis.ida.tolerance, analysis.ida.max_multiplier

@@ -101,6 +101,7 @@ class AssessmentInputs:
     scale_to_spectrum: bool = True
     t1: float = 1.0  #: reference period of the compliance checks [s]
     model: ModelOptions = ModelOptions()
+    verify: bool = False  #: repeat every IDA at a 10× tighter tolerance (docs/model.md §4.5)
     strain_factor: float = 0.5
     ida: IdaSettings = IdaSettings()
     target: float = 1.0  #: required mean capacity/demand

@@ -17,6 +17,7 @@ from frp_assess.assess.quantities import quantity_for
 from frp_assess.assess.ranking import RANKING_RULE, Rankable, rank_options
 from frp_assess.assess.runner import CaseSummary, DesignResult, design_value_rule
 from frp_assess.assess.seismic import SeismicInput
+from frp_assess.assess.verification import NumericalCheck
 from frp_assess.dynamics import RockingModel
 from frp_assess.motions import G
 
@@ -244,6 +245,12 @@ def history_dict(label: str, multiplier: float, res: Any, alpha: float) -> dict[
         "label": label,
         "multiplier": multiplier,
         "collapsed": res.collapsed,
+        "fate": res.fate,
+        "decided_time": res.decided_time,
+        "peak_rotation_ratio": res.max_rotation_ratio,
+        "peak_strain": res.peak_strain,
+        "ruptures": [{"time": r.time, "side": r.side} for r in res.ruptures],
+        "impacts": res.impacts,
         "time": np.round(h.time[sl], 6).tolist(),
         "theta_over_alpha": np.round(h.theta[sl] / alpha, 8).tolist(),
         "strain": np.round(h.strain[sl], 10).tolist(),
@@ -261,6 +268,7 @@ def build_results(
     governing: dict[str, Any] | None,
     materials: dict[str, Material],
     created: str,
+    numerical_check: NumericalCheck | None = None,
 ) -> dict[str, Any]:
     records = [
         {
@@ -291,6 +299,11 @@ def build_results(
             "collapse": m.collapse,
             "strain_factor": inputs.strain_factor,
             "free_vibration_tail": m.free_vibration_tail,
+            "integration": {
+                "method": "Dormand-Prince 5(4), local error control",
+                "tolerance": m.tolerance,
+                "verify": inputs.verify,
+            },
             "ida": {
                 "step_ratio": inputs.ida.step_ratio,
                 "tolerance": inputs.ida.tolerance,
@@ -315,6 +328,26 @@ def build_results(
         "retrofit_required": not cases[0]["meets_target"],
         "design": None if design is None else design_dicts(inputs, design),
         "governing": governing,
+        "numerical_check": None
+        if numerical_check is None
+        else numerical_check_dict(numerical_check, cases, seismic),
+        "input_warnings": list(seismic.warnings),
+    }
+
+
+def numerical_check_dict(
+    check: NumericalCheck, cases: list[dict[str, Any]], seismic: SeismicInput
+) -> dict[str, Any]:
+    """The verification run of docs/model.md §4.5 (`analysis.integration.verify`)."""
+    return {
+        "tolerance": check.tolerance,
+        "check_tolerance": check.check_tolerance,
+        "max_change": None if math.isinf(check.max_change) else check.max_change,
+        "fate_changed": math.isinf(check.max_change),
+        "case": cases[check.case]["name"],
+        "record": seismic.records[check.record].name,
+        "changed_pairs": check.changed,
+        "pairs": check.pairs,
     }
 
 

@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import argparse
+import sys
 import threading
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -15,10 +17,13 @@ from frp_assess.assess.from_project import load_inputs
 from frp_assess.assess.inputs import AssessmentInputs
 from frp_assess.assess.results import recommendation_text
 from frp_assess.cli.output import Column, make_console, print_table, user
+from frp_assess.cli.wall_args import TOLERANCE
 from frp_assess.errors import Cancelled, InputError
 from frp_assess.motions import ComplianceReport
 from frp_assess.numbers import fmt_against
 from frp_assess.output_set import FolderLock, check_out_dir
+from frp_assess.report.tables import numerical_check_text
+from frp_assess.text_safety import plain
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -35,6 +40,18 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     p.add_argument("--jobs", type=int, default=None, help="worker threads (default: all cores)")
     p.add_argument("--no-pdf", action="store_true", help="do not write report.pdf")
+    p.add_argument(
+        "--rtol",
+        type=TOLERANCE,
+        default=None,
+        metavar="TOL",
+        help="integration tolerance, overriding analysis.integration.tolerance",
+    )
+    p.add_argument(
+        "--verify",
+        action="store_true",
+        help="repeat every IDA at a 10x tighter tolerance and report the largest change of C",
+    )
     p.set_defaults(handler=run)
 
 
@@ -121,6 +138,10 @@ def run(args: argparse.Namespace) -> int:
     inputs = load_inputs(path)  # InputError -> one line, exit 2, nothing written
     if args.jobs is not None and args.jobs < 1:
         raise InputError(f"expected at least 1 job, found {args.jobs}", key="--jobs")
+    if args.rtol is not None:
+        inputs = replace(inputs, model=replace(inputs.model, tolerance=args.rtol))
+    if args.verify:
+        inputs = replace(inputs, verify=True)
     out_dir = check_out_dir(Path(args.out) if args.out else default_out_dir(path))
     with FolderLock(out_dir):  # a second run into the same folder refuses here, exit 2
         return _run(args, inputs, out_dir)
@@ -130,6 +151,8 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
     console = make_console()
     with console.status("generating/reading the records and checking them against the spectrum"):
         seismic = prepare_records(inputs)
+    for line in seismic.warnings:
+        print(f"frp-assess: warning: {plain(line)}", file=sys.stderr)
     print_compliance(console, seismic.compliance)
     cancel = threading.Event()
     n_cases = 1 + len(inputs.options)
@@ -148,6 +171,7 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
                 "ida": f"IDA {n_cases} cases × {len(seismic.records)} records",
                 "design": "design mode",
                 "writing": "writing results",
+                "verify": "numerical check (10x tighter tolerance)",
             }.get(stage)
             if label is None:
                 return
@@ -190,6 +214,9 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
         console.print("Recommended: " + user(recommendation_text(results)))
     for d in results["design"] or []:
         console.print(f"design {user(d['material'])} {user(d['position'])}: {user(d['message'])}")
+    check = numerical_check_text(results)
+    if check is not None:
+        console.print(user(check))
     console.print(
         f"{stats.computed} IDAs computed, {stats.reused} reused from the cache; "
         f"results in {user(out_dir)}/"

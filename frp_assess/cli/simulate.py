@@ -43,11 +43,17 @@ def run(args: argparse.Namespace) -> int:
     res = model.run(record.acc, record.dt, args.scale, history=args.out is not None)
     out = {
         "collapsed": res.collapsed,
+        "fate": res.fate,
+        "decided_time": res.decided_time,
         "collapse_time": res.collapse_time,
         "max_rotation": res.max_rotation,
         "max_rotation_ratio": res.max_rotation_ratio,
+        "peak_strain": res.peak_strain,
+        "rupture_strain": res.rupture_strain,
         "impacts": res.impacts,
         "ruptures": [{"time": r.time, "side": r.side} for r in res.ruptures],
+        "collapse_rule": model.options.collapse,
+        "tolerance": model.options.tolerance,
     }
     if args.out:
         h = res.history
@@ -73,10 +79,16 @@ def run(args: argparse.Namespace) -> int:
         verdict = "COLLAPSE" if res.collapsed else "no collapse"
         when = f" at t = {res.collapse_time:.3f} s" if res.collapse_time is not None else ""
         print(
-            f"{verdict}{when}; peak |θ| = {res.max_rotation:.6g} rad "
+            f"{verdict}{when} ({model.options.collapse} rule: {res.fate}, decided at "
+            f"t = {res.decided_time:.3f} s); peak |θ| = {res.max_rotation:.6g} rad "
             f"= {res.max_rotation_ratio:.4f} α; "
             f"{res.impacts} impacts; {len(res.ruptures)} bar ruptures"
         )
+        if res.rupture_strain is not None:
+            print(
+                f"peak strain of an intact acting bar {res.peak_strain * 1e3:.3f} ‰ "
+                f"(rupture at {res.rupture_strain * 1e3:.3f} ‰)"
+            )
         for r in res.ruptures:
             print(f"  rupture at t = {r.time:.4f} s, side {r.side:+d}")
         if args.out:

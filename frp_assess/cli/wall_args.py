@@ -10,8 +10,17 @@ import argparse
 import math
 
 from frp_assess.cli.arg_types import number_in
-from frp_assess.dynamics import ModelOptions, Rebars, RockingModel, Wall
+from frp_assess.dynamics import (
+    COLLAPSE_RULES,
+    DEFAULT_TOLERANCE,
+    RUPTURE_RULES,
+    ModelOptions,
+    Rebars,
+    RockingModel,
+    Wall,
+)
 from frp_assess.dynamics.rebars import DEFAULT_STRAIN_FACTOR
+from frp_assess.dynamics.rocking import TOLERANCE_RANGE
 from frp_assess.errors import InputError
 from frp_assess.motions.readers import FORMATS, UNITS
 
@@ -25,6 +34,7 @@ RATIO = number_in(0, 20, low_open=True, unit="‰")
 FACTOR = number_in(0, 1, low_open=True)
 #: longest free-vibration tail [s] (the schema's analysis.free_vibration_tail)
 TAIL = number_in(0, 60, unit="s")
+TOLERANCE = number_in(*TOLERANCE_RANGE)
 
 
 def add_model_arguments(parser: argparse.ArgumentParser) -> None:
@@ -55,7 +65,7 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
         metavar="C",
         help="cyclic reduction c, ε_max = c·ε_u (default 0.5)",
     )
-    model = parser.add_argument_group("model options (MODEL.md §3)")
+    model = parser.add_argument_group("model options (docs/model.md §3–4)")
     model.add_argument(
         "--restitution",
         default="energy",
@@ -63,11 +73,20 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
         help="impact rule: energy (|θ'₊| = √r·|θ'₋|, default), velocity (r·|θ'₋|) "
         "or a velocity ratio in (0, 1]",
     )
+    model.add_argument("--rupture", choices=RUPTURE_RULES, default="energy-transfer")
     model.add_argument(
-        "--rupture", choices=["energy-transfer", "velocity-continuous"], default="energy-transfer"
+        "--collapse",
+        choices=COLLAPSE_RULES,
+        default="overturning",
+        help="overturning: the wall falls (default) | end-of-record: |θ| >= α when the record "
+        "ends | first-exceedance: |θ| reaches α",
     )
     model.add_argument(
-        "--collapse", choices=["end-of-record", "first-exceedance"], default="end-of-record"
+        "--rtol",
+        type=TOLERANCE,
+        default=DEFAULT_TOLERANCE,
+        metavar="TOL",
+        help=f"local error tolerance of the integrator (default {DEFAULT_TOLERANCE:g})",
     )
     model.add_argument(
         "--tail",
@@ -172,5 +191,6 @@ def build_model(args: argparse.Namespace) -> RockingModel:
         rupture=args.rupture,
         collapse=args.collapse,
         free_vibration_tail=args.tail,
+        tolerance=args.rtol,
     )
     return RockingModel(wall, args.mechanism, rebars, options)

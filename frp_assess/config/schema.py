@@ -29,6 +29,12 @@ from pydantic import (
 from pydantic_core import PydanticCustomError
 
 from frp_assess.config.library import FRP_MATERIALS, MASONRY, FrpMaterial, did_you_mean
+from frp_assess.dynamics.rocking import (
+    DEFAULT_TOLERANCE,
+    TOLERANCE_RANGE,
+    CollapseRule,
+    RuptureRule,
+)
 
 Position = Literal["centred", "external"]
 Mechanism = Literal["one-sided", "two-sided"]
@@ -530,28 +536,49 @@ class IdaSpec(_Model):
     )
 
 
+class IntegrationSpec(_Model):
+    """Error control of the time integration (docs/model.md §4)."""
+
+    tolerance: Number = Field(
+        DEFAULT_TOLERANCE,
+        ge=TOLERANCE_RANGE[0],
+        le=TOLERANCE_RANGE[1],
+        description=f"Local error tolerance of the Dormand-Prince 5(4) pair [-], "
+        f"{TOLERANCE_RANGE[0]:g}-{TOLERANCE_RANGE[1]:g} ({DEFAULT_TOLERANCE:g}).",
+    )
+    verify: bool = Field(
+        False,
+        description="Repeat every IDA at a 10x tighter tolerance and report the largest "
+        "change of a collapse multiplier (false).",
+    )
+
+
 class AnalysisSpec(_Model):
-    """Model options and the IDA settings (MODEL.md §3, §5)."""
+    """Model options and the IDA settings (docs/model.md §3–5)."""
 
     restitution: Restitution = Field(
         "energy",
         description="energy: velocity ratio sqrt(r) | velocity: r | a number in (0, 1]: the "
         "velocity ratio itself.",
     )
-    rupture: Literal["energy-transfer", "velocity-continuous"] = Field(
+    rupture: RuptureRule = Field(
         "energy-transfer",
         description="Bar rupture rule: energy-transfer (Eq. 12) | velocity-continuous.",
     )
-    collapse: Literal["end-of-record", "first-exceedance"] = Field(
-        "end-of-record",
-        description="Collapse: |theta| >= alpha at the end of the record | "
-        "as soon as |theta| reaches alpha.",
+    collapse: CollapseRule = Field(
+        "overturning",
+        description="Collapse: overturning (the wall falls; followed after the record until "
+        "its fate is certain) | end-of-record (|theta| >= alpha when the record ends, the "
+        "paper's convention) | first-exceedance (|theta| reaches alpha at any time).",
     )
     strain_factor: Number = Field(
         0.5, gt=0, le=1, description="Cyclic reduction c of eps_u, 0 < c <= 1 (0.5)."
     )
     free_vibration_tail: Number = Field(
         0.0, ge=0, le=60, description="Zero motion appended to each record [s] (0)."
+    )
+    integration: IntegrationSpec = Field(
+        default_factory=IntegrationSpec, description="Time integration."
     )
     ida: IdaSpec = Field(default_factory=IdaSpec, description="IDA rule.")
     target: Number = Field(

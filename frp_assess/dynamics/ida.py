@@ -1,4 +1,4 @@
-"""Incremental dynamic analysis of one wall under one record (docs/model.md §5; paper Eqs. 15–16)."""
+"""Incremental dynamic analysis of one wall and one record (docs/model.md §5; Eqs. 15–16)."""
 
 from __future__ import annotations
 

@@ -237,6 +237,8 @@ def seismic(results: Results) -> list[Flowable]:
             numeric_from=2,
         )
     )
+    for warning in results.get("input_warnings") or []:
+        out.append(para("Warning: " + str(warning), "small"))
     out.append(gap(6))
     out.append(
         KeepTogether(
@@ -420,8 +422,9 @@ def governing(results: Results) -> list[Flowable]:
         out.append(
             para(
                 "Figure 4. Rotation θ/α (θ = α: the wall has rotated as far as its slenderness; "
-                "collapse is judged at the end of the record or on overturning) and strain of "
-                "the acting bar, at the collapse multiplier (red) and just below it (blue).",
+                "collapse follows the criterion of section 2.4) and strain of the acting bar, at "
+                "the collapse multiplier (red) and just below it (blue); after the record the "
+                "wall moves freely until its fate is decided.",
                 "caption",
             )
         )
@@ -517,11 +520,18 @@ def method(results: Results) -> list[Flowable]:
         para(
             "Symbols: B, H thickness and height; R = ½√(B² + H²); m mass per metre; I₀ = "
             "(4/3)·m·R²; E, A elastic modulus and area of the active bars (A = ρ·B per metre); "
-            "ü_g ground acceleration scaled by C. The equation is integrated with every event "
-            "(uplift, impact, rupture, collapse) located inside the time step.",
+            "ü_g ground acceleration scaled by C. The equation is integrated by the "
+            "Dormand–Prince 5(4) Runge–Kutta pair with local error control (steps never cross "
+            "a record sample); every event (uplift, impact, rupture, collapse) is located "
+            "inside the step on the integrator itself and the step restarts there. Under the "
+            "'overturning' rule the wall is followed after the record until it has fallen or "
+            "its energy is below every barrier it could still reach (it can no longer fall).",
             "small",
         )
     )
+    check = tb.numerical_check_text(results)
+    if check is not None:
+        out.append(para(check, "small"))
     out.append(h2("7.2  Assumptions"))
     for a in ASSUMPTIONS:
         out.append(markup("• " + esc(a), "bullet"))

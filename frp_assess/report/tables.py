@@ -289,6 +289,38 @@ def materials_table(results: Results) -> TableData:
     return TableData(header, rows)
 
 
+#: the collapse rules in words (docs/model.md §3.5)
+COLLAPSE_WORDS = {
+    "overturning": "overturning: the wall falls (followed after the record until its fate "
+    "is certain)",
+    "end-of-record": "end-of-record: |θ| ≥ α when the record ends (the paper's convention)",
+    "first-exceedance": "first-exceedance: |θ| reaches α at any time",
+}
+
+
+def numerical_check_text(results: Results) -> str | None:
+    """The verification run in one sentence, or None when it was not asked for."""
+    nc = results.get("numerical_check")
+    if not nc:
+        return None
+    head = (
+        f"Numerical check: every IDA was repeated at a 10× tighter integration tolerance "
+        f"({nc['check_tolerance']:g} instead of {nc['tolerance']:g}). "
+    )
+    if nc["fate_changed"]:
+        return head + (
+            f"For {nc['case']} under {nc['record']} a record collapsed in one run and not in "
+            f"the other: that result is ill-conditioned (sensitive to the integrator's "
+            f"round-off); {nc['changed_pairs']} of {nc['pairs']} multipliers moved by more "
+            "than the IDA tolerance."
+        )
+    return head + (
+        f"The largest change of a collapse multiplier was {nc['max_change']:.2%} "
+        f"({nc['case']}, {nc['record']}); {nc['changed_pairs']} of {nc['pairs']} "
+        "multipliers moved by more than the IDA tolerance."
+    )
+
+
 def model_rows(results: Results) -> list[list[str]]:
     m = results["model"]
     ida = m["ida"]
@@ -299,11 +331,19 @@ def model_rows(results: Results) -> list[list[str]]:
             f"{m['restitution']} (velocity ratio applied {m['restitution_ratio']:.3f})",
         ],
         ["rupture rule", m["rupture"]],
-        ["collapse criterion", m["collapse"]],
+        ["collapse criterion", COLLAPSE_WORDS.get(m["collapse"], m["collapse"])],
         ["cyclic strain factor c (ε_max = c·ε_u)", f"{m['strain_factor']:g}"],
         ["free-vibration tail", f"{m['free_vibration_tail']:g} s"],
         ["target capacity/demand", f"≥ {m['target']:g}"],
     ]
+    integ = m.get("integration")
+    if integ:
+        rows.append(
+            [
+                "time integration",
+                f"Dormand–Prince 5(4), local error tolerance {integ['tolerance']:g}",
+            ]
+        )
     if m.get("design_value"):
         rows.append(["design value of a_dyn", str(m["design_value"])])
     rows += [
@@ -534,8 +574,23 @@ def a_dyn_matrix(results: Results) -> TableData:
     return TableData(header, rows)
 
 
+def _fate(run: Mapping[str, Any]) -> str:
+    """A time history's fate and when it was decided (results written before the fate was
+    recorded show collapsed yes/no)."""
+    if "fate" not in run:
+        return yes_no(run["collapsed"])
+    return f"{run['fate']} ({run['decided_time']:.2f} s)"
+
+
 def governing_runs_table(results: Results) -> TableData:
-    header = ["run", "multiplier C", "a = C·PGA [g]", "collapsed", "peak θ/α [–]", "peak ε [‰]"]
+    header = [
+        "run",
+        "multiplier C",
+        "a = C·PGA [g]",
+        "fate (decided at)",
+        "peak θ/α [–]",
+        "peak ε [‰]",
+    ]
     gov = results.get("governing") or {}
     pga = None
     for r in results["records"]:
@@ -550,9 +605,10 @@ def governing_runs_table(results: Results) -> TableData:
                 run["label"],
                 fmt_mult(run["multiplier"]),
                 DASH if pga is None else fmt_acc(run["multiplier"] * pga),
-                yes_no(run["collapsed"]),
-                f"{max(abs(x) for x in th):.2f}",
-                f"{1e3 * max(abs(x) for x in st):.2f}",
+                _fate(run),
+                f"{run.get('peak_rotation_ratio', max(abs(x) for x in th)):.2f}",
+                f"{1e3 * run.get('peak_strain', max(abs(x) for x in st)):.2f}"
+                + (f", broke at {run['ruptures'][0]['time']:.2f} s" if run.get("ruptures") else ""),
             ]
         )
     return TableData(header, rows)

@@ -127,6 +127,7 @@ class StudyPlan:
             rupture=o.rupture,
             collapse=o.collapse,
             free_vibration_tail=o.free_vibration_tail,
+            tolerance=o.integration_tolerance,
         )
         i = study.ida
         self.ida_settings = IdaSettings(i.step_ratio, i.tolerance, i.max_multiplier)

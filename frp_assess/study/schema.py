@@ -38,6 +38,12 @@ from frp_assess.config.schema import (
     Number,
 )
 from frp_assess.config.yaml_source import parse_yaml, read_text_file
+from frp_assess.dynamics.rocking import (
+    DEFAULT_TOLERANCE,
+    TOLERANCE_RANGE,
+    CollapseRule,
+    RuptureRule,
+)
 from frp_assess.errors import InputError
 
 #: most cases of one study (the paper's Table 1 has 2,052)
@@ -111,15 +117,25 @@ class RecordSetSpec(_Strict):
 
 
 class ModelSpec(_Strict):
-    """Model options of MODEL.md §3 and the cyclic strain factor of §2."""
+    """Model options of docs/model.md §3–4 and the cyclic strain factor of §2."""
 
     restitution: Literal["energy", "velocity"] | float = Field(
         default="energy",
         description="impact rule: 'energy' (|θ'+| = √r·|θ'-|), 'velocity' (r·|θ'-|) or a "
         "velocity ratio in (0, 1]",
     )
-    rupture: Literal["energy-transfer", "velocity-continuous"] = "energy-transfer"
-    collapse: Literal["end-of-record", "first-exceedance"] = "end-of-record"
+    rupture: RuptureRule = "energy-transfer"
+    collapse: CollapseRule = Field(
+        default="overturning",
+        description="overturning (the wall falls) | end-of-record (the paper's convention: "
+        "|θ| >= α when the record ends; the paper-study files pin it) | first-exceedance",
+    )
+    integration_tolerance: Number = Field(
+        default=DEFAULT_TOLERANCE,
+        ge=TOLERANCE_RANGE[0],
+        le=TOLERANCE_RANGE[1],
+        description=f"local error tolerance of the integrator [-] ({DEFAULT_TOLERANCE:g})",
+    )
     strain_factor: Number = Field(default=0.5, gt=0, le=1, description="c in ε_max = c·ε_u [-]")
     free_vibration_tail: Number = Field(
         default=0.0, ge=0, le=60, description="zero ground motion appended to each record [s], 0-60"
@@ -134,7 +150,7 @@ class ModelSpec(_Strict):
 
 
 class IdaSpec(_Strict):
-    """IDA search rule of MODEL.md §5."""
+    """IDA search rule of docs/model.md §5."""
 
     step_ratio: Number = Field(
         default=1.10, ge=1.01, le=10, description="hunt ratio s [-], 1.01-10"

@@ -15,8 +15,9 @@ from frp_assess.study.schema import StudyFile
 
 #: variant name -> model options changed from the study's own
 VARIANTS: dict[str, dict[str, str]] = {
-    "default (energy, end-of-record, energy-transfer)": {},
+    "paper (energy, end-of-record, energy-transfer)": {},
     "restitution: velocity": {"restitution": "velocity"},
+    "collapse: overturning": {"collapse": "overturning"},
     "collapse: first-exceedance": {"collapse": "first-exceedance"},
     "rupture: velocity-continuous": {"rupture": "velocity-continuous"},
 }

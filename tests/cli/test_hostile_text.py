@@ -1,6 +1,8 @@
-"""A project full of markup and escape sequences runs to the end; every output shows the text
-as typed: the terminal (no escape sequence, rich markup literal) and the PDF (no image, no
-link, no markup)."""
+"""A project full of markup runs to the end; every output shows the text as typed: the
+terminal (rich markup literal) and the PDF (no image, no link, no markup).  Raw control
+characters (terminal escape sequences) are refused by the project schema with key and line
+(tests/test_bad_inputs.py); results.json edited by hand can still carry them to the PDF, which
+shows a placeholder (tests/report/test_escaping.py)."""
 
 from __future__ import annotations
 
@@ -11,13 +13,12 @@ import pytest
 
 from frp_assess.cli import main
 from frp_assess.report import build_story
-from frp_assess.text_safety import PLACEHOLDER
 from tests.report.test_report import story_text
 
 HOSTILE = r"""
 project:
   name: "Hostile <b>wall [/x]"
-  engineer: "\e[31mred\e[0m"
+  engineer: "[red]red[/red] <font color=red>"
   location: "<a href=\"x\">here</a>"
   notes: "[bold]notes[/bold] <img src=\"/etc/passwd\"/>"
 wall: {thickness: 0.3, height: 3.0, length: 5.0, unit_weight: 18.0, mechanism: one-sided}
@@ -50,4 +51,4 @@ def test_hostile_project_runs_and_shows_text_as_typed(
     text = story_text(build_story(results))
     for typed in ("Hostile <b>wall [/x]", '<a href="x">here</a>', "[/x] opt <b>", "<b>EUR [/x]"):
         assert typed in text
-    assert f"{PLACEHOLDER}[31mred" in text and "\x1b" not in text
+    assert "[red]red[/red] <font color=red>" in text and "\x1b" not in text

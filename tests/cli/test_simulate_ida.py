@@ -60,13 +60,23 @@ def test_simulate_json_matches_api(record_file, capsys):
     assert out["max_rotation"] == res.max_rotation
     assert out["max_rotation_ratio"] == pytest.approx(res.max_rotation / model.wall.alpha)
     assert out["collapsed"] == res.collapsed and out["impacts"] == res.impacts
+    assert out["fate"] == res.fate and out["decided_time"] == res.decided_time
+    assert out["peak_strain"] == res.peak_strain
+    assert out["rupture_strain"] == pytest.approx(0.5 * 0.015)
+    assert out["collapse_rule"] == "overturning" and out["tolerance"] == 1e-8
     assert set(out) == {
         "collapsed",
+        "fate",
+        "decided_time",
         "collapse_time",
         "max_rotation",
         "max_rotation_ratio",
+        "peak_strain",
+        "rupture_strain",
         "impacts",
         "ruptures",
+        "collapse_rule",
+        "tolerance",
     }
 
 
@@ -175,3 +185,25 @@ def test_ida_means_count_records_without_collapse_like_run(tmp_path, capsys):
     assert main([*argv, "--max-multiplier", "3"]) == 0
     text = " ".join(capsys.readouterr().out.split())
     assert "lower bounds" in text and f"mean a_dyn = ≥ {out['mean_a_dyn']:.4f} g" in text
+
+
+def test_ida_multipliers_do_not_depend_on_the_tail(tmp_path, capsys):
+    """The issue's wall (0.40 × 5.5 m, two-sided, GFRP centred 1.5 ‰, K ≥ cos α) under the
+    default collapse rule: `--tail 0`, `5` and `30` give the same multipliers."""
+    from tests.conftest import synthetic_record
+
+    path = tmp_path / "rec.txt"
+    acc = synthetic_record(seed=4, duration=10.0, dt=0.01) / 9.80665
+    path.write_text("".join(f"{i * 0.01:.2f} {a:.8e}\n" for i, a in enumerate(acc)))
+    args = [
+        "ida", "--thickness", "0.40", "--height", "5.5", "--mechanism", "two-sided",
+        "--modulus", "46", "--ultimate-strain", "0.015", "--position", "centred",
+        "--ratio", "1.5", "--record", str(path), "--json",
+    ]  # fmt: skip
+    got = []
+    for tail in ("0", "5", "30"):
+        assert main([*args, "--tail", tail]) == 0
+        out = json.loads(capsys.readouterr().out)
+        got.append([r["collapse_multiplier"] for r in out["records"]])
+    assert got[0][0] is not None
+    assert got[0] == got[1] == got[2]
