@@ -8,8 +8,9 @@ import sys
 from collections.abc import Mapping
 from pathlib import Path
 
-from frp_assess.config import LoadedProject, load_project_text
+from frp_assess.config import LoadedProject
 from frp_assess.config.library import MASONRY
+from frp_assess.config.loader import load_parsed
 from frp_assess.config.messages import Loc, format_path, line_of
 from frp_assess.config.problems import problems_of, raise_all
 from frp_assess.config.schema import (
@@ -154,7 +155,7 @@ def validate_file(path: Path) -> tuple[list[str], tuple[str, ...]]:
         study = parse_study(data, file=name, lines=lines)
         raise_all(study_problems(study, name, lines))
         return study_summary(study, name), ()
-    loaded = load_project_text(text, name, base_dir=path.parent)
+    loaded = load_parsed(data, lines, name, base_dir=path.parent)
     return summary(loaded), loaded.warnings
 
 
