@@ -769,6 +769,24 @@ ROWS: list[Row] = [
         "two-column",
         expect="{d}: is a directory, not a record file",
     ),
+    validate(
+        "validate-reads-records",
+        with_files("{path: r.AT2}"),
+        "NPTS must be a whole number, found inf",
+        4,
+        None,
+        files=(("r.AT2", "a\nb\nc\nNPTS= 1e400, DT= 0.01 SEC\n0.1 0.2\n"),),
+        path="{d}/r.AT2",
+    ),
+    validate(
+        "validate-record-without-dt",
+        with_files("{path: r1.txt}"),
+        "it holds 3 numbers a line",
+        None,
+        None,
+        files=(("r1.txt", "1 2 3\n4 5 6\n"),),
+        path="{d}/r1.txt",
+    ),
     # --- 1/2. numeric command-line arguments ----------------------------------------------
     cli(
         "generate-count-1e6",

@@ -22,6 +22,7 @@ from frp_assess.assess.inputs import (
     RecordFile,
 )
 from frp_assess.config import MASONRY, FrpMaterial, Project, load_project
+from frp_assess.config.problems import raise_all
 from frp_assess.config.schema import (
     Ec8Spectrum,
     Ntc2018Spectrum,
@@ -29,11 +30,14 @@ from frp_assess.config.schema import (
     TableSpectrum,
 )
 from frp_assess.dynamics import IdaSettings, ModelOptions
+from frp_assess.errors import InputError
 from frp_assess.motions import (
     ElasticSpectrum,
+    Record,
     ec8_spectrum,
     ntc2018_spectrum,
     preset_spectrum,
+    read_record,
     table_spectrum,
 )
 
@@ -151,7 +155,29 @@ def load_inputs(
             the default prints it on stderr as ``frp-assess: warning: ...``; None: silent.
     """
     loaded = load_project(path)
+    _, problems = read_record_files(loaded.project, loaded.base_dir)
+    raise_all(problems)  # before any output folder is made: a bad record writes nothing
     if warn is not None:
         for line in loaded.warnings:
             warn(line)
     return inputs_from_project(loaded.project, loaded.base_dir, str(loaded.path.name))
+
+
+def read_record_files(project: Project, base_dir: Path) -> tuple[list[Record], list[InputError]]:
+    """Read every record file of a project (none for artificial records).
+
+    Returns:
+        the records read and the problems (one per unreadable file, each naming the file and,
+        where it applies, its line), so that ``validate`` and ``run`` refuse a bad record file
+        before any work or output.
+    """
+    records: list[Record] = []
+    problems: list[InputError] = []
+    for f in project.seismic.records.files or []:
+        try:
+            records.append(
+                read_record(base_dir / f.path, format=f.format, units=f.units, dt=f.dt, name=f.name)
+            )
+        except InputError as exc:
+            problems.append(exc)
+    return records, problems

@@ -40,7 +40,7 @@ def build_records(inputs: AssessmentInputs) -> SeismicInput:
             t1=inputs.t1,
         )
         recorded, factor = False, 1.0
-        warnings = ()
+        warnings: tuple[str, ...] = ()
     else:
         records = [
             read_record(f.path, format=f.format, units=f.units, dt=f.dt, name=f.name) for f in spec

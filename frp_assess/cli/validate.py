@@ -8,8 +8,10 @@ import sys
 from collections.abc import Mapping
 from pathlib import Path
 
-from frp_assess.config import LoadedProject, load_project_text
+from frp_assess.assess.from_project import read_record_files
+from frp_assess.config import LoadedProject
 from frp_assess.config.library import MASONRY
+from frp_assess.config.loader import load_parsed
 from frp_assess.config.messages import Loc, format_path, line_of
 from frp_assess.config.problems import problems_of, raise_all
 from frp_assess.config.schema import (
@@ -21,6 +23,7 @@ from frp_assess.config.schema import (
 )
 from frp_assess.config.yaml_source import parse_yaml, read_text_file
 from frp_assess.errors import InputError
+from frp_assess.motions.plausibility import plausibility_warnings
 from frp_assess.motions.spectra import parse_spectrum
 from frp_assess.study.plan import StudyPlan
 from frp_assess.study.schema import StudyFile, looks_like_study, parse_study, spectrum_text
@@ -139,7 +142,8 @@ def study_summary(study: StudyFile, file: str) -> list[str]:
 
 
 def validate_file(path: Path) -> tuple[list[str], tuple[str, ...]]:
-    """Validate a project or a study file (told apart by their keys).
+    """Validate a project or a study file (told apart by their keys); a project's record
+    files are read too (their problems are errors, an implausible PGA a warning).
 
     Returns:
         the summary lines and the warnings (one line each, e.g. placeholders left unchanged).
@@ -154,8 +158,10 @@ def validate_file(path: Path) -> tuple[list[str], tuple[str, ...]]:
         study = parse_study(data, file=name, lines=lines)
         raise_all(study_problems(study, name, lines))
         return study_summary(study, name), ()
-    loaded = load_project_text(text, name, base_dir=path.parent)
-    return summary(loaded), loaded.warnings
+    loaded = load_parsed(data, lines, name, base_dir=path.parent)
+    records, problems = read_record_files(loaded.project, loaded.base_dir)
+    raise_all(problems)
+    return summary(loaded), (*loaded.warnings, *plausibility_warnings(records))
 
 
 def print_problems(error: InputError) -> None:

@@ -120,6 +120,19 @@ def load_project_text(
         check_files: whether to check that the record files exist.
     """
     data, lines = parse_yaml(text, name)
+    return load_parsed(data, lines, name, base_dir=base_dir, check_files=check_files)
+
+
+def load_parsed(
+    data: Any,
+    lines: dict[Loc, int],
+    name: str,
+    *,
+    base_dir: Path | str | None = None,
+    check_files: bool = True,
+) -> LoadedProject:
+    """Validate YAML data already parsed by :func:`parse_yaml` (arguments as
+    :func:`load_project_text`, ``lines`` as it returns them)."""
     project = validate_data(data, file=name, lines=lines)
     base = Path(base_dir) if base_dir is not None else Path(name).parent
     if check_files:

@@ -12,7 +12,8 @@ class Tabbed(TabbedContent):
     message that arrives late (the first field focused at start, processed after the user
     pressed F10) then sent the user back to a tab they had left.  Here the tab is only
     changed on purpose, and the app moves the focus into the tab shown
-    (:meth:`FrpAssessApp.show_tab`), so the focus follows the tab and never the reverse.
+    (:meth:`MainTabs.show <frp_assess.tui.main_tabs.MainTabs.show>`), so the focus follows
+    the tab and never the reverse.
     """
 
     def on_tab_pane_focused(self, event: TabPane.Focused) -> None:

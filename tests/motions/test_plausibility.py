@@ -114,3 +114,24 @@ def test_ambiguous_tables_are_refused_with_how_to_convert(
     with pytest.raises(RecordFormatError) as info:
         read_record(path)
     assert fragment in str(info.value) and info.value.line == line
+
+
+def test_validate_reads_the_records_and_warns(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    t = np.arange(SHAPE.size) * 0.01
+    acc = SHAPE / np.max(np.abs(SHAPE)) * 3.4  # m/s², read as g
+    (tmp_path / "ms2.txt").write_text(
+        "".join(f"{a:.4f} {b:.6f}\n" for a, b in zip(t, acc, strict=True)), encoding="utf-8"
+    )
+    project = tmp_path / "p.yaml"
+    project.write_text(
+        "wall: {thickness: 0.3, height: 3, masonry: rubble-stone, mechanism: one-sided}\n"
+        "seismic:\n  spectrum: {type: preset, name: A2}\n  records:\n"
+        "    files: [{path: ms2.txt}]\n",
+        encoding="utf-8",
+    )
+    assert main(["validate", str(project)]) == 0
+    (warning,) = capsys.readouterr().err.splitlines()
+    assert warning.startswith("frp-assess: warning: record 'ms2': PGA 3.4 g")
+    assert warning.endswith("set units: m/s2")

@@ -42,6 +42,11 @@ async def type_into(pilot: Any, selector: str, text: str) -> None:
     await pilot.pause()
 
 
+def log_text(log: Any) -> str:
+    """What the run log shows, as plain text."""
+    return "".join(str(line.text) for line in log.lines)
+
+
 def history_shown(app: FrpAssessApp) -> bool:
     """The History tab is shown with the θ/α plot of a computed time history."""
     tabs = app.query_one("#tabs", TabbedContent)
@@ -93,7 +98,7 @@ def test_open_edit_derived_values_and_validation_messages(small_project: Path):
             await pilot.pause()
             kind = app.query_one("#f-seismic-spectrum-type-control", Select)
             kind.value = "ntc2018"
-            await pilot.pause()
+            await settle(pilot, lambda: "a_g·S = 0.3" in plain(app.query_one("#spectrum-info")))
             assert app.project is not None
             assert app.project.seismic.spectrum.type == "ntc2018"
             assert "a_g·S = 0.3" in plain(app.query_one("#spectrum-info", Static))
@@ -111,21 +116,20 @@ def test_retrofit_table_add_duplicate_remove_and_errors(small_project: Path):
         async with app.run_test(size=SIZE) as pilot:
             await pilot.pause()
             await pilot.press("f6")
-            await pilot.pause()
             editor = app.query_one(InterventionsEditor)
+            await settle(pilot, lambda: app.focused is editor.table)
             assert len(editor.items) == 2
             await pilot.press("s")  # a sweep
-            await pilot.pause()
+            await settle(pilot, lambda: len(editor.items) == 3 and app.project is not None)
             assert "sweep" in editor.items[-1] and app.project is not None
             # GFRP × (centred, external) × 1‰: the external one repeats option 1 (dropped)
             assert len(app.project.expand_interventions()) == 3
             await pilot.press("d")  # duplicate: the same options, dropped on expansion
-            await pilot.pause()
+            await settle(pilot, lambda: len(editor.items) == 4)
             assert len(editor.items) == 4 and len(app.project.expand_interventions()) == 3
             await pilot.press("delete")
             await pilot.press("up")  # back to the CFRP option
-            await pilot.pause()
-            assert len(editor.items) == 3
+            await settle(pilot, lambda: len(editor.items) == 3 and editor.selected == 1)
             ratio = next(r for r in editor.form_rows("option") if r.spec.path == ("ratio",)).control
             assert isinstance(ratio, Input) and ratio.value == "2"
             await type_into(pilot, f"#{ratio.id}", "25")
@@ -138,16 +142,15 @@ def test_retrofit_table_add_duplicate_remove_and_errors(small_project: Path):
             assert app.problems == []
             assert app.project.interventions[1].ratio == 1.5
             # FRP mass per metre of the option, updated as typed: 1.5‰·0.3 m·3 m·1550 kg/m³
-            await pilot.pause()
-            cell = editor.table.get_row_at(1)[7]
-            assert str(cell) == f"{1.5e-3 * 0.3 * 3.0 * 1550:.2f}"
+            mass = f"{1.5e-3 * 0.3 * 3.0 * 1550:.2f}"
+            await settle(pilot, lambda: str(editor.table.get_row_at(1)[7]) == mass)
             await pilot.press("a")  # new option from the table
             await pilot.pause()
             assert len(editor.items) == 3  # focus is in the form: 'a' was typed, not a binding
             editor.table.focus()
+            await settle(pilot, lambda: app.focused is editor.table)
             await pilot.press("a")
-            await pilot.pause()
-            assert len(editor.items) == 4
+            await settle(pilot, lambda: len(editor.items) == 4)
 
     run_async(body)
 
@@ -172,15 +175,14 @@ def test_run_to_the_end_matches_batch_mode(small_project: Path, tmp_path: Path):
             assert app.outcome.stats.computed == 0 and app.outcome.stats.reused == 9
             # results: sorting, per record, history of the highlighted case
             await pilot.press("f9")
-            await pilot.pause()
-            assert app.focused is table
+            await settle(pilot, lambda: app.focused is table)
             await pilot.press("right", "right", "right", "s")  # by FRP mass
             assert [app.outcome.results["cases"][i]["frp_mass"] for i in table.order] == sorted(
                 c["frp_mass"] for c in app.outcome.results["cases"]
             )
             await pilot.press("enter")
-            await pilot.pause()
-            assert app.query_one("#results-tabs", TabbedContent).active == "res-records"
+            results_tabs = app.query_one("#results-tabs", TabbedContent)
+            await settle(pilot, lambda: results_tabs.active == "res-records")
             await pilot.press("f10")
             await after_workers(pilot, lambda: history_shown(app))
             assert "under art-" in plain(app.query_one("#hist-info", Static))
@@ -261,8 +263,7 @@ def test_save_and_reload_gives_the_same_project(small_project: Path, tmp_path: P
             await type_into(pilot, "#f-project-notes-control", "north facade: rocks")
             assert app.modified()
             await pilot.press("ctrl+s")
-            await pilot.pause()
-            assert not app.modified()
+            await settle(pilot, lambda: not app.modified())
             again = load_project(small_project).project
             assert again == app.project
             assert again.project.notes == "north facade: rocks"
@@ -284,15 +285,15 @@ def test_new_project_asks_for_a_file_name(tmp_path: Path, monkeypatch: pytest.Mo
             assert app.project == load_project_text(template_text(), "t.yaml").project
             assert len(app.project.expand_interventions()) == 19
             await pilot.press("ctrl+s")
-            await pilot.pause()
+            await settle(pilot, lambda: bool(app.screen.query("#path-input")))
             box = app.screen.query_one("#path-input", Input)
             box.value = str(target)
             await pilot.press("enter")
-            await pilot.pause()
-            assert "no such directory" in plain(app.screen.query_one("#path-error", Static))
+            error = app.screen.query_one("#path-error", Static)
+            await settle(pilot, lambda: "no such directory" in plain(error))
             target.parent.mkdir()
             await pilot.press("enter")
-            await pilot.pause()
+            await settle(pilot, lambda: app.path == target)
             assert app.path == target and target.exists()
             assert load_project(target).project == app.project
 
@@ -312,7 +313,7 @@ def test_export_pdf_and_help(small_project: Path, tmp_path: Path):
             await pilot.press("ctrl+r")
             await after_workers(pilot, lambda: not app.running and app.outcome is not None)
             await pilot.press("ctrl+e")
-            await pilot.pause()
+            await settle(pilot, lambda: bool(app.screen.query("#path-input")))
             box = app.screen.query_one("#path-input", Input)
             assert box.value == str(default_out_dir(small_project))
             box.value = str(export)
@@ -320,24 +321,23 @@ def test_export_pdf_and_help(small_project: Path, tmp_path: Path):
             await after_workers(pilot, lambda: (export / "results.json").exists())
             assert (export / "report.pdf").exists()
             # help: F1 anywhere, ? outside free-text fields (also in a number field)
+            thickness = app.query_one("#f-wall-thickness-control", Input)
             await pilot.press("f2")
+            await settle(pilot, lambda: app.focused is thickness)
             await pilot.press("question_mark")
-            await pilot.pause()
-            assert isinstance(app.screen, HelpScreen)
-            assert app.query_one("#f-wall-thickness-control", Input).value == "0.3"
+            await settle(pilot, lambda: isinstance(app.screen, HelpScreen))
+            assert thickness.value == "0.3"
             await pilot.press("escape")
-            await pilot.pause()
+            await settle(pilot, lambda: not isinstance(app.screen, HelpScreen))
             await pilot.press("f1")
-            await pilot.pause()
-            assert isinstance(app.screen, HelpScreen)
+            await settle(pilot, lambda: isinstance(app.screen, HelpScreen))
             await pilot.press("escape")
-            await pilot.pause()
-            assert not isinstance(app.screen, HelpScreen)
+            await settle(pilot, lambda: not isinstance(app.screen, HelpScreen))
             await pilot.press("f5")
-            await pilot.pause()
+            table = app.query_one("#materials-editor DataTable")
+            await settle(pilot, lambda: app.focused is table)
             await pilot.press("question_mark")
-            await pilot.pause()
-            assert isinstance(app.screen, HelpScreen)
+            await settle(pilot, lambda: isinstance(app.screen, HelpScreen))
 
     run_async(body)
     assert (export / "report.pdf").read_bytes().startswith(b"%PDF")
@@ -359,9 +359,8 @@ def test_invalid_file_opens_with_the_error_next_to_the_field(tmp_path: Path):
                 "expected a number in [5, 30], found 40"
             )
             await pilot.press("ctrl+r")
-            await pilot.pause()
             log = app.query_one("#run-log")
-            assert "cannot run: wall.unit_weight" in "".join(str(line.text) for line in log.lines)
+            await settle(pilot, lambda: "cannot run: wall.unit_weight" in log_text(log))
 
     run_async(body)
 
@@ -375,14 +374,12 @@ def test_quit_asks_when_there_are_unsaved_changes(small_project: Path):
             await pilot.pause()
             await type_into(pilot, "#f-wall-height-control", "4")
             await pilot.press("ctrl+q")
-            await pilot.pause()
-            assert isinstance(app.screen, ConfirmQuit)
+            await settle(pilot, lambda: isinstance(app.screen, ConfirmQuit))
             await pilot.press("escape")  # stay
-            await pilot.pause()
-            assert not isinstance(app.screen, ConfirmQuit) and app.return_code is None
+            await settle(pilot, lambda: not isinstance(app.screen, ConfirmQuit))
+            assert app.return_code is None
             await pilot.press("ctrl+q", "d")  # discard and quit
-            await pilot.pause()
-            assert app.return_code == 0
+            await settle(pilot, lambda: app.return_code == 0)
         assert load_project(small_project).project.wall.height == 3.0  # not saved
 
     run_async(body)
