@@ -16,6 +16,7 @@ from collections.abc import Sequence
 from typing import NoReturn
 
 from frp_assess import __version__
+from frp_assess.config.problems import problems_of
 from frp_assess.errors import Cancelled, InputError
 from frp_assess.text_safety import plain
 
@@ -78,8 +79,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         return code
     except BrokenPipeError:
         return _closed_pipe()
-    except InputError as exc:
-        return _fail(str(exc))
+    except InputError as exc:  # every problem of a file, one line each
+        for problem in problems_of(exc)[:-1]:
+            _fail(str(problem))
+        return _fail(str(problems_of(exc)[-1]))
     except (KeyboardInterrupt, Cancelled):
         print("frp-assess: interrupted; finished results are kept in the cache", file=sys.stderr)
         return 130

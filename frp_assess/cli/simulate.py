@@ -9,6 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
+from frp_assess.cli.arg_types import number_in
 from frp_assess.cli.output import plain_line
 from frp_assess.cli.wall_args import add_model_arguments, add_record_arguments, build_model
 from frp_assess.errors import InputError
@@ -27,7 +28,13 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     add_model_arguments(p)
     add_record_arguments(p, many=False)
-    p.add_argument("--scale", type=float, default=1.0, metavar="C", help="record multiplier C")
+    p.add_argument(
+        "--scale",
+        type=number_in(0, 1e6, low_open=True),
+        default=1.0,
+        metavar="C",
+        help="record multiplier C",
+    )
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--out", metavar="CSV", help="write θ(t), θ'(t), strain(t) to this CSV file")
     p.set_defaults(handler=run)
