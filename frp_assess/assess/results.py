@@ -361,28 +361,37 @@ def results_json(results: dict[str, Any]) -> str:
     return json.dumps(results, indent=1, ensure_ascii=False, allow_nan=False) + "\n"
 
 
+#: results.csv columns: each names its statistic and its unit (g: acceleration in g)
 CSV_FIELDS = [
     "case",
     "material",
     "position",
-    "ratio",
+    "ratio_permille",
     "record",
-    "pga",
-    "collapse_multiplier",
-    "a_dyn",
-    "q",
-    "mean_a_dyn",
-    "capacity_demand",
-    "improvement",
-    "frp_mass",
-    "frp_cost",
-    "meets_target",
-    "rank",
+    "record_pga_g",
+    "record_collapse_multiplier",
+    "record_a_dyn_g",
+    "record_q",
+    "case_mean_a_dyn_g",
+    "case_least_favourable_a_dyn_g",
+    "case_design_a_dyn_g",
+    "case_capacity_demand_design",
+    "case_improvement_design",
+    "case_frp_mass_kg",
+    "case_frp_cost",
+    "case_meets_target",
+    "case_rank",
 ]
 
 
 def results_csv(results: dict[str, Any]) -> str:
-    """One row per (case, record); accelerations in g, mass kg, cost in the currency."""
+    """One row per (case, record); accelerations in g, mass kg, cost in the currency.
+
+    ``record_*`` columns belong to the row's record, ``case_*`` ones to the whole case (the
+    same on every row of the case): mean and least favourable over the records, and the
+    design value (the mean with 7 or more records, else the least favourable) that the
+    capacity/demand ratio and the improvement use.
+    """
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(CSV_FIELDS)
@@ -400,6 +409,8 @@ def results_csv(results: dict[str, Any]) -> str:
                     "" if r["a_dyn"] is None else f"{r['a_dyn']:.6g}",
                     "" if r["q"] is None else f"{r['q']:.6g}",
                     f"{c['mean_a_dyn']:.6g}",
+                    f"{c['min_a_dyn']:.6g}",
+                    f"{c['design_a_dyn']:.6g}",
                     f"{c['capacity_demand']:.6g}",
                     f"{c['improvement']:.6g}",
                     f"{c['frp_mass']:.6g}",

@@ -27,17 +27,20 @@ def run(args: argparse.Namespace) -> int:
     if args.jobs is not None and args.jobs < 1:
         raise InputError(f"expected at least 1 job, found {args.jobs}", key="--jobs")
     path = Path(args.file) if args.file else None
-    if path is not None:
-        if path.is_dir():
-            raise InputError(f"{path} is a directory", file=str(path))
-        if path.exists():
-            from frp_assess.config.loader import parse_yaml
+    if path is not None and (path.exists() or path.is_symlink()):
+        from frp_assess.config.loader import parse_yaml
+        from frp_assess.config.yaml_source import read_text_file
+        from frp_assess.study.schema import looks_like_study
 
-            try:
-                text = path.read_text(encoding="utf-8")
-            except (OSError, UnicodeDecodeError) as exc:
-                raise InputError(f"cannot read the project file: {exc}", file=str(path)) from None
-            parse_yaml(text, str(path))  # a YAML syntax error: one line, exit 2
+        # a folder, FIFO, device or oversized file: one line, exit 2, before any read
+        text = read_text_file(path, "project file")
+        data, _lines = parse_yaml(text, str(path))  # a YAML syntax error: one line, exit 2
+        if looks_like_study(data):
+            raise InputError(
+                "is a study file: the terminal UI edits project files; run it with "
+                f"`frp-assess study {path}` (check it with `frp-assess validate`)",
+                file=str(path),
+            )
     from frp_assess.tui.app import run_tui  # Textual is imported only for this command
 
     return run_tui(path, jobs=args.jobs)
