@@ -174,6 +174,134 @@ def _turning_peak(
 
 
 @njit(cache=True, nogil=True)
+def _settled(
+    resting: bool,
+    theta: float,
+    omega: float,
+    s: float,
+    intact_pos: bool,
+    intact_neg: bool,
+    prm: KernelParams,
+) -> bool:
+    """With no more ground motion: the wall is at rest, or can no longer fall."""
+    return resting or cannot_fall(theta, omega, s, intact_pos, intact_neg, prm)
+
+
+@njit(cache=True, nogil=True)
+def _record_sample(
+    hist_theta: np.ndarray,
+    hist_omega: np.ndarray,
+    hist_bar: np.ndarray,
+    k: int,
+    theta: float,
+    omega: float,
+    bar_acting: bool,
+) -> None:
+    """Store sample k of the history: θ, θ' and whether an intact bar is stretched."""
+    hist_theta[k] = theta
+    hist_omega[k] = omega
+    hist_bar[k] = 1.0 if bar_acting else 0.0
+
+
+@njit(cache=True, nogil=True)
+def _verdict_at_end(theta: float, last_alpha_up: float, prm: KernelParams) -> tuple[int, float]:
+    """(fate, collapse time) of the α-based rules when the input ends without a decision:
+    `end-of-record` collapses when |θ| ≥ α then (at the last upward crossing of α)."""
+    if prm.collapse_mode == COLLAPSE_END_OF_RECORD and abs(theta) >= prm.alpha:
+        return FATE_EXCEEDED, last_alpha_up
+    return FATE_STANDING, math.nan
+
+
+@njit(cache=True, nogil=True)
+def _step_length(h: float, rest: float, equal: bool) -> float:
+    """The step to take when ``rest`` [s] remain to the next sample and h is proposed: the
+    rest itself when h nearly reaches it, else h, or (``equal``) the rest divided into equal
+    steps no longer than h, so that no sliver is left before the sample."""
+    if h >= rest * (1.0 - _SLIVER):
+        return rest
+    if equal:
+        return rest / math.ceil(rest / h)
+    return h
+
+
+@njit(cache=True, nogil=True)
+def _step_size(err: float, hh: float, h: float, exponent: float) -> tuple[bool, float]:
+    """Error control: (accept the step of length hh, the next step length [s]).
+
+    A step is accepted when err ≤ 1 (NaN never); the next one is hh·0.9·err^exponent within
+    [0.2, 5]·hh.
+    """
+    if not err <= 1.0:
+        shrink = STEP_SHRINK_MIN
+        if err < 1e300:
+            shrink = max(STEP_SHRINK_MIN, STEP_SAFETY * err**exponent)
+        return False, hh * shrink
+    grow = STEP_GROWTH_MAX
+    if err > 0.0:
+        grow = min(STEP_GROWTH_MAX, max(STEP_SHRINK_MIN, STEP_SAFETY * err**exponent))
+    return True, hh * grow
+
+
+@njit(cache=True, nogil=True)
+def _first_event(
+    y0: float,
+    y1: float,
+    c: tuple[float, float, float, float],
+    r1: float,
+    r2: float,
+    bar_on: bool,
+    limit: float,
+    prm: KernelParams,
+) -> tuple[int, float, float]:
+    """The earliest event on the step's dense output ``c`` (from y0 = s·θ to y1):
+    (kind, u ∈ (0, 1], level)."""
+    c0, c1, c2, c3 = c
+    ymin = min(y0, y1)
+    ymax = max(y0, y1)
+    for r in (r1, r2):
+        if r > 0.0:
+            yr = ev.cubic(c0, c1, c2, c3, r)
+            ymin = min(ymin, yr)
+            ymax = max(ymax, yr)
+    event = _NO_EVENT
+    u_event = 2.0
+    level = 0.0
+    if ymin <= 0.0:
+        u = ev.first_crossing(c0, c1, c2, c3, r1, r2, 0.0, False)
+        if u >= 0.0:
+            event, u_event, level = _IMPACT, u, 0.0
+    if bar_on and ymax >= prm.theta_max:
+        u = ev.first_crossing(c0, c1, c2, c3, r1, r2, prm.theta_max, True)
+        if 0.0 <= u < u_event:
+            event, u_event, level = _RUPTURE, u, prm.theta_max
+    if ymax >= limit:
+        u = ev.first_crossing(c0, c1, c2, c3, r1, r2, limit, True)
+        if 0.0 <= u < u_event:
+            event, u_event, level = _LIMIT, u, limit
+    return event, u_event, level
+
+
+@njit(cache=True, nogil=True)
+def _peaks_at_rest(
+    theta: float,
+    omega: float,
+    s: float,
+    intact_pos: bool,
+    intact_neg: bool,
+    resting: bool,
+    peak: float,
+    peak_bar: float,
+    prm: KernelParams,
+) -> tuple[float, float]:
+    """(peak, peak with an intact bar) once the wall can no longer fall: the rotation of the
+    rocking still to come is the turning angle its energy reaches (:func:`.fate.remaining_peak`)."""
+    if resting:
+        return peak, peak_bar
+    extra, with_bar = remaining_peak(theta, omega, s, intact_pos, intact_neg, prm)
+    return max(peak, extra), (max(peak_bar, extra) if with_bar else peak_bar)
+
+
+@njit(cache=True, nogil=True)
 def simulate(
     acc: np.ndarray,
     dt: float,
@@ -242,14 +370,12 @@ def simulate(
             if i - (n_input - 1) >= n_free_max:
                 status = STATUS_FREE_VIBRATION_UNDECIDED
                 break
-            if resting or cannot_fall(theta, omega, s, intact_pos, intact_neg, prm):
+            if _settled(resting, theta, omega, s, intact_pos, intact_neg, prm):
                 fate = FATE_AT_REST
                 decided_time = i * dt
-                if not resting:
-                    extra, with_bar = remaining_peak(theta, omega, s, intact_pos, intact_neg, prm)
-                    peak = max(peak, extra)
-                    if with_bar:
-                        peak_bar = max(peak_bar, extra)
+                peak, peak_bar = _peaks_at_rest(
+                    theta, omega, s, intact_pos, intact_neg, resting, peak, peak_bar, prm
+                )
                 break
         t_i = i * dt
         ua = acc[i] * inv_g if i < n_rec else 0.0
@@ -274,76 +400,40 @@ def simulate(
             if need_a:
                 a1 = acceleration(theta, s, u0, k_s, prm)
                 need_a = False
-            rest_of_interval = dt - x
-            hh = h if adaptive else h_fixed
-            if hh >= rest_of_interval * (1.0 - _SLIVER):
-                hh = rest_of_interval
-            elif adaptive:
-                # equal steps to the next sample: no sliver left before it
-                hh = rest_of_interval / math.ceil(rest_of_interval / hh)
+            hh = _step_length(h if adaptive else h_fixed, dt - x, adaptive)
             th1, om1, a_end, err = step(theta, omega, hh, u0, slope, s, k_s, a1, prm)
             if adaptive:
-                if not err <= 1.0:  # also NaN
+                accepted, h = _step_size(err, hh, h, exponent)
+                if not accepted:
                     n_rejected += 1
-                    shrink = STEP_SHRINK_MIN
-                    if err < 1e300:
-                        shrink = max(STEP_SHRINK_MIN, STEP_SAFETY * err**exponent)
-                    h = hh * shrink
                     if h < MIN_STEP_FRACTION * dt:
                         status = STATUS_STEP_UNDERFLOW
                         break
                     continue
-                grow = STEP_GROWTH_MAX
-                if err > 0.0:
-                    grow = min(STEP_GROWTH_MAX, max(STEP_SHRINK_MIN, STEP_SAFETY * err**exponent))
-                h = hh * grow
             n_steps += 1
 
-            # dense output of y = s·θ on the step, u ∈ [0, 1]
-            c = ev.hermite(s * theta, s * th1, s * omega * hh, s * om1 * hh)
-            c0, c1, c2, c3 = c
-            r1, r2 = ev.critical_points(c1, c2, c3)
+            # dense output of y = s·θ on the step, u ∈ [0, 1], and the first event on it
             y0 = s * theta
             y1 = s * th1
-            ymin = min(y0, y1)
-            ymax = max(y0, y1)
-            if r1 > 0.0:
-                yr = ev.cubic(c0, c1, c2, c3, r1)
-                ymin = min(ymin, yr)
-                ymax = max(ymax, yr)
-            if r2 > 0.0:
-                yr = ev.cubic(c0, c1, c2, c3, r2)
-                ymin = min(ymin, yr)
-                ymax = max(ymax, yr)
+            c = ev.hermite(y0, y1, s * omega * hh, s * om1 * hh)
+            r1, r2 = ev.critical_points(c[1], c[2], c[3])
+            event, u_event, level = _first_event(y0, y1, c, r1, r2, bar_on, limit, prm)
 
-            event = _NO_EVENT
-            u_event = 2.0
-            level = 0.0
-            if ymin <= 0.0:
-                u = ev.first_crossing(c0, c1, c2, c3, r1, r2, 0.0, False)
-                if u >= 0.0:
-                    event, u_event, level = _IMPACT, u, 0.0
-            if bar_on and ymax >= prm.theta_max:
-                u = ev.first_crossing(c0, c1, c2, c3, r1, r2, prm.theta_max, True)
-                if 0.0 <= u < u_event:
-                    event, u_event, level = _RUPTURE, u, prm.theta_max
-            if ymax >= limit:
-                u = ev.first_crossing(c0, c1, c2, c3, r1, r2, limit, True)
-                if 0.0 <= u < u_event:
-                    event, u_event, level = _LIMIT, u, limit
+            # the largest s·θ of the step up to the event (or its end)
+            u_end = 1.0 if event == _NO_EVENT else u_event
+            floor = peak_bar if bar_on else peak
+            step_max = max(
+                y0,
+                y1 if event == _NO_EVENT else level,
+                _turning_peak(
+                    theta, omega, a1, hh, u_end, u0, slope, s, k_s, floor, c, r1, r2, prm
+                ),
+            )
+            peak = max(peak, step_max)
+            if bar_on:
+                peak_bar = max(peak_bar, step_max)
 
             if event == _NO_EVENT:
-                floor = peak_bar if bar_on else peak
-                step_max = max(
-                    y0,
-                    y1,
-                    _turning_peak(
-                        theta, omega, a1, hh, 1.0, u0, slope, s, k_s, floor, c, r1, r2, prm
-                    ),
-                )
-                peak = max(peak, step_max)
-                if bar_on:
-                    peak_bar = max(peak_bar, step_max)
                 if y0 < prm.alpha <= y1:
                     last_alpha_up = t_i + x + hh * (prm.alpha - y0) / (y1 - y0)
                 if y1 < 0.0:
@@ -358,13 +448,12 @@ def simulate(
                     a1 = a_end
                     need_a = not adaptive
                 x = x + hh
-                if free and cannot_fall(theta, omega, s, intact_pos, intact_neg, prm):
+                if free and _settled(resting, theta, omega, s, intact_pos, intact_neg, prm):
                     fate = FATE_AT_REST
                     decided_time = t_i + min(x, dt)
-                    extra, with_bar = remaining_peak(theta, omega, s, intact_pos, intact_neg, prm)
-                    peak = max(peak, extra)
-                    if with_bar:
-                        peak_bar = max(peak_bar, extra)
+                    peak, peak_bar = _peaks_at_rest(
+                        theta, omega, s, intact_pos, intact_neg, resting, peak, peak_bar, prm
+                    )
                     break
                 continue
 
@@ -373,17 +462,6 @@ def simulate(
             if events > MAX_EVENTS_PER_INTERVAL:
                 status = STATUS_EVENT_OVERFLOW
                 break
-            floor = peak_bar if bar_on else peak
-            step_max = max(
-                y0,
-                level,
-                _turning_peak(
-                    theta, omega, a1, hh, u_event, u0, slope, s, k_s, floor, c, r1, r2, prm
-                ),
-            )
-            peak = max(peak, step_max)
-            if bar_on:
-                peak_bar = max(peak_bar, step_max)
             tau, om_e, _resid = ev.locate_level(
                 theta, omega, a1, hh, u_event * hh, u0, slope, s, k_s, level, prm
             )
@@ -409,32 +487,24 @@ def simulate(
                 collapse_time = t_event
                 decided_time = t_event
                 break
-            if free and (resting or cannot_fall(theta, omega, s, intact_pos, intact_neg, prm)):
+            if free and _settled(resting, theta, omega, s, intact_pos, intact_neg, prm):
                 fate = FATE_AT_REST
                 decided_time = t_event
-                if not resting:
-                    extra, with_bar = remaining_peak(theta, omega, s, intact_pos, intact_neg, prm)
-                    peak = max(peak, extra)
-                    if with_bar:
-                        peak_bar = max(peak_bar, extra)
+                peak, peak_bar = _peaks_at_rest(
+                    theta, omega, s, intact_pos, intact_neg, resting, peak, peak_bar, prm
+                )
                 break
         if status != STATUS_OK or fate >= 0:
             break
         if record_history and i + 1 < hist_theta.shape[0]:
-            hist_theta[i + 1] = theta
-            hist_omega[i + 1] = omega
-            on = intact_pos if s > 0.0 else intact_neg
-            hist_bar[i + 1] = 1.0 if on and not resting else 0.0
+            bar_acting = (intact_pos if s > 0.0 else intact_neg) and not resting
+            _record_sample(hist_theta, hist_omega, hist_bar, i + 1, theta, omega, bar_acting)
             samples = i + 2
         i += 1
 
     if fate < 0 and status == STATUS_OK:
         decided_time = (n_input - 1) * dt
-        if prm.collapse_mode == COLLAPSE_END_OF_RECORD and abs(theta) >= prm.alpha:
-            fate = FATE_EXCEEDED
-            collapse_time = last_alpha_up
-        else:
-            fate = FATE_STANDING
+        fate, collapse_time = _verdict_at_end(theta, last_alpha_up, prm)
     return Outcome(
         status,
         fate,
