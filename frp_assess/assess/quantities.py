@@ -16,7 +16,7 @@ class Quantity:
 
 
 def layers(position: Position) -> int:
-    """Layers of bars installed: 1 centred, 2 external (one on each face, MODEL.md §2)."""
+    """Layers of bars installed: 1 centred, 2 external (one on each face, docs/model.md §2)."""
     return 1 if position == "centred" else 2
 
 

@@ -1,4 +1,4 @@
-"""Built-in libraries: FRP bar materials (MODEL.md §7) and masonry unit weights.
+"""Built-in libraries: FRP bar materials (docs/model.md §7) and masonry unit weights.
 
 Plain frozen dataclasses, in practitioners' units (GPa, kg/m³, EUR/kg, kN/m³).  A project file
 may add or override FRP materials under ``materials:``; masonry types are chosen by key under
@@ -57,7 +57,7 @@ class Masonry:
 _PRODUCER = "typical producer data"
 _PRICE_NOTE = "price indicative (EUR/kg, bars only), replace with a quotation"
 
-#: FRP bar materials of MODEL.md §7, by key.
+#: FRP bar materials of docs/model.md §7, by key.
 FRP_MATERIALS: dict[str, FrpMaterial] = {
     m.name: m
     for m in (

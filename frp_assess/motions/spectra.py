@@ -317,7 +317,7 @@ def ntc2018_spectrum(
 
 
 #: The paper's spectra: name -> (a_g·S [g], T_B [s], T_C [s]).  The plateau 2.5·a_g·S and
-#: T_D = 2.0 s are assumptions (MODEL.md §6): the paper does not state them.
+#: T_D = 2.0 s are assumptions (docs/model.md §6): the paper does not state them.
 PRESETS: dict[str, tuple[float, float, float]] = {
     "A1": (0.106, 0.103, 0.309),
     "A2": (0.106, 0.146, 0.437),

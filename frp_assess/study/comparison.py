@@ -1,4 +1,4 @@
-"""Every trend and headline number the paper states (MODEL.md §8) against a reproduction.
+"""Every trend and headline number the paper states (docs/model.md §8) against a reproduction.
 
 Input: the rows of a study's ``summary.csv`` (:func:`frp_assess.study.run.read_summary`).
 Each trend is measured as the share of the like-for-like comparisons in the study that go the
@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 Row = dict[str, str]
 
-#: the reasons a reproduction can differ from the paper (MODEL.md §3, §6, §7)
+#: the reasons a reproduction can differ from the paper (docs/model.md §3, §6, §7)
 REASONS = {
     "materials": "the paper does not state E and ε_u of its bars: the library's values are "
     "used (GFRP 46 GPa/1.5 %, BFRP 50 GPa/2.0 %, CFRP 150 GPa/1.3 %; ε_max = 0.5·ε_u)",
@@ -143,7 +143,7 @@ _RETRO = ("material", "position", "ratio_permille")
 
 
 def compare(rows: Sequence[Row]) -> list[ComparisonRow]:
-    """The comparison table of MODEL.md §8 for the summary ``rows`` of a study."""
+    """The comparison table of docs/model.md §8 for the summary ``rows`` of a study."""
     urm = [r for r in rows if not r["material"]]
     rf = [r for r in rows if r["material"]]
     out: list[ComparisonRow] = []
@@ -374,7 +374,7 @@ def _headlines(rf: Sequence[Row]) -> list[ComparisonRow]:
 
 def markdown_table(rows: Sequence[ComparisonRow]) -> str:
     """The comparison as a Markdown table."""
-    head = "| claim (MODEL.md §8) | paper | reproduction | verdict | deviation | why |\n"
+    head = "| claim (docs/model.md §8) | paper | reproduction | verdict | deviation | why |\n"
     head += "|---|---|---|---|---|---|\n"
     body = "".join(
         f"| {r.claim} | {r.paper} | {r.reproduction} | {r.verdict} | {r.deviation} | {r.reason} |\n"

@@ -76,7 +76,7 @@ class Case:
 
 
 def resolve_materials(study: StudyFile) -> dict[str, StudyMaterial]:
-    """The materials the study uses: the library (MODEL.md §7) overridden by ``materials``."""
+    """The materials the study uses: the library (docs/model.md §7) overridden by ``materials``."""
     table: dict[str, StudyMaterial] = {
         k: StudyMaterial(k, m.elastic_modulus, m.ultimate_strain, m.density)
         for k, m in FRP_MATERIALS.items()

@@ -1,7 +1,7 @@
 """Sensitivity of a study's results to the model conventions the paper leaves open.
 
 Runs the same study once per variant of :data:`VARIANTS` (restitution convention, collapse
-criterion, rupture rule; MODEL.md §3), each in its own sub-directory of ``out_dir`` sharing
+criterion, rupture rule; docs/model.md §3), each in its own sub-directory of ``out_dir`` sharing
 one IDA cache, and returns the improvement of every reinforced case per variant.
 """
 

@@ -1,5 +1,5 @@
 """Elastic spectra (frp_assess.motions.spectra): EN 1998-1 §3.2.2.2, NTC 2018 §3.2.3.2.1,
-user tables, the paper's presets (MODEL.md §6) and the CLI text form (issue 3 item 1)."""
+user tables, the paper's presets (docs/model.md §6) and the CLI text form (issue 3 item 1)."""
 
 from __future__ import annotations
 
@@ -104,7 +104,7 @@ def test_ntc_topography(topo):
 
 @pytest.mark.parametrize("name", sorted(PRESETS))
 def test_presets(name):
-    """MODEL.md §6: a_g·S = 0.106 g, plateau 2.5·a_g·S on [T_B, T_C], T_D = 2 s."""
+    """docs/model.md §6: a_g·S = 0.106 g, plateau 2.5·a_g·S on [T_B, T_C], T_D = 2 s."""
     ags, tb, tc = PRESETS[name]
     s = preset_spectrum(name.lower())
     assert s.pga_g == ags and s.T_B == tb and s.T_C == tc and s.T_D == 2.0
