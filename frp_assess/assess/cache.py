@@ -161,7 +161,7 @@ def parse_entry(text: str) -> IdaResult:
     collapsed = [data[k] is not None for k in ("collapse_multiplier", "a_dyn", "q")]
     if any(collapsed) and not all(collapsed):
         raise DamagedEntry("collapse_multiplier, a_dyn and q are not all set or all null")
-    return IdaResult(**values)
+    return IdaResult(**values)  # type: ignore[arg-type]  # each value checked above
 
 
 class IdaCache:

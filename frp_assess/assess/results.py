@@ -12,7 +12,13 @@ import numpy as np
 
 from frp_assess import __version__
 from frp_assess.assess.code_check import KinematicCheck
-from frp_assess.assess.inputs import UNREINFORCED, AssessmentInputs, Material, Option
+from frp_assess.assess.inputs import (
+    UNREINFORCED,
+    ArtificialRecords,
+    AssessmentInputs,
+    Material,
+    Option,
+)
 from frp_assess.assess.quantities import quantity_for
 from frp_assess.assess.ranking import RANKING_RULE, Rankable, rank_options
 from frp_assess.assess.runner import CaseSummary, DesignResult, design_value_rule
@@ -152,7 +158,7 @@ def seismic_dict(inputs: AssessmentInputs, seismic: SeismicInput) -> dict[str, A
     sp = inputs.spectrum
     rep = seismic.compliance
     gen = None
-    if not seismic.recorded:
+    if isinstance(inputs.records, ArtificialRecords):
         a = inputs.records
         gen = {
             "method": "SIMQKE",

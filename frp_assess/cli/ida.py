@@ -101,14 +101,14 @@ def run(args: argparse.Namespace) -> int:
             f"K = {model.K:.3g}, θ_max = {model.theta_max:.4g} rad"
         )
     )
-    cells = []
+    cells: list[list[str]] = []
     for r in rows:
         if r["collapse_multiplier"] is None:
-            cells.append([r["record"], f"{r['pga']:.4f}", "no collapse ≤ C_max", "—", "—"])
+            cells.append([str(r["record"]), f"{r['pga']:.4f}", "no collapse ≤ C_max", "—", "—"])
         else:
             cells.append(
                 [
-                    r["record"],
+                    str(r["record"]),
                     f"{r['pga']:.4f}",
                     f"{r['collapse_multiplier']:.4f}",
                     f"{r['a_dyn']:.4f}",

@@ -77,7 +77,7 @@ def summary(loaded: LoadedProject) -> list[str]:
         records = f"{len(files)} file(s), {scaled}"
     options = p.expand_interventions()
     names = ", ".join(o.name or "" for o in options[:4]) + (", ..." if len(options) > 4 else "")
-    a = p.analysis
+    an = p.analysis
     lines = [
         f"{loaded.path}: OK — {p.project.name}",
         f"  wall: B = {w.thickness:g} m, H = {w.height:g} m, L = {w.length:g} m, "
@@ -86,8 +86,9 @@ def summary(loaded: LoadedProject) -> list[str]:
         f"  records: {records}",
         f"  options: {len(options)} after expansion"
         + (f" ({names})" if options else " (only the unreinforced wall)"),
-        f"  analysis: restitution {a.restitution}, rupture {a.rupture}, collapse "
-        f"{a.collapse}, target capacity/demand {a.target:g}",
+        f"  analysis: restitution {an.restitution}, rupture {an.rupture}, collapse "
+        f"{an.collapse}, integration tolerance {an.integration.tolerance:g}, target "
+        f"capacity/demand {an.target:g}",
     ]
     if p.design is not None:
         d = p.design

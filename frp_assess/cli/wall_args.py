@@ -20,6 +20,7 @@ from frp_assess.dynamics import (
     Wall,
 )
 from frp_assess.dynamics.rebars import DEFAULT_STRAIN_FACTOR
+from frp_assess.dynamics.restitution import Restitution
 from frp_assess.dynamics.rocking import TOLERANCE_RANGE
 from frp_assess.errors import InputError
 from frp_assess.motions.readers import FORMATS, UNITS
@@ -129,9 +130,11 @@ def _positive(value: float, option: str, unit: str) -> float:
     return value
 
 
-def parse_restitution(text: str) -> str | float:
-    if text in ("energy", "velocity"):
-        return text
+def parse_restitution(text: str) -> Restitution:
+    if text == "energy":
+        return "energy"
+    if text == "velocity":
+        return "velocity"
     try:
         value = float(text)
     except ValueError:

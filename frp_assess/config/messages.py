@@ -83,7 +83,8 @@ def locate(root: type[BaseModel], loc: Loc) -> Located:
     field: FieldInfo | None = None
     parent: type[BaseModel] | None = None
     path: list[str | int] = []
-    for elem in loc:
+    for item in loc:
+        elem: str | int | None = item
         bare, _ = _strip(ann)
         while _is_union(bare):
             members = [m for m in get_args(bare) if m is not type(None)]

@@ -29,15 +29,15 @@ from pydantic import (
 from pydantic_core import PydanticCustomError
 
 from frp_assess.config.library import FRP_MATERIALS, MASONRY, FrpMaterial, did_you_mean
+from frp_assess.dynamics.rebars import POSITIONS, Position
 from frp_assess.dynamics.rocking import (
     DEFAULT_TOLERANCE,
     TOLERANCE_RANGE,
     CollapseRule,
     RuptureRule,
 )
+from frp_assess.dynamics.wall import Mechanism
 
-Position = Literal["centred", "external"]
-Mechanism = Literal["one-sided", "two-sided"]
 GroundType = Literal["A", "B", "C", "D", "E"]
 
 #: confidence factor FC of Circolare 2019 §C8.5.4 by knowledge level
@@ -157,7 +157,7 @@ class ProjectInfo(_Model):
 
 # ------------------------------------------------------------------------------------ wall
 class WallSpec(_Model):
-    """The masonry wall, a rigid rocking block (MODEL.md §1)."""
+    """The masonry wall, a rigid rocking block (docs/model.md §1)."""
 
     thickness: Number = Field(gt=0, le=5, description="Thickness B [m], 0 < B <= 5, < height.")
     height: Number = Field(
@@ -247,7 +247,7 @@ class PresetSpectrum(_Model):
     """One of the paper's spectra (a_g·S = 0.106 g, EC8 shape)."""
 
     type: Literal["preset"] = Field(description="Spectrum kind.")
-    name: Literal["A1", "A2", "A3"] = Field(description="Preset A1, A2 or A3 (MODEL.md §6).")
+    name: Literal["A1", "A2", "A3"] = Field(description="Preset A1, A2 or A3 (docs/model.md §6).")
 
 
 class TableSpectrum(_Model):
@@ -513,7 +513,7 @@ Restitution = Annotated[
 
 
 class IdaSpec(_Model):
-    """The incremental dynamic analysis rule (MODEL.md §5)."""
+    """The incremental dynamic analysis rule (docs/model.md §5)."""
 
     step_ratio: Number = Field(
         1.10,
@@ -595,7 +595,7 @@ class DesignSpec(_Model):
 
     materials: list[str] = Field(min_length=1, description="Materials to design with.")
     positions: list[Position] = Field(
-        default_factory=lambda: ["centred", "external"],
+        default_factory=lambda: list(POSITIONS),
         min_length=1,
         description="Positions (both by default).",
     )

@@ -260,7 +260,8 @@ class RockingModel:
             strain = np.zeros(n)
             if self.rebars is not None:
                 strain = self.rebars.strain(self.wall, theta) * h_bar[:n]
-            hist = History(np.arange(n) * dt, theta, h_omega[:n].copy(), strain)
+            time = np.arange(n, dtype=np.float64) * dt
+            hist = History(time, theta, h_omega[:n].copy(), strain)
         ruptures = tuple(
             Rupture(float(r_time[i]), int(r_side[i])) for i in range(min(out.ruptures, 2))
         )

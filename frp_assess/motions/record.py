@@ -44,7 +44,7 @@ class Record:
 
     @property
     def time(self) -> NDArray[np.float64]:
-        return np.arange(self.npts) * self.dt
+        return np.arange(self.npts, dtype=np.float64) * self.dt
 
     @property
     def pga(self) -> float:

@@ -95,6 +95,10 @@ class Executor(Protocol):
         """Compute every task, calling ``on_result`` for each and ``progress(done)``."""
         ...  # pragma: no cover
 
+    def describe(self) -> str:
+        """Where the IDAs run, in a few words (the study's manifest)."""
+        ...  # pragma: no cover
+
 
 @dataclass
 class LocalExecutor:

@@ -38,12 +38,14 @@ from frp_assess.config.schema import (
     Number,
 )
 from frp_assess.config.yaml_source import parse_yaml, read_text_file
+from frp_assess.dynamics.rebars import POSITIONS
 from frp_assess.dynamics.rocking import (
     DEFAULT_TOLERANCE,
     TOLERANCE_RANGE,
     CollapseRule,
     RuptureRule,
 )
+from frp_assess.dynamics.wall import MECHANISMS
 from frp_assess.errors import InputError
 
 #: most cases of one study (the paper's Table 1 has 2,052)
@@ -204,8 +206,8 @@ class StudyFile(_Strict):
     materials: dict[str, MaterialSpec] = Field(
         default_factory=dict, description="materials added to / overriding the library"
     )
-    position: list[Position] = Field(default_factory=lambda: ["external"])
-    mechanism: list[Mechanism] = Field(default_factory=lambda: ["one-sided"])
+    position: list[Position] = Field(default_factory=lambda: [POSITIONS[1]])  # external
+    mechanism: list[Mechanism] = Field(default_factory=lambda: [MECHANISMS[0]])  # one-sided
     spectrum: list[str | SpectrumSpec] = Field(description="target spectra")
     records: RecordSetSpec = RecordSetSpec()
     model: ModelSpec = ModelSpec()
