@@ -8,7 +8,10 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
+import shutil
 import sys
+import tempfile
 from pathlib import Path
 
 from rich.console import Console
@@ -138,10 +141,19 @@ def run_generate(args: argparse.Namespace) -> int:
     out = Path(args.out)
     if out.exists() and not out.is_dir():
         raise InputError("exists and is not a folder", file=str(out), key="--out")
-    for record in records:
-        write_at2(record, out / f"{record.name}.AT2")
     report = check_compliance(records, spectrum, t1=args.t1)
-    atomic_write_text(out / "spectra.csv", spectra_csv(report, spectrum))
+    # the set is written into a staging folder inside --out and moved in file by file (renames
+    # on one file system): a full disk or an interrupt leaves no half-written set behind
+    out.mkdir(parents=True, exist_ok=True)
+    staging = Path(tempfile.mkdtemp(prefix=".records-staging-", dir=out))
+    try:
+        for record in records:
+            write_at2(record, staging / f"{record.name}.AT2")
+        atomic_write_text(staging / "spectra.csv", spectra_csv(report, spectrum))
+        for path in sorted(staging.iterdir()):
+            os.replace(path, out / path.name)
+    finally:
+        shutil.rmtree(staging, ignore_errors=True)
     console = Console()
     console.print(
         f"wrote {len(records)} records and spectra.csv to {out} "
