@@ -20,9 +20,8 @@ from frp_assess.cli.output import Column, make_console, print_table, user
 from frp_assess.cli.wall_args import TOLERANCE
 from frp_assess.errors import Cancelled, InputError
 from frp_assess.motions import ComplianceReport
-from frp_assess.numbers import fmt_against
+from frp_assess.numbers import fmt_against, numerical_check_text
 from frp_assess.output_set import FolderLock, check_out_dir
-from frp_assess.report.tables import numerical_check_text
 from frp_assess.text_safety import plain
 
 

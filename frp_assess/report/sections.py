@@ -8,6 +8,7 @@ from typing import Any
 from reportlab.lib.units import mm
 from reportlab.platypus import CondPageBreak, Flowable, KeepTogether, PageBreak
 
+from frp_assess.numbers import numerical_check_text
 from frp_assess.report import charts
 from frp_assess.report import tables as tb
 from frp_assess.report.flow import esc, gap, grid, key_value, markup, para
@@ -529,7 +530,7 @@ def method(results: Results) -> list[Flowable]:
             "small",
         )
     )
-    check = tb.numerical_check_text(results)
+    check = numerical_check_text(results)
     if check is not None:
         out.append(para(check, "small"))
     out.append(h2("7.2  Assumptions"))

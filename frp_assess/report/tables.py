@@ -298,29 +298,6 @@ COLLAPSE_WORDS = {
 }
 
 
-def numerical_check_text(results: Results) -> str | None:
-    """The verification run in one sentence, or None when it was not asked for."""
-    nc = results.get("numerical_check")
-    if not nc:
-        return None
-    head = (
-        f"Numerical check: every IDA was repeated at a 10× tighter integration tolerance "
-        f"({nc['check_tolerance']:g} instead of {nc['tolerance']:g}). "
-    )
-    if nc["fate_changed"]:
-        return head + (
-            f"For {nc['case']} under {nc['record']} a record collapsed in one run and not in "
-            f"the other: that result is ill-conditioned (sensitive to the integrator's "
-            f"round-off); {nc['changed_pairs']} of {nc['pairs']} multipliers moved by more "
-            "than the IDA tolerance."
-        )
-    return head + (
-        f"The largest change of a collapse multiplier was {nc['max_change']:.2%} "
-        f"({nc['case']}, {nc['record']}); {nc['changed_pairs']} of {nc['pairs']} "
-        "multipliers moved by more than the IDA tolerance."
-    )
-
-
 def model_rows(results: Results) -> list[list[str]]:
     m = results["model"]
     ida = m["ida"]

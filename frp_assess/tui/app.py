@@ -26,6 +26,7 @@ from frp_assess.assess.inputs import UNREINFORCED
 from frp_assess.assess.results import recommendation_text
 from frp_assess.config import Project
 from frp_assess.errors import InputError
+from frp_assess.numbers import numerical_check_text
 from frp_assess.tui.analysis_pane import AnalysisPane
 from frp_assess.tui.core.model import Problem
 from frp_assess.tui.core.opening import opening_data
@@ -379,7 +380,8 @@ class FrpAssessApp(App[None]):
                 "done",
                 f"{o.stats.computed} IDAs computed, {o.stats.reused} reused from the cache; "
                 f"recommended: {recommendation_text(o.results)}; results and report.pdf in "
-                f"{o.out_dir}/",
+                f"{o.out_dir}/"
+                + (f"\n{check}" if (check := numerical_check_text(o.results)) else ""),
             )
             self.show_outcome(o)
             self.notify("run finished: see the Results tab (F9)", title="Done")

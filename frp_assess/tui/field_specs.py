@@ -22,6 +22,7 @@ from frp_assess.config.schema import (
     DesignSpec,
     Ec8Spectrum,
     IdaSpec,
+    IntegrationSpec,
     Ntc2018Spectrum,
     PresetSpectrum,
     ProjectInfo,
@@ -181,6 +182,7 @@ SCALE_FIELD = choice(
 )
 
 IDA = (*AN, "ida")
+INTEGRATION = (*AN, "integration")
 ANALYSIS_FIELDS = (
     num((*AN, "restitution"), "Restitution", "or 0-1", AnalysisSpec, optional=True),
     choice(
@@ -199,6 +201,14 @@ ANALYSIS_FIELDS = (
     ),
     num((*AN, "strain_factor"), "Strain factor c", "-", AnalysisSpec, optional=True),
     num((*AN, "free_vibration_tail"), "Free tail", "s", AnalysisSpec, optional=True),
+    num((*INTEGRATION, "tolerance"), "Integration tol.", "-", IntegrationSpec, optional=True),
+    choice(
+        (*INTEGRATION, "verify"),
+        "Numerical check",
+        (("off", False), ("10x tighter", True)),
+        IntegrationSpec,
+        width=22,
+    ),
     num((*IDA, "step_ratio"), "IDA step ratio", "> 1", IdaSpec, optional=True),
     num((*IDA, "tolerance"), "IDA tolerance", "0-0.1", IdaSpec, optional=True),
     num((*IDA, "max_multiplier"), "IDA max C/C0", "", IdaSpec, optional=True),
