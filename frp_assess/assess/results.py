@@ -23,6 +23,7 @@ from frp_assess.assess.quantities import quantity_for
 from frp_assess.assess.ranking import RANKING_RULE, Rankable, rank_options
 from frp_assess.assess.runner import CaseSummary, DesignResult, design_value_rule
 from frp_assess.assess.seismic import SeismicInput
+from frp_assess.assess.statistics import fit_lognormal_fragility, record_statistics
 from frp_assess.assess.verification import NumericalCheck
 from frp_assess.dynamics import RockingModel
 from frp_assess.motions import G
@@ -65,6 +66,34 @@ def wall_dict(inputs: AssessmentInputs) -> dict[str, Any]:
     }
 
 
+def scatter_dict(summary: CaseSummary, names: list[str], demand: float) -> dict[str, Any]:
+    """How far the case's number can be trusted: record-to-record statistics of a_dyn [g]
+    (records without collapse at their C_max lower bound) and a lognormal fragility fitted
+    to the collapse accelerations (those records right-censored), with P(collapse) at the
+    demand a_g·S."""
+    collapsed = [a is not None for a in summary.a_dyn]
+    st = record_statistics(summary.a_dyn_bound, collapsed)
+    fragility = None
+    exact = [a for a in summary.a_dyn if a is not None]
+    if len(set(exact)) >= 2:
+        censored = [b for a, b in zip(summary.a_dyn, summary.a_dyn_bound, strict=True) if a is None]
+        fit = fit_lognormal_fragility(exact, censored)
+        fragility = {
+            "median": fit.median,
+            "beta": fit.beta,
+            "method": fit.method,
+            "p_collapse_at_demand": fit.probability(demand),
+        }
+    return {
+        "median_a_dyn": st.median,
+        "std_a_dyn": st.std,
+        "cov": st.cov,
+        "least_favourable_record": names[st.least_favourable_index],
+        "records_without_collapse": st.censored,
+        "fragility": fragility,
+    }
+
+
 def case_dict(
     inputs: AssessmentInputs,
     option: Option | None,
@@ -84,6 +113,8 @@ def case_dict(
                 "survivor_multiplier": res.survivor_multiplier,
                 "a_dyn": a,
                 "q": res.q,
+                # every time history of the search, by C: [C, collapsed, peak θ/α]
+                "curve": [[p.multiplier, p.collapsed, p.peak_ratio] for p in res.curve],
             }
         )
     if option is None:
@@ -109,6 +140,7 @@ def case_dict(
         "lower_bound": summary.lower_bound,
         "capacity_demand": cd,
         "improvement": summary.design_a_dyn / urm_design,
+        "scatter": scatter_dict(summary, names, demand),
         "frp_mass_per_m": q_mass_m,
         "frp_mass": q_mass,
         "frp_cost": cost,

@@ -383,6 +383,28 @@ def options(results: Results) -> list[Flowable]:
     other = (174 - 34) / max(n, 1)
     out.append(grid(mat, [34 * mm] + [other * mm] * n, wrap=(0,), small=True))
     out.append(para("n.c.: no collapse up to C_max for that record.", "caption"))
+    out.append(CondPageBreak(60 * mm))
+    out.append(h2("5.5  How far the numbers can be trusted: scatter and fragility"))
+    out.append(
+        grid(
+            tb.scatter_table(results),
+            [x * mm for x in (34, 18, 16, 13, 33, 20, 12, 28)],
+            wrap=(0, 4),
+            small=True,
+            numeric_from=1,
+        )
+    )
+    out.append(
+        para(
+            "Statistics of a_dyn over the records (a record without collapse up to C_max "
+            "enters at its lower bound C_max·PGA). Fragility: a lognormal curve fitted by "
+            "maximum likelihood to the collapse accelerations (records without collapse "
+            "right-censored); P(collapse) is its value at the demand a_g·S. With few records "
+            "the fit is coarse: read it as the scatter of the result, not as a site "
+            "probability.",
+            "caption",
+        )
+    )
     return out
 
 

@@ -203,6 +203,46 @@ def ranking_table(results: Results) -> TableData:
     return TableData(header, rows)
 
 
+def _probability(p: float | None) -> str:
+    if p is None:
+        return DASH
+    return "< 0.1%" if p < 1e-3 else f"{p:.1%}"
+
+
+def scatter_table(results: Results) -> TableData:
+    """Record-to-record scatter of a_dyn and the lognormal fragility of every case (unreinforced
+    first, then by rank); rows of results written before the scatter was recorded show dashes."""
+    header = [
+        "option",
+        "mean a_dyn [g]",
+        "median [g]",
+        "CoV [–]",
+        "least favourable [g] (record)",
+        "fragility median [g]",
+        "β [–]",
+        "P(collapse) at a_g·S",
+    ]
+    rows = []
+    for c in [urm_case(results), *ranked_options(results)]:
+        sc = c.get("scatter") or {}
+        fr = sc.get("fragility") or {}
+        rows.append(
+            [
+                c["name"],
+                fmt_acc(c["mean_a_dyn"]),
+                fmt_acc(sc.get("median_a_dyn")),
+                DASH if "cov" not in sc else f"{sc['cov']:.2f}",
+                DASH
+                if "least_favourable_record" not in sc
+                else f"{fmt_acc(c['min_a_dyn'])} ({sc['least_favourable_record']})",
+                fmt_acc(fr.get("median")),
+                DASH if "beta" not in fr else f"{fr['beta']:.2f}",
+                _probability(fr.get("p_collapse_at_demand")),
+            ]
+        )
+    return TableData(header, rows)
+
+
 def summary_table(results: Results, n_alternatives: int = 3) -> TableData:
     """The unreinforced wall, the recommended option and the best alternatives."""
     cur = results["costs"]["currency"]
