@@ -11,7 +11,7 @@ from __future__ import annotations
 import datetime as _dt
 import threading
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
 
@@ -30,6 +30,7 @@ from frp_assess.assess.results import (
 )
 from frp_assess.assess.runner import DesignResult, IdaRunner, design_search, summarise
 from frp_assess.assess.seismic import SeismicInput, build_records
+from frp_assess.assess.sensitivity import sensitivity
 from frp_assess.assess.verification import verify
 from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_write_text
@@ -120,6 +121,18 @@ def run_assessment(
         for o, m, s in zip(options, models, summaries, strict=True)
     ]
     recommended = rank_cases(cases, inputs.target)
+    report("sensitivity", 0, 1)
+    focus = next((i for i, c in enumerate(cases) if c.get("rank") == 1), 0)
+    # the same cache, its own counts: RunStats reports the assessment's IDAs
+    sens_runner = IdaRunner(records, inputs, runner.cache, jobs=jobs, cancel=cancel)
+    conventions = {
+        "case": cases[focus]["name"],
+        "rows": [
+            asdict(row)
+            for row in sensitivity(sens_runner, models[focus], demand, inputs.ida.max_multiplier)
+        ],
+    }
+    report("sensitivity", 1, 1)
 
     design: list[DesignResult] | None = None
     if inputs.design is not None:
@@ -154,6 +167,7 @@ def run_assessment(
         materials=materials,
         created=created or _dt.date.today().isoformat(),
         numerical_check=numerical_check,
+        sensitivity=conventions,
     )
     if write:
         report("writing", 0, 1)

@@ -307,6 +307,7 @@ def build_results(
     materials: dict[str, Material],
     created: str,
     numerical_check: NumericalCheck | None = None,
+    sensitivity: dict[str, Any] | None = None,
 ) -> dict[str, Any]:
     records = [
         {
@@ -370,6 +371,7 @@ def build_results(
         if numerical_check is None
         else numerical_check_dict(numerical_check, cases, seismic),
         "input_warnings": list(seismic.warnings),
+        "sensitivity": sensitivity,
     }
 
 

@@ -169,6 +169,7 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
             label = {
                 "ida": f"IDA {n_cases} cases × {len(seismic.records)} records",
                 "design": "design mode",
+                "sensitivity": "sensitivity to the model conventions",
                 "writing": "writing results",
                 "verify": "numerical check (10x tighter tolerance)",
             }.get(stage)

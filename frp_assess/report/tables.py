@@ -209,6 +209,27 @@ def _probability(p: float | None) -> str:
     return "< 0.1%" if p < 1e-3 else f"{p:.1%}"
 
 
+def sensitivity_table(results: Results) -> TableData | None:
+    """The assessed case under every model-convention variant, or None when not recorded."""
+    sens = results.get("sensitivity")
+    if not sens or not sens.get("rows"):
+        return None
+    base = sens["rows"][0]["design_a_dyn"]
+    header = ["variant", a_dyn_label(results), "change [%]", "capacity/demand [–]"]
+    rows = []
+    for r in sens["rows"]:
+        ge = "≥ " if r["lower_bound"] else ""
+        rows.append(
+            [
+                r["variant"],
+                ge + fmt_acc(r["design_a_dyn"]),
+                f"{100.0 * (r['design_a_dyn'] / base - 1.0):+.1f}",
+                ge + f"{r['capacity_demand']:.2f}",
+            ]
+        )
+    return TableData(header, rows)
+
+
 def scatter_table(results: Results) -> TableData:
     """Record-to-record scatter of a_dyn and the lognormal fragility of every case (unreinforced
     first, then by rank); rows of results written before the scatter was recorded show dashes."""
