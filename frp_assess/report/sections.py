@@ -447,8 +447,8 @@ def governing(results: Results) -> list[Flowable]:
     out.append(
         grid(
             tb.governing_runs_table(results),
-            [30 * mm, 26 * mm, 26 * mm, 22 * mm, 26 * mm, 26 * mm],
-            wrap=(0,),
+            [24 * mm, 22 * mm, 24 * mm, 36 * mm, 22 * mm, 46 * mm],
+            wrap=(0, 3, 5),
         )
     )
     out.append(gap(8))
