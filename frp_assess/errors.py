@@ -40,5 +40,11 @@ class InputError(FrpAssessError):
         return f"{where}{key}{self.message}"
 
 
+class NumericalError(FrpAssessError):
+    """The integrator could not finish a time history as specified (e.g. the wall's fate
+    still undecided after the longest free vibration followed).  Not the user's input: the
+    message says which run, and the CLI gives exit code 1 with that one line."""
+
+
 class Cancelled(FrpAssessError):
     """A long computation was cancelled by the caller (Ctrl-C, Cancel button)."""

@@ -17,7 +17,7 @@ from typing import NoReturn
 
 from frp_assess import __version__
 from frp_assess.config.problems import problems_of
-from frp_assess.errors import Cancelled, InputError
+from frp_assess.errors import Cancelled, InputError, NumericalError
 from frp_assess.text_safety import plain
 
 #: Subcommand modules of this package, in the order `--help` lists them.
@@ -89,11 +89,14 @@ def main(argv: Sequence[str] | None = None) -> int:
     except OSError as exc:
         where = f"{exc.filename}: " if exc.filename is not None else ""
         return _fail(f"{where}{exc.strerror or exc}")
+    except NumericalError as exc:  # not the input's fault: one line, exit 1
+        _fail(str(exc), kind="numerical error")
+        return 1
 
 
-def _fail(message: str) -> int:
+def _fail(message: str, kind: str = "error") -> int:
     try:
-        print(f"frp-assess: error: {plain(message)}", file=sys.stderr)
+        print(f"frp-assess: {kind}: {plain(message)}", file=sys.stderr)
     except BrokenPipeError:
         pass
     return 2

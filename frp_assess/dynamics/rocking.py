@@ -15,6 +15,7 @@ from frp_assess.dynamics.kernel import params as kp
 from frp_assess.dynamics.rebars import Rebars
 from frp_assess.dynamics.restitution import Restitution, velocity_ratio
 from frp_assess.dynamics.wall import Mechanism, Wall
+from frp_assess.errors import NumericalError
 from frp_assess.motions.record import G
 
 RuptureRule = Literal["energy-transfer", "velocity-continuous"]
@@ -250,8 +251,11 @@ class RockingModel:
             history, h_theta, h_omega, h_bar, r_time, r_side,
         )  # fmt: skip
         if out.status != kp.STATUS_OK:
-            raise RuntimeError(
-                f"rocking kernel at scale {scale:.6g}: {_STATUS_MESSAGES[out.status]}"
+            raise NumericalError(
+                f"time history at multiplier C = {scale:.6g}: {_STATUS_MESSAGES[out.status]} "
+                f"(wall B = {self.wall.thickness:g} m, H = {self.wall.height:g} m, "
+                f"{self.mechanism}{'' if self.rebars is None else ', with bars'}); "
+                "try another integration tolerance (--rtol) and report it if it persists"
             )
         hist = None
         if history:

@@ -207,3 +207,18 @@ def test_ida_multipliers_do_not_depend_on_the_tail(tmp_path, capsys):
         got.append([r["collapse_multiplier"] for r in out["records"]])
     assert got[0][0] is not None
     assert got[0] == got[1] == got[2]
+
+
+def test_a_numerical_failure_is_one_line_and_exit_1(record_file, capsys, monkeypatch):
+    """An integrator failure is not the input's fault: one line, exit code 1, no traceback."""
+    from frp_assess.errors import NumericalError
+
+    def fail(self, *args, **kwargs):
+        raise NumericalError("time history at multiplier C = 3: the wall's fate was not certain")
+
+    monkeypatch.setattr(RockingModel, "run", fail)
+    code = main(["simulate", *WALL_ARGS, "--record", str(record_file), "--scale", "3"])
+    err = capsys.readouterr().err
+    assert code == 1
+    assert err.count("\n") == 1 and err.startswith("frp-assess: numerical error: time history")
+    assert "Traceback" not in err
