@@ -32,6 +32,17 @@ def _num(value: Any, fmt: str) -> str:
     return "—" if value is None else format(value, fmt)
 
 
+def _resurrection(rec: dict[str, Any]) -> Text | str:
+    """The smallest multiplier above the first collapse at which the wall stood again in the
+    IDA (the curve shows it; the first collapse stays the result), or "—"."""
+    first = rec.get("collapse_multiplier")
+    curve = rec.get("curve") or []
+    if first is None:
+        return "—"
+    again = [c for c, collapsed, _ in curve if c > first and not collapsed]
+    return Text(f"{min(again):.4f}", "yellow") if again else "—"
+
+
 class ResultsPane(Vertical):
     """The results of the last run."""
 
@@ -76,7 +87,18 @@ class ResultsPane(Vertical):
     def on_mount(self) -> None:
         self.results: dict[str, Any] | None = None
         self.query_one("#records-table", DataTable).add_columns(
-            *map(Text, ("record", "PGA [g]", "C collapse", "a_dyn [g]", "q = a_dyn/a_RM"))
+            *map(
+                Text,
+                (
+                    "record",
+                    "PGA [g]",
+                    "C collapse",
+                    "a_dyn [g]",
+                    "q = a_dyn/a_RM",
+                    "IDA runs",
+                    "stands again at C",
+                ),
+            )
         )
         self.query_one("#results-tabs").display = False
 
@@ -151,6 +173,8 @@ class ResultsPane(Vertical):
                 else Text("no collapse", "yellow"),
                 _num(rec["a_dyn"], ".4f"),
                 _num(rec["q"], ".3f"),
+                str(len(rec.get("curve") or [])) if rec.get("curve") else "—",
+                _resurrection(rec),
             )
         t = Text()
         t.append(printable(f"{c['name']}: "), "bold")
@@ -162,6 +186,23 @@ class ResultsPane(Vertical):
         )
         if c["lower_bound"]:
             t.append("\nsome record did not collapse up to C_max: lower bounds", "yellow")
+        sc = c.get("scatter")
+        if sc:
+            t.append(
+                f"\nscatter over the records: median {sc['median_a_dyn']:.4f} g, CoV "
+                f"{sc['cov']:.2f}, least favourable {c['min_a_dyn']:.4f} g ("
+            )
+            t.append(printable(sc["least_favourable_record"]))
+            t.append(")")
+            fr = sc.get("fragility")
+            if fr:
+                p = fr["p_collapse_at_demand"]
+                shown = "< 0.1 %" if p < 1e-3 else f"{p:.1%}"
+                t.append(
+                    f"\nfragility (lognormal): median {fr['median']:.4f} g, β = {fr['beta']:.2f}; "
+                    f"P(collapse) at a_g·S = {shown}",
+                    "yellow" if p >= 0.1 else "",
+                )
         self.query_one("#case-summary", Static).update(t)
 
     @on(Select.Changed, "#case-select")

@@ -8,7 +8,7 @@ from typing import Any
 
 import pytest
 from rich.console import Console
-from textual.widgets import Input, Select, Static, TabbedContent, TabPane
+from textual.widgets import DataTable, Input, Select, Static, TabbedContent, TabPane
 
 from frp_assess.api import CACHE_DIR, default_out_dir, run_assessment
 from frp_assess.assess.from_project import inputs_from_project
@@ -183,6 +183,12 @@ def test_run_to_the_end_matches_batch_mode(small_project: Path, tmp_path: Path):
             await pilot.press("enter")
             results_tabs = app.query_one("#results-tabs", TabbedContent)
             await settle(pilot, lambda: results_tabs.active == "res-records")
+            # per record: the IDA curve's runs, and the case's scatter and fragility
+            shown = plain(app.query_one("#case-summary", Static))
+            assert "scatter over the records: median" in shown and "fragility" in shown
+            records = app.query_one("#records-table", DataTable)
+            case = app.outcome.results["cases"][table.order[table.cursor_row]]
+            assert str(records.get_row_at(0)[5]) == str(len(case["records"][0]["curve"]))
             await pilot.press("f10")
             await after_workers(pilot, lambda: history_shown(app))
             assert "under art-" in plain(app.query_one("#hist-info", Static))
