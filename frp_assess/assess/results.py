@@ -173,6 +173,18 @@ def below_collapse(collapse: float, survivor: float | None, tolerance: float) ->
     return survivor if survivor is not None else collapse * (1.0 - tolerance)
 
 
+#: said in place of "recommended" when the record set fails the code's compatibility checks
+NOT_COMPLIANT = "input not code-compliant"
+
+
+def recommendation_label(results: dict[str, Any]) -> str:
+    """"Recommended", or "Best ranked (input not code-compliant)" when the record set fails
+    the code's spectrum-compatibility checks: no option is recommended on such input."""
+    if results.get("input_code_compliant", True):
+        return "Recommended"
+    return f"Best ranked ({NOT_COMPLIANT})"
+
+
 def recommendation_text(results: dict[str, Any]) -> str:
     """One line saying what to do: the recommended option, or that no retrofit is needed.
 
@@ -371,6 +383,9 @@ def build_results(
         if numerical_check is None
         else numerical_check_dict(numerical_check, cases, seismic),
         "input_warnings": list(seismic.warnings),
+        # false: the records fail the code's spectrum-compatibility checks; the CLI, TUI and
+        # report then call the rank-1 option "best ranked", never "recommended"
+        "input_code_compliant": bool(seismic.compliance.passed),
         "sensitivity": sensitivity,
     }
 

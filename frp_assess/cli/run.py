@@ -15,7 +15,7 @@ from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, T
 from frp_assess.api import default_out_dir, prepare_records, run_assessment
 from frp_assess.assess.from_project import load_inputs
 from frp_assess.assess.inputs import AssessmentInputs
-from frp_assess.assess.results import recommendation_text
+from frp_assess.assess.results import recommendation_label, recommendation_text
 from frp_assess.cli.output import Column, make_console, print_table, user
 from frp_assess.cli.wall_args import TOLERANCE
 from frp_assess.errors import Cancelled, InputError
@@ -211,7 +211,13 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
     if len(results["cases"]) > 1:
         print_ranking(console, results)
         console.print(f"Ranking rule: {user(results['ranking_rule'])}")
-        console.print("Recommended: " + user(recommendation_text(results)))
+        console.print(f"{recommendation_label(results)}: " + user(recommendation_text(results)))
+    if not results["input_code_compliant"]:
+        console.print(
+            "[bold red]INPUT NOT CODE-COMPLIANT[/]: the records fail the code's "
+            "spectrum-compatibility checks (table above); the results are not a basis for a "
+            "signed verdict and no option is recommended."
+        )
     for d in results["design"] or []:
         console.print(f"design {user(d['material'])} {user(d['position'])}: {user(d['message'])}")
     check = numerical_check_text(results)

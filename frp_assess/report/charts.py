@@ -450,7 +450,12 @@ def options_chart(
         px, py = ax.tx(rec["frp_mass"]), ax.ty(rec[quantity])
         d.add(Circle(px, py, 6.5, fillColor=None, strokeColor=st.INK, strokeWidth=0.9))
         items.append(
-            ("recommended (ringed)", {"color": st.INK, "width": 0, "marker": "o", "hollow": True})
+            (
+                "recommended (ringed)"
+                if results.get("input_code_compliant", True)
+                else "best ranked (ringed)",
+                {"color": st.INK, "width": 0, "marker": "o", "hollow": True},
+            )
         )
     legend(d, x0 + w + 14, y0 + h - FS, items)
     note_y = y0 + h - FS - (len(items) + 0.6) * FS * 1.55

@@ -142,7 +142,26 @@ def summary(results: Results) -> list[Flowable]:
     )
     rec = tb.case_by_name(results, results.get("recommended"))
     ranked = tb.ranked_options(results)
-    if rec is not None:
+    compliant = bool(results.get("input_code_compliant", True))
+    if not compliant:
+        out.append(
+            _verdict(
+                False,
+                "Input not code-compliant: the record set fails the code's spectrum-"
+                "compatibility checks (section 3.3). The results below are not a basis for a "
+                "signed verdict; no option is recommended, the first one is only best ranked.",
+            )
+        )
+    if rec is not None and not compliant:
+        out.append(markup("<b>Best ranked retrofit.</b> " + _option_sentence(results, rec)))
+        out.append(
+            markup(
+                "It ranks first under the ranking rule: "
+                f"{esc(results.get('ranking_rule', ''))}",
+                "small",
+            )
+        )
+    elif rec is not None:
         if ok:
             out.append(
                 markup(
@@ -333,7 +352,12 @@ def options(results: Results) -> list[Flowable]:
             "for the whole wall; costs indicative. q = a<sub>dyn</sub>/a<sub>RM</sub>; "
             "improvement = a<sub>dyn</sub> / a<sub>dyn</sub> of the unreinforced wall; "
             "capacity/demand = a<sub>dyn</sub> / a<sub>g</sub>·S. '≥': lower bound, some record "
-            "did not overturn up to C_max. Highlighted: the recommended option.",
+            "did not overturn up to C_max. Highlighted: the "
+            + (
+                "recommended option."
+                if results.get("input_code_compliant", True)
+                else "best ranked option (input not code-compliant: nothing is recommended)."
+            ),
             "caption",
         )
     )

@@ -282,7 +282,11 @@ def summary_table(results: Results, n_alternatives: int = 3) -> TableData:
     rec = case_by_name(results, results.get("recommended"))
     if rec is not None:
         urm_ok = bool(urm_case(results)["meets_target"])
-        chosen.append(("cheapest (optional)" if urm_ok else "recommended", rec))
+        if not results.get("input_code_compliant", True):
+            label = "best ranked"
+        else:
+            label = "cheapest (optional)" if urm_ok else "recommended"
+        chosen.append((label, rec))
     others = [c for c in ranked if c is not rec][:n_alternatives]
     chosen += [(f"alternative {i}" if rec else f"best {i}", c) for i, c in enumerate(others, 1)]
     rows = []

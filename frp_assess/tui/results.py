@@ -17,7 +17,7 @@ from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.widgets import DataTable, Label, Select, Static, TabPane
 
-from frp_assess.assess.results import recommendation_text
+from frp_assess.assess.results import recommendation_label, recommendation_text
 from frp_assess.tui.core.text import printable
 from frp_assess.tui.literal import literal
 from frp_assess.tui.plots import PlotView, Rule, Series
@@ -146,7 +146,13 @@ class ResultsPane(Vertical):
         t.append(
             "satisfied" if cc["passed"] else "NOT satisfied", "green" if cc["passed"] else "red"
         )
-        t.append("\nRecommended: ", "bold")
+        if not r.get("input_code_compliant", True):
+            t.append(
+                "\nINPUT NOT CODE-COMPLIANT: the records fail the code's spectrum checks "
+                "(Compliance tab); no option is recommended",
+                "bold red",
+            )
+        t.append(f"\n{recommendation_label(r)}: ", "bold")
         t.append(
             printable(recommendation_text(r)), "bold green" if rec or urm["meets_target"] else "red"
         )

@@ -10,7 +10,7 @@ import pytest
 
 from frp_assess.assess.from_project import load_inputs
 from frp_assess.assess.inputs import ArtificialRecords, RecordFile
-from frp_assess.assess.results import recommendation_text
+from frp_assess.assess.results import recommendation_label, recommendation_text
 from frp_assess.cli import main
 from frp_assess.config import FRP_MATERIALS
 
@@ -53,7 +53,12 @@ def test_small_project_end_to_end_and_instant_rerun(tmp_path, capsys):
     assert first["retrofit_required"] is (not first["cases"][0]["meets_target"])
     out = capsys.readouterr().out
     assert "Spectrum compatibility" in out
-    assert "Recommended: " + recommendation_text(first) in " ".join(out.split())
+    said = " ".join(out.split())
+    assert f"{recommendation_label(first)}: {recommendation_text(first)}" in said
+    # this small set (3 short records) fails the code's checks: nothing is "recommended"
+    assert first["input_code_compliant"] is first["compliance"]["passed"] is False
+    assert "Best ranked (input not code-compliant): " in said and "Recommended:" not in said
+    assert "INPUT NOT CODE-COMPLIANT" in said
 
     assert main(["run", str(project), "--no-pdf"]) == 0
     assert "0 IDAs computed" in capsys.readouterr().out

@@ -1,0 +1,43 @@
+"""A record set that fails the code's spectrum-compatibility checks gives results marked
+"input not code-compliant" and no option called "recommended" (issue 15 §3)."""
+
+from __future__ import annotations
+
+import copy
+import json
+from typing import Any
+
+from frp_assess.assess.results import recommendation_label
+from frp_assess.report import build_story
+from tests.report.test_report import DATA, story_text
+
+
+def load() -> dict[str, Any]:
+    return json.loads(DATA.read_text(encoding="utf-8"))
+
+
+def test_label_follows_the_compliance_of_the_records():
+    r = load()
+    r["input_code_compliant"] = True
+    assert recommendation_label(r) == "Recommended"
+    r["input_code_compliant"] = False
+    assert recommendation_label(r) == "Best ranked (input not code-compliant)"
+    del r["input_code_compliant"]  # results written before the flag existed
+    assert recommendation_label(r) == "Recommended"
+
+
+def test_report_on_non_compliant_input_recommends_nothing():
+    compliant = load()
+    compliant["input_code_compliant"] = True
+    failing = copy.deepcopy(compliant)
+    failing["input_code_compliant"] = False
+    failing["compliance"]["passed"] = False
+    assert compliant["recommended"] is not None
+    ok_text = story_text(build_story(compliant))
+    bad_text = story_text(build_story(failing))
+    assert "Input not code-compliant" not in ok_text
+    assert "Recommended retrofit." in ok_text or "No retrofit is needed" in ok_text
+    assert "Input not code-compliant" in bad_text
+    assert "Best ranked retrofit." in bad_text
+    said = bad_text.replace("no option is recommended", "").replace("nothing is recommended", "")
+    assert "recommended" not in said.lower()
