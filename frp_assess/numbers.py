@@ -52,3 +52,30 @@ def numerical_check_text(results: Mapping[str, Any]) -> str | None:
         f"({nc['case']}, {nc['record']}); {nc['changed_pairs']} of {nc['pairs']} "
         "multipliers moved by more than the IDA tolerance."
     )
+
+
+#: a fitted collapse probability at the demand above this makes "no retrofit needed" say so
+SCATTER_ALERT = 0.10
+
+
+def no_retrofit_caveats(results: Mapping[str, Any]) -> list[str]:
+    """What a "no retrofit needed" verdict must say alongside (issue 15 §3): the code's
+    kinematic check of the same wall failing, or a margin within the scatter of the records
+    (fitted P(collapse) at the demand ≥ 10 %, or capacity/demand − 1 below the records' CoV)."""
+    out = []
+    cc = results.get("code_check")
+    if cc is not None and not cc.get("passed", True):
+        out.append("the linear kinematic check of Circolare 2019 §C8.7.1 is NOT satisfied")
+    urm = results["cases"][0]
+    sc = urm.get("scatter") or {}
+    fr = sc.get("fragility") or {}
+    p = fr.get("p_collapse_at_demand")
+    target = float(results.get("model", {}).get("target", 1.0))
+    margin = urm.get("capacity_demand", math.inf) / target - 1.0
+    if p is not None and p >= SCATTER_ALERT:
+        out.append(f"the fitted probability of collapse at the demand is {p:.0%}")
+    elif "cov" in sc and margin < sc["cov"]:
+        out.append(
+            f"the margin ({margin:.0%}) is within the scatter of the records (CoV {sc['cov']:.0%})"
+        )
+    return out

@@ -28,7 +28,9 @@ INTERNAL: dict[str, set[str]] = {
     "dynamics": {"errors", "motions"},
     "motions": {"errors", "io_utils"},
     "config": {"errors", "io_utils", "dynamics", "motions"},
-    "assess": {"", "errors", "io_utils", "text_safety", "dynamics", "motions", "config"},
+    "assess": {
+        "", "errors", "io_utils", "numbers", "text_safety", "dynamics", "motions", "config",
+    },  # fmt: skip
     "report": {"errors", "io_utils", "numbers", "text_safety"},
     "study": {"", "errors", "io_utils", "dynamics", "motions", "config", "assess", "report"},
     "api": {

@@ -27,6 +27,7 @@ from frp_assess.assess.statistics import fit_lognormal_fragility, record_statist
 from frp_assess.assess.verification import NumericalCheck
 from frp_assess.dynamics import RockingModel
 from frp_assess.motions import G
+from frp_assess.numbers import no_retrofit_caveats
 
 SCHEMA_VERSION = 1
 #: most points stored per time history in results.json
@@ -178,8 +179,8 @@ NOT_COMPLIANT = "input not code-compliant"
 
 
 def recommendation_label(results: dict[str, Any]) -> str:
-    """"Recommended", or "Best ranked (input not code-compliant)" when the record set fails
-    the code's spectrum-compatibility checks: no option is recommended on such input."""
+    """The label of the rank-1 option: "Recommended", or "Best ranked (input not
+    code-compliant)" when the record set fails the code's spectrum-compatibility checks."""
     if results.get("input_code_compliant", True):
         return "Recommended"
     return f"Best ranked ({NOT_COMPLIANT})"
@@ -194,6 +195,9 @@ def recommendation_text(results: dict[str, Any]) -> str:
     rec = results.get("recommended")
     if results["cases"][0]["meets_target"]:
         text = "no retrofit needed: the unreinforced wall already meets the target"
+        caveats = no_retrofit_caveats(results)
+        if caveats:
+            text += " (but " + "; ".join(caveats) + ")"
         return text + (f" (cheapest option for extra margin: {rec})" if rec else "")
     return rec or "none of the options meets the target"
 

@@ -8,7 +8,7 @@ from typing import Any
 from reportlab.lib.units import mm
 from reportlab.platypus import CondPageBreak, Flowable, KeepTogether, PageBreak
 
-from frp_assess.numbers import numerical_check_text
+from frp_assess.numbers import no_retrofit_caveats, numerical_check_text
 from frp_assess.report import charts
 from frp_assess.report import tables as tb
 from frp_assess.report.flow import esc, gap, grid, key_value, markup, para
@@ -165,8 +165,10 @@ def summary(results: Results) -> list[Flowable]:
         if ok:
             out.append(
                 markup(
-                    "<b>No retrofit is needed</b> for this demand. If extra margin is wanted, "
-                    "the cheapest option is: " + _option_sentence(results, rec)
+                    "<b>No retrofit is needed</b> for this demand"
+                    + "".join(f"; <b>but</b> {esc(c)}" for c in no_retrofit_caveats(results))
+                    + ". If extra margin is wanted, the cheapest option is: "
+                    + _option_sentence(results, rec)
                 )
             )
         else:

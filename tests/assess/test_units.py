@@ -61,3 +61,29 @@ def test_recommendation_says_when_no_retrofit_is_needed():
     ok = recommendation_text(results(True, "GFRP centred 1‰"))
     assert ok.startswith("no retrofit needed") and "extra margin: GFRP centred 1‰" in ok
     assert "extra margin" not in recommendation_text(results(True, None))
+
+
+def test_no_retrofit_needed_says_what_contradicts_it():
+    """Issue 15 §3: never "no retrofit needed" while the code check of the same wall fails or
+    the margin is within the scatter of the records, without saying so."""
+    from frp_assess.assess.results import recommendation_text
+
+    def results(passed: bool, cd: float, cov: float, p: float | None) -> dict:
+        scatter = {"cov": cov, "fragility": None if p is None else {"p_collapse_at_demand": p}}
+        urm = {"meets_target": True, "capacity_demand": cd, "scatter": scatter}
+        return {
+            "recommended": None,
+            "cases": [urm],
+            "code_check": {"passed": passed},
+            "model": {"target": 1.0},
+        }
+
+    assert recommendation_text(results(True, 2.0, 0.1, 1e-6)).endswith("meets the target")
+    failing = recommendation_text(results(False, 2.0, 0.1, 1e-6))
+    assert "kinematic check of Circolare 2019 §C8.7.1 is NOT satisfied" in failing
+    assert "probability of collapse at the demand is 25%" in recommendation_text(
+        results(True, 1.05, 0.1, 0.25)
+    )
+    assert "margin (5%) is within the scatter of the records (CoV 20%)" in recommendation_text(
+        results(True, 1.05, 0.2, None)
+    )
