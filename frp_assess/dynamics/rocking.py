@@ -26,7 +26,7 @@ RUPTURE_RULES: tuple[RuptureRule, ...] = ("energy-transfer", "velocity-continuou
 COLLAPSE_RULES: tuple[CollapseRule, ...] = ("overturning", "end-of-record", "first-exceedance")
 
 #: Default local error tolerance of the Dormand–Prince pair [-].  Measured on the convergence
-#: corpus (scripts/validate_accuracy.py; a subset in tests/validation/test_accuracy.py): at
+#: corpus (scripts/validate_accuracy.py; a subset in tests/validation/test_convergence.py): at
 #: this value a 100× tighter tolerance and RK4 at 0.1 ms move no well-conditioned
 #: first-collapse multiplier by more than 0.2 % and no peak rotation by more than 0.1 %
 #: (1e-7 missed the bar on 2 of 191 multipliers, by up to 3.5 %).
@@ -42,7 +42,9 @@ _FATES: dict[int, Fate] = {
 }
 _STATUS_MESSAGES = {
     kp.STATUS_EVENT_OVERFLOW: "too many events in one sample interval",
-    kp.STATUS_STEP_UNDERFLOW: "the error control asked for a step below 1e-12·dt",
+    kp.STATUS_STEP_UNDERFLOW: (
+        f"the error control asked for a step below {kp.MIN_STEP_FRACTION:g}·dt"
+    ),
     kp.STATUS_FREE_VIBRATION_UNDECIDED: (
         f"the wall's fate was not certain after {kp.MAX_FREE_VIBRATION:g} s of free vibration"
     ),

@@ -110,6 +110,18 @@ def first_crossing(
 
 
 @njit(cache=True, nogil=True)
+def _newton_step(tau: float, f: float, df: float, h: float) -> float:
+    """Newton's next step length τ − f/f' kept inside (0, h]: a step that would leave the
+    interval goes halfway to the end it points at instead."""
+    tau_new = tau - f / df
+    if tau_new <= 0.0:
+        return 0.5 * tau
+    if tau_new > h:
+        return 0.5 * (tau + h)
+    return tau_new
+
+
+@njit(cache=True, nogil=True)
 def locate_level(
     theta: float,
     omega: float,
@@ -138,11 +150,7 @@ def locate_level(
         dy = s * om_e
         if dy == 0.0:
             break
-        tau_new = tau - resid / dy
-        if tau_new <= 0.0:
-            tau_new = 0.5 * tau
-        elif tau_new > h:
-            tau_new = 0.5 * (tau + h)
+        tau_new = _newton_step(tau, resid, dy, h)
         if abs(tau_new - tau) <= 1e-15 * h:
             tau = tau_new
             break
@@ -175,11 +183,7 @@ def turning_point(
             a_e = acceleration(th_e, s, u0 + slope * tau, k_s, prm)
         if a_e == 0.0:
             break
-        tau_new = tau - om_e / a_e
-        if tau_new <= 0.0:
-            tau_new = 0.5 * tau
-        elif tau_new > h:
-            tau_new = 0.5 * (tau + h)
+        tau_new = _newton_step(tau, om_e, a_e, h)
         if abs(tau_new - tau) <= 1e-13 * h:
             break
         tau = tau_new
