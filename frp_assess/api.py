@@ -262,7 +262,8 @@ def build_pdf(results: dict[str, Any], path: Path) -> bool:
 
 def missing_idas(inputs: AssessmentInputs, seismic: SeismicInput, out_dir: Path) -> int:
     """How many (case, record) IDAs of a run are not in ``out_dir``'s cache yet (0: the IDA
-    stage of a run computes nothing; design mode may still search new ratios)."""
+    stage of a run computes nothing; design mode may still search new ratios, and a cache
+    written before the sensitivity table existed lacks its variants)."""
     directory = Path(out_dir) / CACHE_DIR
     hashes = [record_digest(r.acc, r.dt) for r in seismic.records]
     return sum(

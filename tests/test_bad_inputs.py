@@ -17,6 +17,7 @@ from pathlib import Path
 import pytest
 
 from frp_assess.cli import main
+from tests.config.test_study_file import STUDY  # a valid study file
 
 #: a valid project (line numbers matter: rows point at them)
 BASE = """\
@@ -37,17 +38,6 @@ analysis:
 costs: {currency: EUR, installation_per_metre: 0}
 """
 
-#: a valid study file
-STUDY = """\
-name: tiny
-height: [3.0]
-alpha_deg: [7.5]
-ratio: [1.0]
-material: [CFRP]
-position: [external]
-spectrum: [A2]
-records: {count: 3, seed: 1, duration: 14.0}
-"""
 
 FILES = """\
     files:

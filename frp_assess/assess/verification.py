@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 from frp_assess.assess.runner import IdaRunner
 from frp_assess.dynamics import IdaResult, RockingModel
@@ -47,7 +47,7 @@ def verify(
 ) -> NumericalCheck:
     """Repeat the IDAs of ``models`` (whose results are ``results``) at a tighter tolerance."""
     tol = models[0].options.tolerance
-    tight = [replace(m, options=replace(m.options, tolerance=tol / TIGHTER)) for m in models]
+    tight = [m.with_options(tolerance=tol / TIGHTER) for m in models]
     checked = runner.run(tight, progress=progress)
     worst, where, changed, pairs = 0.0, (0, 0), 0, 0
     for i, (base, other) in enumerate(zip(results, checked, strict=True)):
