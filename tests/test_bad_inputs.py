@@ -38,6 +38,8 @@ analysis:
 costs: {currency: EUR, installation_per_metre: 0}
 """
 
+#: a building block appended to BASE (lines 16-19; the last line is formatted in)
+BUILDING = "building:\n  height: 10.0\n  storeys: 3\n  {}\n"
 
 FILES = """\
     files:
@@ -290,6 +292,42 @@ ROWS: list[Row] = [
         "more than 100,000; split the study",
         1,
         None,
+    ),
+    # a wall above the ground floor: its base below the top of the building
+    validate(
+        "building-wall-base-above-the-roof",
+        BASE + BUILDING.format("wall_base: 12.0"),
+        "expected 0 <= Z < height H_b = 10 m, found 12",
+        19,
+        "building.wall_base",
+    ),
+    run(
+        "building-wall-base-above-the-roof-run",
+        BASE + BUILDING.format("wall_base: 10.0"),
+        "expected 0 <= Z < height H_b = 10 m, found 10",
+        19,
+        "building.wall_base",
+    ),
+    validate(
+        "building-wall-base-negative",
+        BASE + BUILDING.format("wall_base: -1.0"),
+        "expected a number >= 0, found -1",
+        19,
+        "building.wall_base",
+    ),
+    validate(
+        "building-storeys-fraction",
+        sub("storeys: 3", "storeys: 2.5", BASE + BUILDING.format("wall_base: 9.0")),
+        "expected a whole number, found 2.5",
+        18,
+        "building.storeys",
+    ),
+    validate(
+        "building-period-inf",
+        BASE + BUILDING.format("wall_base: 9.0") + "  period: .inf\n",
+        f"{FINITE} inf",
+        20,
+        "building.period",
     ),
     # --- 3. every problem of a file, in file order ------------------------------------------
     validate(

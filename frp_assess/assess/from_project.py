@@ -14,6 +14,7 @@ from pathlib import Path
 from frp_assess.assess.inputs import (
     ArtificialRecords,
     AssessmentInputs,
+    Building,
     CodeCheckSettings,
     Costs,
     DesignRequest,
@@ -24,6 +25,7 @@ from frp_assess.assess.inputs import (
 from frp_assess.config import MASONRY, FrpMaterial, Project, load_project
 from frp_assess.config.problems import raise_all
 from frp_assess.config.schema import (
+    BuildingSpec,
     Ec8Spectrum,
     Ntc2018Spectrum,
     PresetSpectrum,
@@ -60,6 +62,19 @@ def spectrum_of(
 def material_of(frp: FrpMaterial) -> Material:
     return Material(
         frp.name, frp.elastic_modulus, frp.ultimate_strain, frp.density, frp.price, frp.source
+    )
+
+
+def building_of(spec: BuildingSpec | None) -> Building | None:
+    """The building of the ``building`` block (T1 defaulted by Circolare 2019 eq. C7.3.2)."""
+    if spec is None:
+        return None
+    return Building(
+        float(spec.height),
+        int(spec.storeys),
+        float(spec.wall_base),
+        spec.first_period,
+        float(spec.damping),
     )
 
 
@@ -130,6 +145,7 @@ def inputs_from_project(project: Project, base_dir: Path, input_file: str = "") 
         code_check=CodeCheckSettings(
             project.code_check.knowledge_level, project.code_check.behaviour_factor
         ),
+        building=building_of(project.building),
         project={
             "name": info.name,
             "location": info.location,

@@ -85,6 +85,23 @@ class CodeCheckSettings:
 
 
 @dataclass(frozen=True)
+class Building:
+    """Where the wall stands in the building (docs/model.md §8): its rocking base moves with
+    the absolute acceleration of the floor at Z (first mode only, Circolare 2019 §C7.2.3)."""
+
+    height: float  #: H_b [m], height of the building above the foundation
+    storeys: int  #: n [-]
+    wall_base: float  #: Z [m], height of the wall's rocking base, 0 <= Z < H_b
+    period: float  #: T1 [s], fundamental period of the building
+    damping: float = 0.05  #: ξ1 [-], damping ratio of its first mode
+
+    @property
+    def z_over_h(self) -> float:
+        """Z/H_b [-], the linear first mode ψ1(Z) at the wall's base."""
+        return self.wall_base / self.height
+
+
+@dataclass(frozen=True)
 class AssessmentInputs:
     """One wall, its site, its candidate retrofits and the analysis settings."""
 
@@ -108,6 +125,8 @@ class AssessmentInputs:
     costs: Costs = Costs()
     design: DesignRequest | None = None
     code_check: CodeCheckSettings = CodeCheckSettings()
+    #: where the wall stands in the building; None: at ground level (shaken by the ground)
+    building: Building | None = None
     project: dict[str, str] = field(default_factory=dict)
     input_file: str = ""
 

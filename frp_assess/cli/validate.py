@@ -57,6 +57,19 @@ def spectrum_summary(project: Project) -> str:
     return f"table of {len(s.periods)} points, T = {s.periods[0]:g}-{s.periods[-1]:g} s"
 
 
+def building_summary(project: Project) -> str:
+    """Where the wall stands: at ground level, or on the floor at Z of the building."""
+    b = project.building
+    if b is None:
+        return "none: the wall stands at ground level and is shaken by the ground"
+    period = f"T1 = {b.first_period:.3g} s" + ("" if b.period is not None else " (0.05*H_b^0.75)")
+    return (
+        f"H_b = {b.height:g} m, {b.storeys} storeys, wall base Z = {b.wall_base:g} m "
+        f"(Z/H_b = {b.wall_base / b.height:.3g}), {period}, xi = {b.damping:g}: "
+        "shaken by the floor motion at Z"
+    )
+
+
 def summary(loaded: LoadedProject) -> list[str]:
     """The lines printed by `validate`."""
     p = loaded.project
@@ -90,6 +103,8 @@ def summary(loaded: LoadedProject) -> list[str]:
         f"{an.collapse}, integration tolerance {an.integration.tolerance:g}, target "
         f"capacity/demand {an.target:g}",
     ]
+    if p.building is not None:
+        lines.insert(3, f"  building: {building_summary(p)}")
     if p.design is not None:
         d = p.design
         lines.append(

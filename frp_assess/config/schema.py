@@ -37,6 +37,7 @@ from frp_assess.dynamics.rocking import (
     RuptureRule,
 )
 from frp_assess.dynamics.wall import Mechanism
+from frp_assess.motions.floor import default_period
 
 GroundType = Literal["A", "B", "C", "D", "E"]
 
@@ -643,12 +644,58 @@ class CostsSpec(_Model):
     )
 
 
+# -------------------------------------------------------------------------------- building
+class BuildingSpec(_Model):
+    """Where the wall stands in the building: its base moves with the floor at Z
+    (first mode only, Circolare 2019 §C7.2.3; docs/model.md §8)."""
+
+    height: Number = Field(
+        gt=0, le=200, description="H_b [m], height of the building above the foundation, 0-200."
+    )
+    storeys: WholeNumber = Field(ge=1, le=60, description="n, number of storeys, 1-60.")
+    wall_base: Number = Field(
+        ge=0,
+        description="Z [m], height of the wall's rocking base above the foundation, 0 <= Z < H_b.",
+    )
+    period: Number | None = Field(
+        None,
+        gt=0,
+        le=5,
+        description="T1 [s], fundamental period of the building, 0-5; default "
+        "0.05*H_b^0.75 (Circolare 2019 eq. C7.3.2, masonry).",
+    )
+    damping: Number = Field(
+        0.05, gt=0, le=0.3, description="xi of the building's first mode [-], 0-0.3 (0.05)."
+    )
+
+    @model_validator(mode="after")
+    def _check_base(self) -> BuildingSpec:
+        if self.wall_base >= self.height:
+            raise located_error(
+                f"expected 0 <= Z < height H_b = {self.height:g} m, found {self.wall_base:g}",
+                "wall_base",
+            )
+        return self
+
+    @property
+    def first_period(self) -> float:
+        """T1 [s]: the given period, else C1·H_b^(3/4) with C1 = 0.050 (eq. C7.3.2)."""
+        if self.period is not None:
+            return float(self.period)
+        return default_period(float(self.height))
+
+
 # ----------------------------------------------------------------------------------- root
 class Project(_Model):
     """A project file: one wall, its site, candidate retrofits and analysis settings."""
 
     project: ProjectInfo = Field(default_factory=ProjectInfo, description="Identification.")
     wall: WallSpec = Field(description="The wall.")
+    building: BuildingSpec | None = Field(
+        None,
+        description="Where the wall stands in the building (optional; omit for a wall at "
+        "ground level): its base then moves with the floor at wall_base.",
+    )
     seismic: SeismicSpec = Field(description="Spectrum and records.")
     materials: dict[str, MaterialSpec] = Field(
         default_factory=dict,
