@@ -17,6 +17,7 @@ from typing import Any
 
 from frp_assess.assess.cache import IdaCache, cache_file, record_digest, task_key
 from frp_assess.assess.code_check import simple_overturning_check
+from frp_assess.assess.floor_input import floor_record
 from frp_assess.assess.inputs import AssessmentInputs, Material
 from frp_assess.assess.results import (
     below_collapse,
@@ -192,7 +193,7 @@ def governing_histories(
         return None
     c, k = min(failing)
     model = inputs.model_for(None if idx == 0 else inputs.options[idx - 1])
-    rec = records[k]
+    rec = floor_record(records[k], inputs.building)  # the motion the IDA ran
     below = below_collapse(c, res[k].survivor_multiplier, inputs.ida.tolerance)
     runs = [
         history_dict("collapse", c, model.run(rec.acc, rec.dt, c, history=True), model.wall.alpha),
@@ -267,7 +268,7 @@ def missing_idas(inputs: AssessmentInputs, seismic: SeismicInput, out_dir: Path)
     directory = Path(out_dir) / CACHE_DIR
     hashes = [record_digest(r.acc, r.dt) for r in seismic.records]
     return sum(
-        not cache_file(directory, task_key(m, h, inputs.ida)).is_file()
+        not cache_file(directory, task_key(m, h, inputs.ida, inputs.building)).is_file()
         for m in inputs.case_models()
         for h in hashes
     )

@@ -24,6 +24,7 @@ from typing import Any
 import numpy as np
 
 from frp_assess import __version__
+from frp_assess.assess.inputs import Building
 from frp_assess.dynamics import IdaResult, IdaSettings, RockingModel
 from frp_assess.io_utils import atomic_write_text
 from frp_assess.text_safety import plain
@@ -38,7 +39,15 @@ def record_digest(acc: np.ndarray, dt: float) -> str:
     return h.hexdigest()
 
 
-def task_key(model: RockingModel, record_hash: str, settings: IdaSettings) -> str:
+def task_key(
+    model: RockingModel,
+    record_hash: str,
+    settings: IdaSettings,
+    building: Building | None = None,
+) -> str:
+    """The cache key of one IDA: the model, the ground record's digest, the IDA rule and,
+    for a wall above the ground floor, the building (its floor motion is what the IDA runs;
+    a wall at ground level keeps the key it had before buildings existed)."""
     bars = model.rebars
     o = model.options
     payload = {
@@ -60,6 +69,14 @@ def task_key(model: RockingModel, record_hash: str, settings: IdaSettings) -> st
         "ida": [settings.step_ratio, settings.tolerance, settings.max_multiplier],
         "record": record_hash,
     }
+    if building is not None:
+        payload["building"] = [
+            building.height,
+            building.storeys,
+            building.wall_base,
+            building.period,
+            building.damping,
+        ]
     return hashlib.sha256(json.dumps(payload, sort_keys=True).encode()).hexdigest()
 
 

@@ -8,6 +8,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 from frp_assess.assess.cache import IdaCache, record_digest, task_key
+from frp_assess.assess.floor_input import floor_record, in_ground_terms
 from frp_assess.assess.inputs import AssessmentInputs, Material
 from frp_assess.dynamics import IdaResult, IdaTask, Position, RockingModel, run_batch
 from frp_assess.motions import G, Record
@@ -64,7 +65,13 @@ def summarise(results: Sequence[IdaResult], settings_max: float, a_rm_g: float) 
 
 
 class IdaRunner:
-    """Runs (models × records) IDAs, reusing and filling the cache."""
+    """Runs (models × records) IDAs, reusing and filling the cache.
+
+    The one place where a wall above the ground floor gets its floor motion: the IDA of each
+    (model, record) pair runs on ``motions[i]`` (the floor motion at Z of ``records[i]``, or
+    the record itself at ground level) and its result is restated in terms of the ground
+    record (:func:`~frp_assess.assess.floor_input.in_ground_terms`: a_dyn = C·PGA_ground).
+    """
 
     def __init__(
         self,
@@ -80,6 +87,8 @@ class IdaRunner:
         self.cache = cache
         self.jobs = jobs
         self.cancel = cancel
+        #: the motion at the wall's base under each record (the floor's, for a building)
+        self.motions = [floor_record(r, inputs.building) for r in self.records]
         self._hashes = [record_digest(r.acc, r.dt) for r in self.records]
         self.computed = 0
         self.reused = 0
@@ -103,14 +112,15 @@ class IdaRunner:
         tasks: list[IdaTask] = []
         slots: list[int] = []
         for m_i, model in enumerate(models):
-            for r_i, rec in enumerate(self.records):
-                key = task_key(model, self._hashes[r_i], self.inputs.ida)
+            for r_i in range(n_rec):
+                key = task_key(model, self._hashes[r_i], self.inputs.ida, self.inputs.building)
                 hit = self.cache.get(key)
                 if hit is not None:
                     out[m_i * n_rec + r_i] = hit
                 else:
+                    motion = self.motions[r_i]
                     keys.append(key)
-                    tasks.append(IdaTask(model, rec.acc, rec.dt, self.inputs.ida))
+                    tasks.append(IdaTask(model, motion.acc, motion.dt, self.inputs.ida))
                     slots.append(m_i * n_rec + r_i)
         hits = total - len(tasks)
         self.reused += hits
@@ -122,8 +132,13 @@ class IdaRunner:
         if progress is not None:
             progress(hits, total)
 
+        def ground_terms(i: int, res: IdaResult) -> IdaResult:
+            if self.inputs.building is None:
+                return res
+            return in_ground_terms(res, self.records[slots[i] % n_rec].pga)
+
         def on_result(i: int, res: IdaResult) -> None:
-            self.cache.put(keys[i], res)
+            self.cache.put(keys[i], ground_terms(i, res))
             if on_pair is not None:
                 on_pair(*divmod(slots[i], n_rec))
 
@@ -135,8 +150,8 @@ class IdaRunner:
             progress=None if progress is None else (lambda d, n: progress(hits + d, total)),
         )
         self.computed += len(tasks)
-        for slot, res in zip(slots, fresh, strict=True):
-            out[slot] = res
+        for i, (slot, res) in enumerate(zip(slots, fresh, strict=True)):
+            out[slot] = ground_terms(i, res)
         results = [r for r in out if r is not None]
         return [results[i * n_rec : (i + 1) * n_rec] for i in range(len(models))]
 

@@ -53,8 +53,10 @@ class IdaResult:
     to C_max.
     """
 
-    pga: float  #: PGA of the unscaled record [m/s²]
-    c0: float  #: C₀ = a_RM / PGA, below which nothing moves [-]
+    #: PGA of the unscaled record [m/s²]; for a wall above the ground floor the runner
+    #: states it for the ground record (a_dyn = C·pga), while C₀ is of the floor motion
+    pga: float
+    c0: float  #: C₀ = a_RM / PGA of the motion at the base, below which nothing moves [-]
     collapse_multiplier: float | None  #: C of the first collapse [-]
     a_dyn: float | None  #: C·PGA [m/s²] (Eq. 16)
     q: float | None  #: a_dyn / a_RM [-] (Eq. 15)

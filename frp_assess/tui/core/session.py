@@ -23,6 +23,7 @@ from frp_assess.api import (
     run_assessment,
     write_outputs,
 )
+from frp_assess.assess.floor_input import floor_record
 from frp_assess.assess.from_project import inputs_from_project
 from frp_assess.assess.inputs import AssessmentInputs
 from frp_assess.assess.seismic import SeismicInput
@@ -238,7 +239,7 @@ def case_history(
     inputs = outcome.inputs
     option = None if case_index == 0 else inputs.options[case_index - 1]
     model = inputs.model_for(option)
-    rec = outcome.seismic.records[record_index]
+    rec = floor_record(outcome.seismic.records[record_index], inputs.building)
     res = model.run(rec.acc, rec.dt, float(multiplier), history=True)
     h = res.history
     assert h is not None
