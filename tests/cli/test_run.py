@@ -123,7 +123,13 @@ def test_project_maps_onto_inputs(tmp_path):
 
 
 @pytest.mark.parametrize(
-    "name", ["facade-laquila.yaml", "paper-case.yaml", "boundary-wall-records.yaml"]
+    "name",
+    [
+        "facade-laquila.yaml",
+        "paper-case.yaml",
+        "boundary-wall-records.yaml",
+        "gable-top-storey.yaml",
+    ],
 )
 def test_worked_examples_load(name):
     inputs = load_inputs(ROOT / "projects" / name)
