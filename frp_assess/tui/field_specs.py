@@ -17,6 +17,7 @@ from frp_assess.config.schema import (
     MIN_ARTIFICIAL_DURATION,
     AnalysisSpec,
     ArtificialRecords,
+    BuildingSpec,
     CodeCheckSpec,
     CostsSpec,
     DesignSpec,
@@ -71,7 +72,6 @@ WALL_FIELDS = (
     ),
     choice((*W, "mechanism"), "Mechanism", None, WallSpec, width=14),
 )
-
 SPECTRUM_TYPES = (
     ("NTC 2018 (site)", "ntc2018"),
     ("EN 1998-1", "ec8"),
@@ -113,6 +113,37 @@ SITE_TYPE = FieldSpec(
 def in_variant(group: str, value: str, *specs: FieldSpec) -> tuple[FieldSpec, ...]:
     """Fields that are part of the data only while variant ``group`` is ``value``."""
     return tuple(replace(f, variant=(group, value)) for f in specs)
+
+
+BUILDING_MODE = FieldSpec(
+    ("building", "mode"),
+    "Stands",
+    "choice",
+    choices=(("at ground level", "off"), ("on a floor (Z)", "on")),
+    width=20,
+    virtual=True,
+    selects="building",
+    help="Where the wall stands: at ground level (shaken by the ground) or on a floor of the "
+    "building, its base moving with the floor at Z (Circolare 2019 §C7.2.3, first mode).",
+)
+#: what the building block starts with when switched on: the template's commented values
+BUILDING_DEFAULTS: dict[str, Any] = {"height": 10.0, "storeys": 3, "wall_base": 9.0}
+BUILDING_FIELDS = in_variant(
+    "building",
+    "on",
+    num(("building", "height"), "Building H_b", "m", BuildingSpec),
+    num(("building", "storeys"), "Storeys n", "", BuildingSpec),
+    num(("building", "wall_base"), "Wall base Z", "m, 0 ≤ Z < H_b", BuildingSpec),
+    num(
+        ("building", "period"),
+        "Period T1",
+        "s",
+        BuildingSpec,
+        optional=True,
+        placeholder="(0.05·H_b^0.75)",
+    ),
+    num(("building", "damping"), "Damping ξ1", "-", BuildingSpec, optional=True),
+)
 
 
 NTC, EC8 = Ntc2018Spectrum, Ec8Spectrum
@@ -259,6 +290,7 @@ DESIGN_FIELDS = in_variant(
 SECTIONS: dict[tuple[str, ...], str] = {
     ("project",): "err-wall",
     ("wall",): "err-wall",
+    ("building",): "err-wall",
     ("seismic",): "err-site",
     ("seismic", "spectrum"): "err-site",
     ("seismic", "records"): "err-records",

@@ -30,6 +30,7 @@ from frp_assess.tui.core.model import (
 from frp_assess.tui.core.tabs import tab_of
 from frp_assess.tui.field_specs import (
     ARTIFICIAL_DEFAULTS,
+    BUILDING_DEFAULTS,
     DESIGN_DEFAULTS,
     SECTIONS,
     SPECTRUM_DEFAULTS,
@@ -46,7 +47,7 @@ from frp_assess.tui.site_pane import SitePane
 from frp_assess.tui.wall_pane import WallPane
 
 #: the variant groups: which fields are part of the data (spectrum type, record source...)
-VARIANT_GROUPS = ("spectrum", "records", "design")
+VARIANT_GROUPS = ("spectrum", "records", "design", "building")
 
 
 def variant_of(data: Any, group: str) -> str:
@@ -57,6 +58,8 @@ def variant_of(data: Any, group: str) -> str:
     if group == "records":
         recs = get_path(data, ("seismic", "records"), {})
         return "files" if isinstance(recs, dict) and "files" in recs else "artificial"
+    if group == "building":
+        return "on" if isinstance(data, dict) and data.get("building") is not None else "off"
     return "on" if isinstance(data, dict) and data.get("design") is not None else "off"
 
 
@@ -66,6 +69,8 @@ def variant_defaults(group: str, value: str) -> dict[str, Any]:
         return {"seismic": {"spectrum": SPECTRUM_DEFAULTS[value]}}
     if group == "records":
         return {"seismic": {"records": {"artificial": ARTIFICIAL_DEFAULTS}}}
+    if group == "building":
+        return {"building": BUILDING_DEFAULTS}
     return {"design": DESIGN_DEFAULTS}
 
 
@@ -95,6 +100,7 @@ class ProjectForm:
         self.root = root
         self.variants: dict[str, str] = {"spectrum": "ntc2018", "records": "artificial"}
         self.variants["design"] = "off"
+        self.variants["building"] = "off"
         self.problems: list[Problem] = []
         self.project: Project | None = None
         self.saved_data: Any = None  #: the data as last opened or saved (None: never saved)

@@ -11,7 +11,12 @@ from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.widgets import Static
 
 from frp_assess.tui.core.model import WallDerived
-from frp_assess.tui.field_specs import PROJECT_FIELDS, WALL_FIELDS
+from frp_assess.tui.field_specs import (
+    BUILDING_FIELDS,
+    BUILDING_MODE,
+    PROJECT_FIELDS,
+    WALL_FIELDS,
+)
 from frp_assess.tui.fields import FieldRow, section_error
 
 
@@ -28,6 +33,11 @@ class WallPane(VerticalScroll):
                 yield section_error("err-wall")
                 for spec in WALL_FIELDS:
                     yield FieldRow(spec)
+                yield Static("Building (a wall above the ground floor)", classes="section-title")
+                yield FieldRow(BUILDING_MODE)
+                with Vertical(classes="variant", id="var-building-on"):
+                    for spec in BUILDING_FIELDS:
+                        yield FieldRow(spec)
             with Vertical(classes="col-right"):
                 yield Static("", id="derived-wall", classes="derived")
 

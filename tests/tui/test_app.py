@@ -435,3 +435,41 @@ def test_a_late_focus_message_does_not_switch_the_tab(small_project: Path):
             assert tabs.active == "tab-history"
 
     run_async(body)
+
+
+def test_building_block_switched_on_validated_and_saved(small_project: Path):
+    """A wall above the ground floor: the Wall tab's building fields, the loader's located
+    message under Z, and the block saved into the file (and left out when switched off)."""
+
+    async def body() -> None:
+        app = FrpAssessApp(small_project)
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause()
+            assert app.project is not None and app.project.building is None
+            mode = app.query_one("#f-building-mode-control", Select)
+            mode.value = "on"
+            await settle(pilot, lambda: app.project is not None and bool(app.project.building))
+            assert app.project is not None and app.project.building is not None
+            assert app.project.building.wall_base == 9.0  # the template's values
+            await type_into(pilot, "#f-building-wall-base-on-control", "12")
+            assert row_error(app, ("building", "wall_base")) == (
+                "expected 0 <= Z < height H_b = 10 m, found 12"
+            )
+            assert "Wall ✗" in str(app.query_one("#tabs", TabbedContent).get_tab("tab-wall").label)
+            await type_into(pilot, "#f-building-wall-base-on-control", "6")
+            assert app.problems == []
+            await pilot.press("ctrl+s")
+            await settle(pilot, lambda: not app.modified())
+            saved = load_project(small_project).project.building
+            assert saved is not None and (saved.height, saved.storeys, saved.wall_base) == (
+                10.0,
+                3,
+                6.0,
+            )
+            mode.value = "off"
+            await settle(pilot, lambda: app.project is not None and app.project.building is None)
+            await pilot.press("ctrl+s")
+            await settle(pilot, lambda: not app.modified())
+            assert load_project(small_project).project.building is None
+
+    run_async(body)

@@ -21,7 +21,7 @@ TABS: tuple[tuple[str, str], ...] = (
 def tab_of(path: Loc) -> str:
     """The tab where the field of a key path is edited."""
     head = path[0] if path else "wall"
-    if head in ("project", "wall"):
+    if head in ("project", "wall", "building"):
         return "tab-wall"
     if head == "seismic":
         return "tab-records" if path[1:2] == ("records",) else "tab-site"
