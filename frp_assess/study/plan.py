@@ -1,6 +1,7 @@
 """The cross product of a study's axes, as a lazily indexed list of cases.
 
-Cases are grouped by *wall group* = (spectrum, mechanism, height, α or B).  Within a group the
+Cases are grouped by *wall group* = (spectrum, mechanism, height, α or B, and the height Z of
+the wall's base when the study has a ``building``).  Within a group the
 first case is the unreinforced wall, followed by every material × position × ratio; so each
 unreinforced wall is computed once and shared by all the reinforced cases of its group, and it
 always precedes them (a streaming pass can compute improvements with a small dict).
@@ -17,6 +18,7 @@ import math
 from collections.abc import Iterator
 from dataclasses import dataclass
 
+from frp_assess.assess.inputs import Building
 from frp_assess.config.library import FRP_MATERIALS, did_you_mean
 from frp_assess.dynamics import IdaSettings, ModelOptions, Rebars, RockingModel, Wall
 from frp_assess.errors import InputError
@@ -49,6 +51,7 @@ class Case:
         material: material name or ``None``.
         position: ``centred`` | ``external`` or ``None``.
         ratio: ρ [‰] or ``None``.
+        wall_base: Z [m] of the wall's base in the study's building, ``None`` without one.
     """
 
     index: int
@@ -62,6 +65,7 @@ class Case:
     material: str | None
     position: str | None
     ratio: float | None
+    wall_base: float | None = None
 
     @property
     def reinforced(self) -> bool:
@@ -70,6 +74,8 @@ class Case:
     @property
     def label(self) -> str:
         base = f"{self.spectrum}/{self.mechanism}/H{self.height:g}/a{self.alpha_deg:g}"
+        if self.wall_base is not None:
+            base += f"/Z{self.wall_base:g}"
         if self.material is None:
             return base + "/URM"
         return f"{base}/{self.material}-{self.position}-{self.ratio:g}"
@@ -118,8 +124,17 @@ class StudyPlan:
             (m, p, r) for m in study.material for p in study.position for r in study.ratio
         ]
         self.group_size = 1 + len(self.reinforcements)
+        building = study.building
+        #: the wall_base axis [m] ([None]: walls at ground level)
+        self.wall_bases: list[float | None] = (
+            [None] if building is None else list(building.wall_base)
+        )
         self.n_groups = (
-            len(self.spectra) * len(self.mechanisms) * len(self.heights) * len(self.geometry)
+            len(self.spectra)
+            * len(self.mechanisms)
+            * len(self.heights)
+            * len(self.geometry)
+            * len(self.wall_bases)
         )
         o = study.model
         self.options = ModelOptions(
@@ -148,7 +163,8 @@ class StudyPlan:
         if not 0 <= index < len(self):
             raise IndexError(index)
         group, within = divmod(index, self.group_size)
-        rest, gi = divmod(group, len(self.geometry))
+        rest, zi = divmod(group, len(self.wall_bases))
+        rest, gi = divmod(rest, len(self.geometry))
         rest, hi = divmod(rest, len(self.heights))
         si, mi = divmod(rest, len(self.mechanisms))
         h = self.heights[hi]
@@ -175,7 +191,15 @@ class StudyPlan:
             material=mat,
             position=pos,
             ratio=ratio,
+            wall_base=self.wall_bases[zi],
         )
+
+    def building(self, case: Case) -> Building | None:
+        """Where the wall of ``case`` stands (None: at ground level, docs/model.md §8)."""
+        b = self.study.building
+        if b is None or case.wall_base is None:
+            return None
+        return Building(b.height, b.storeys, case.wall_base, b.first_period, b.damping)
 
     def cases(self, start: int = 0, stop: int | None = None) -> Iterator[Case]:
         """Cases ``start`` ≤ i < ``stop`` in order."""
@@ -202,5 +226,7 @@ class StudyPlan:
     def digest(self) -> str:
         """Hash of everything that determines the study's results and its chunking."""
         payload = self.study.model_dump(mode="json", exclude={"name", "description"})
+        if payload.get("building") is None:  # studies without one keep their digest
+            payload.pop("building", None)
         payload["_materials"] = {k: list(vars(v).values()) for k, v in self.materials.items()}
         return hashlib.sha256(json.dumps(payload, sort_keys=True).encode()).hexdigest()[:16]

@@ -32,6 +32,7 @@ from typing import Protocol
 
 from frp_assess import __version__
 from frp_assess.assess.cache import IdaCache, record_digest, task_key
+from frp_assess.assess.floor_input import floor_record, in_ground_terms
 from frp_assess.assess.runner import summarise
 from frp_assess.dynamics import IdaResult, IdaTask, default_jobs, run_batch
 from frp_assess.errors import Cancelled
@@ -263,16 +264,20 @@ def run_study(
         keys: list[str] = []
         slots: list[tuple[int, int]] = []
         tasks: list[IdaTask] = []
+        ground_pga: list[float | None] = []  #: per task: the ground PGA of a floor motion
         for ci, (case, model) in enumerate(zip(cases, models, strict=True)):
+            building = plan.building(case)
             for ri, rec in enumerate(recs[case.spectrum]):
-                key = task_key(model, hashes[case.spectrum][ri], settings)
+                key = task_key(model, hashes[case.spectrum][ri], settings, building)
                 hit = cache.get(key)
                 if hit is not None:
                     results[ci][ri] = hit
                 else:
+                    motion = floor_record(rec, building)
                     keys.append(key)
                     slots.append((ci, ri))
-                    tasks.append(IdaTask(model, rec.acc, rec.dt, settings))
+                    ground_pga.append(None if building is None else rec.pga)
+                    tasks.append(IdaTask(model, motion.acc, motion.dt, settings))
         hits = len(cases) * per_case - len(tasks)
         reused += hits
         done += hits
@@ -285,7 +290,10 @@ def run_study(
             keys: list[str] = keys,
             slots: list[tuple[int, int]] = slots,
             results: list[list[IdaResult | None]] = results,
+            ground_pga: list[float | None] = ground_pga,
         ) -> None:
+            pga = ground_pga[i]
+            res = res if pga is None else in_ground_terms(res, pga)
             cache.put(keys[i], res)
             ci, ri = slots[i]
             results[ci][ri] = res

@@ -47,6 +47,7 @@ from frp_assess.dynamics.rocking import (
 )
 from frp_assess.dynamics.wall import MECHANISMS
 from frp_assess.errors import InputError
+from frp_assess.study.building import StudyBuilding
 
 #: most cases of one study (the paper's Table 1 has 2,052)
 MAX_CASES = 100_000
@@ -212,6 +213,9 @@ class StudyFile(_Strict):
     records: RecordSetSpec = RecordSetSpec()
     model: ModelSpec = ModelSpec()
     ida: IdaSpec = IdaSpec()
+    building: StudyBuilding | None = Field(
+        None, description="walls above the ground floor: the building, wall_base an axis"
+    )
     unit_weight: Number = Field(
         default=18.0, ge=5, le=30, description="masonry unit weight w [kN/m³], 5-30"
     )
@@ -275,6 +279,7 @@ class StudyFile(_Strict):
         """Number of cases: walls × mechanisms × spectra × (1 + reinforcements)."""
         geometry = len(self.alpha_deg if self.alpha_deg is not None else self.thickness or [])
         walls = len(self.height) * geometry * len(self.mechanism) * len(self.spectrum)
+        walls *= 1 if self.building is None else len(self.building.wall_base)
         return walls * (1 + len(self.ratio) * len(self.material) * len(self.position))
 
 
