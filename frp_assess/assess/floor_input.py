@@ -1,4 +1,4 @@
-"""The motion at the wall's base for a wall above the ground floor (docs/model.md §8).
+"""The motion at the wall's base for a wall above the ground floor (docs/model.md §9).
 
 A wall whose rocking base stands at the height Z of a building is shaken by the absolute
 acceleration of that floor (first mode only: :func:`frp_assess.motions.floor.floor_acceleration`,

@@ -86,7 +86,7 @@ class CodeCheckSettings:
 
 @dataclass(frozen=True)
 class Building:
-    """Where the wall stands in the building (docs/model.md §8): its rocking base moves with
+    """Where the wall stands in the building (docs/model.md §9): its rocking base moves with
     the absolute acceleration of the floor at Z (first mode only, Circolare 2019 §C7.2.3)."""
 
     height: float  #: H_b [m], height of the building above the foundation

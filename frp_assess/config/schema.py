@@ -647,7 +647,7 @@ class CostsSpec(_Model):
 # -------------------------------------------------------------------------------- building
 class BuildingSpec(_Model):
     """Where the wall stands in the building: its base moves with the floor at Z
-    (first mode only, Circolare 2019 §C7.2.3; docs/model.md §8)."""
+    (first mode only, Circolare 2019 §C7.2.3; docs/model.md §9)."""
 
     height: Number = Field(
         gt=0, le=200, description="H_b [m], height of the building above the foundation, 0-200."

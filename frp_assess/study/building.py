@@ -2,7 +2,7 @@
 their base as an axis (``wall_base``), to show how the improvement changes with it.
 
 As the project file's ``building`` block (:class:`frp_assess.config.schema.BuildingSpec`,
-docs/model.md §8), except that ``wall_base`` is a list of heights Z [m].
+docs/model.md §9), except that ``wall_base`` is a list of heights Z [m].
 """
 
 from __future__ import annotations

@@ -195,7 +195,7 @@ class StudyPlan:
         )
 
     def building(self, case: Case) -> Building | None:
-        """Where the wall of ``case`` stands (None: at ground level, docs/model.md §8)."""
+        """Where the wall of ``case`` stands (None: at ground level, docs/model.md §9)."""
         b = self.study.building
         if b is None or case.wall_base is None:
             return None
