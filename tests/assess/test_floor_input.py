@@ -173,3 +173,34 @@ def test_floor_spectra_of_a_run() -> None:
     plateau = 1.1 / math.sqrt(0.05) * se_t1 * gamma * 0.9 * math.sqrt(1 + 0.0004 * 25)
     assert out.code[out.periods.index(0.3)] == pytest.approx(plateau, rel=1e-9)
     assert out.code[out.periods.index(0.24)] == pytest.approx(plateau, rel=1e-9)
+
+
+def test_governing_histories_and_missing_idas_use_the_floor_motion(tmp_path: Path) -> None:
+    """The report's time histories run on the floor motion at the collapse multiplier
+    (the wall falls) and just below it (it stands); the count of IDAs missing from the
+    cache is taken with the building's keys."""
+    from types import SimpleNamespace
+
+    from frp_assess.api import CACHE_DIR, governing_histories, missing_idas
+
+    inp = inputs(TOP)
+    runner = IdaRunner(RECORDS, inp, IdaCache(tmp_path / CACHE_DIR), jobs=1)
+    results = runner.run(inp.case_models())
+    cases = [{"name": n} for n in inp.case_names()]
+    gov = governing_histories(inp, cases, RECORDS, results, None)
+    assert gov is not None and gov["case"] == "Unreinforced"
+    k = min(range(len(RECORDS)), key=lambda i: results[0][i].collapse_multiplier or math.inf)
+    assert gov["record"] == RECORDS[k].name
+    collapse, below = gov["runs"]
+    floor = floor_acceleration(
+        RECORDS[k].acc, 0.01, height_building=10.0, storeys=3, wall_base=9.0, period=0.3
+    )
+    model = inp.model_for(None)
+    for run in (collapse, below):
+        direct = model.run(floor, 0.01, run["multiplier"])
+        assert run["collapsed"] == direct.collapsed
+        assert run["peak_rotation_ratio"] == pytest.approx(direct.max_rotation_ratio, rel=1e-12)
+    assert collapse["collapsed"] and not below["collapsed"]
+    seismic = SimpleNamespace(records=RECORDS)
+    assert missing_idas(inp, seismic, tmp_path) == 0  # type: ignore[arg-type]
+    assert missing_idas(inputs(None), seismic, tmp_path) == 4  # type: ignore[arg-type]
