@@ -204,3 +204,25 @@ def test_governing_histories_and_missing_idas_use_the_floor_motion(tmp_path: Pat
     seismic = SimpleNamespace(records=RECORDS)
     assert missing_idas(inp, seismic, tmp_path) == 0  # type: ignore[arg-type]
     assert missing_idas(inputs(None), seismic, tmp_path) == 4  # type: ignore[arg-type]
+
+
+def test_tui_time_history_runs_on_the_floor_motion() -> None:
+    """The TUI's history viewer (tui/core/session.case_history) shakes the wall with the
+    floor motion, as the IDA did: same peak θ/α as RockingModel on floor_acceleration."""
+    from types import SimpleNamespace
+
+    from frp_assess.tui.core.session import case_history
+
+    inp = inputs(TOP)
+    outcome = SimpleNamespace(
+        inputs=inp,
+        seismic=SimpleNamespace(records=RECORDS),
+        results={"cases": [{"name": n} for n in inp.case_names()]},
+    )
+    h = case_history(outcome, 1, 0, 0.3)  # type: ignore[arg-type]
+    floor = floor_acceleration(
+        RECORDS[0].acc, 0.01, height_building=10.0, storeys=3, wall_base=9.0, period=0.3
+    )
+    model = inp.model_for(inp.options[0])
+    assert h.peak_ratio == pytest.approx(model.run(floor, 0.01, 0.3).max_rotation_ratio, 1e-12)
+    assert h.peak_ratio != pytest.approx(model.run(RECORDS[0].acc, 0.01, 0.3).max_rotation_ratio)
