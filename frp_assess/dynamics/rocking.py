@@ -175,10 +175,19 @@ class RockingModel:
 
     @cached_property
     def pivot(self) -> PivotGeometry:
-        """The block about its pivot (``options.pivot``); a base that cannot carry the
-        compression (x ≥ B) is a ``ValueError``."""
+        """The block about its pivot (``options.pivot``, docs/model.md §1.1).
+
+        With ``crushing``, a base that cannot carry N = W + T_u at all (x ≥ B) has no rocking
+        mechanism: the assessment drops such an option (:mod:`frp_assess.assess.pivot`); the
+        model falls back to the edge pivot so that every run completes (:attr:`pivot_used`).
+        """
         depth = pivot_depth(self.wall, self.rebars, self.options.pivot)
-        return PivotGeometry(self.wall, self.rebars, depth)
+        return PivotGeometry(self.wall, self.rebars, depth if depth < self.wall.thickness else 0.0)
+
+    @property
+    def pivot_used(self) -> PivotRule:
+        """The pivot the time histories use: ``crushing`` when the pivot moved inward."""
+        return "crushing" if self.pivot.depth > 0.0 else "edge"
 
     @property
     def alpha(self) -> float:

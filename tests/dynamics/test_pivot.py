@@ -161,9 +161,15 @@ def test_energy_conserved_about_the_crushed_pivot(mechanism: str, position: str)
 
 
 def test_a_base_that_cannot_carry_n_has_no_pivot() -> None:
+    """x ≥ B: no mechanism; the model runs with the edge pivot (the assessment drops it)."""
     heavy = bars("external", 20.0)
     model = RockingModel(Wall(B, H, W_UNIT, 0.5e6), "two-sided", heavy, CRUSHING)
+    assert hand_depth(20.0) * F_D / 0.5e6 > B
+    assert model.pivot_used == "edge" and model.pivot.depth == 0.0
+    assert model.params == RockingModel(Wall(B, H, W_UNIT), "two-sided", heavy).params
+    light = RockingModel(Wall(B, H, W_UNIT, F_D), "two-sided", bars("external"), CRUSHING)
+    assert light.pivot_used == "crushing"
     with pytest.raises(ValueError, match="cannot carry"):
-        _ = model.params
+        PivotGeometry(Wall(B, H, W_UNIT), heavy, B)
     with pytest.raises(ValueError, match="pivot must be"):
         ModelOptions(pivot="middle")  # type: ignore[arg-type]
