@@ -20,7 +20,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from frp_assess.assess.inputs import UNREINFORCED, AssessmentInputs, Option
+from frp_assess.assess.inputs import UNREINFORCED, AssessmentInputs, Material, Option
 from frp_assess.assess.masonry import (
     DEFAULT_PIVOT_LIMIT,
     STRESS_BLOCK_FACTOR,
@@ -30,7 +30,7 @@ from frp_assess.assess.masonry import (
     pivot_check,
     wall_weight,
 )
-from frp_assess.dynamics import PivotRule
+from frp_assess.dynamics import PivotRule, Position
 from frp_assess.results.pivot import MasonryResult, PivotResult
 
 
@@ -182,3 +182,27 @@ def masonry_result(inputs: AssessmentInputs) -> MasonryResult:
         stress_block_factor=STRESS_BLOCK_FACTOR,
         source=s.source,
     )
+
+
+def largest_ratio(
+    inputs: AssessmentInputs,
+    material: Material,
+    position: Position,
+    limit: float = DEFAULT_PIVOT_LIMIT,
+) -> float:
+    """Largest bar ratio ρ [‰] that the drop rule keeps (for design mode's search range).
+
+    The depth must stay below a bound x_b: ``edge`` x_b = limit·B (kept at equality);
+    ``crushing`` the bar's distance from the compressed edge (B/2 centred, B external; the
+    option is dropped at equality, so ρ must stay strictly below the value returned).  From
+    x = (W + T_u)/(0.85·f_d·1 m) and T_u = E·ρ·B·c·ε_u:
+    ρ = (0.85·f_d·x_b − W)/(E·B·c·ε_u), 0 when the wall alone reaches the bound.
+    """
+    b = inputs.thickness
+    weight = wall_weight(inputs.unit_weight, b, inputs.height)
+    f_d = inputs.masonry_strength.f_d
+    strain = inputs.strain_factor * material.ultimate_strain
+    bound = limit * b if inputs.model.pivot == "edge" else bar_lever_arm(position, b)
+    capacity = STRESS_BLOCK_FACTOR * f_d * 1e3 * bound  # [kN/m]
+    per_permille = bar_force(1.0, b, material.elastic_modulus, strain)  # T_u of 1 ‰ [kN/m]
+    return max(capacity - weight, 0.0) / per_permille

@@ -16,7 +16,7 @@ from frp_assess.assess.cache import task_key
 from frp_assess.assess.from_project import load_inputs
 from frp_assess.assess.inputs import AssessmentInputs, Material, Option
 from frp_assess.assess.masonry import DEFAULT_COMPRESSIVE_STRENGTH, masonry_strength
-from frp_assess.assess.pivot import masonry_result, pivot_checks, pivot_fails
+from frp_assess.assess.pivot import largest_ratio, masonry_result, pivot_checks, pivot_fails
 from frp_assess.dynamics import IdaSettings, ModelOptions
 from frp_assess.errors import InputError
 from frp_assess.motions import preset_spectrum
@@ -164,3 +164,19 @@ def test_project_keys_reach_the_inputs(tmp_path: Path) -> None:
     assert inp.model.pivot == "edge"
     assert inp.compressive_strength == 2.0
     assert inp.masonry_strength.f_d == pytest.approx(2.0 / 1.20)
+
+
+@pytest.mark.parametrize("pivot", ["edge", "crushing"])
+@pytest.mark.parametrize("position", ["centred", "external"])
+def test_largest_ratio_is_the_drop_rules_boundary(pivot: str, position: str) -> None:
+    """By hand: ρ = (0.85·f_d·x_b − W)/(E·B·c·ε_u); just below it the option stays, just
+    above it is dropped."""
+    inp = inputs(pivot)
+    f_d, weight = 2.6 / 1.35, 18.0 * 0.25 * 4.5
+    bound = 0.1 * 0.25 if pivot == "edge" else (0.125 if position == "centred" else 0.25)
+    expected = (0.85 * f_d * 1e3 * bound - weight) / (46e6 * 1e-3 * 0.25 * 0.5 * 0.015)
+    rho = largest_ratio(inp, GFRP, position)  # type: ignore[arg-type]
+    assert rho == pytest.approx(expected)
+    for factor, dropped in ((0.99, False), (1.01, True)):
+        option = Option("x", GFRP, position, factor * rho)  # type: ignore[arg-type]
+        assert pivot_checks(replace(inp, options=(option,)))[1].dropped == dropped
