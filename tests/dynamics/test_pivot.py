@@ -173,3 +173,45 @@ def test_a_base_that_cannot_carry_n_has_no_pivot() -> None:
         PivotGeometry(Wall(B, H, W_UNIT), heavy, B)
     with pytest.raises(ValueError, match="pivot must be"):
         ModelOptions(pivot="middle")  # type: ignore[arg-type]
+
+
+@pytest.mark.parametrize("rule", ["energy-transfer", "velocity-continuous"])
+def test_rupture_about_the_crushed_pivot_hands_over_eq12_energy(rule: str) -> None:
+    """Rupture at θ'_max = 2·asin(ε_max·H/(2b')) with the jump of Eq. 12: per unit I', the
+    unreinforced energy after equals the total before (energy-transfer), or is lower by
+    U_r'/I' = ½·(E·A/H)·(2b'·sin(θ'_max/2))²/I' (velocity-continuous); constants by hand."""
+    x = hand_depth(1.0)
+    b = B - x / 2  # external bar
+    m = W_UNIT * B * H / G
+    r = 0.5 * math.hypot(B - x, H)
+    alpha = math.atan((B - x) / H)
+    inertia = m * (B**2 + H**2) / 12 + m * r**2
+    p2 = m * G * r / inertia
+    ea = E * 1.0e-3 * B
+    k = ea * b**2 / (H * m * G * r)
+    tm = 2 * math.asin(C * EPS_U * H / (2 * b))
+    u_r = 0.5 * ea / H * (2 * b * math.sin(tm / 2)) ** 2 / inertia
+    assert u_r == pytest.approx(p2 * k * (1 - math.cos(tm)))  # Eq. 6 is the bar's potential
+    model = RockingModel(
+        Wall(B, H, W_UNIT, F_D),
+        "two-sided",
+        bars("external"),
+        ModelOptions(restitution=1.0, rupture=rule, pivot="crushing"),  # type: ignore[arg-type]
+    )
+    need = p2 * (math.cos(alpha - tm) - math.cos(alpha)) + u_r
+    dt = 0.001
+    res = model.run(np.zeros(int(1.5 / dt)), dt, history=True, omega0=math.sqrt(2 * 1.2 * need))
+    assert res.ruptures and res.ruptures[0].side == 1
+    h = res.history
+    assert h is not None
+    i = int(res.ruptures[0].time / dt)
+    assert h.theta[i] < tm <= h.theta[i + 1]
+
+    def energy(theta: np.ndarray, omega: np.ndarray, kk: float) -> np.ndarray:
+        return 0.5 * omega**2 + p2 * np.cos(alpha - np.abs(theta)) + p2 * kk * (1 - np.cos(theta))
+
+    before = energy(h.theta[: i + 1], h.omega[: i + 1], k)
+    after = energy(h.theta[i + 1 : i + 40], h.omega[i + 1 : i + 40], 0.0)
+    expected = before[0] if rule == "energy-transfer" else before[0] - u_r
+    assert np.ptp(before) < 1e-8 * u_r
+    assert after == pytest.approx(np.full(after.shape, expected), abs=1e-8 * u_r)
