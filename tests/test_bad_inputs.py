@@ -1019,6 +1019,37 @@ ROWS: list[Row] = [
         "0",
         expect="argument --dt: expected a number in [0.0001, 0.05] s, found 0",
     ),
+    # --- the masonry at the pivot (issue 16 §1, docs/model.md §1.1) ------------------------
+    validate(
+        "compressive-strength-zero",
+        sub("  masonry: rubble-stone\n", "  masonry: rubble-stone\n  compressive_strength: 0\n"),
+        "expected a number in (0, 100], found 0",
+        7,
+        "wall.compressive_strength",
+    ),
+    run(
+        "compressive-strength-inf-run",
+        sub("  masonry: rubble-stone\n", "  masonry: rubble-stone\n  compressive_strength: .inf\n"),
+        f"{FINITE} inf",
+        7,
+        "wall.compressive_strength",
+    ),
+    validate(
+        "compressive-strength-with-unit",
+        sub(
+            "  masonry: rubble-stone\n", "  masonry: rubble-stone\n  compressive_strength: 3 MPa\n"
+        ),
+        "expected a number, found '3 MPa'",
+        7,
+        "wall.compressive_strength",
+    ),
+    run(
+        "pivot-unknown",
+        sub("analysis:\n", "analysis:\n  pivot: middle\n"),
+        "expected one of edge, crushing, found 'middle'",
+        13,
+        "analysis.pivot",
+    ),
 ]
 
 

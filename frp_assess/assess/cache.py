@@ -54,6 +54,8 @@ def task_key(
         "cache": CACHE_VERSION,
         "version": __version__,
         "wall": [model.wall.thickness, model.wall.height, model.wall.unit_weight],
+        # the masonry's strength moves only the crushing pivot (docs/model.md §1.1)
+        "pivot_depth": model.pivot.depth,
         "mechanism": model.mechanism,
         "bars": None
         if bars is None

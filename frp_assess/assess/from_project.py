@@ -125,6 +125,9 @@ def inputs_from_project(project: Project, base_dir: Path, input_file: str = "") 
         length=wall.length,
         masonry=wall.masonry,
         masonry_description=masonry_description,
+        compressive_strength=None
+        if wall.compressive_strength is None
+        else float(wall.compressive_strength),
         scale_to_spectrum=spec.scale_to_spectrum,
         t1=seismic.t1,
         model=ModelOptions(
@@ -133,6 +136,7 @@ def inputs_from_project(project: Project, base_dir: Path, input_file: str = "") 
             collapse=analysis.collapse,
             free_vibration_tail=analysis.free_vibration_tail,
             tolerance=analysis.integration.tolerance,
+            pivot=analysis.pivot,
         ),
         verify=analysis.integration.verify,
         strain_factor=analysis.strain_factor,

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from frp_assess.assess.masonry import MasonryStrength, masonry_strength
 from frp_assess.dynamics import (
     IdaSettings,
     Mechanism,
@@ -115,6 +116,7 @@ class AssessmentInputs:
     length: float = 1.0  #: L [m]
     masonry: str | None = None
     masonry_description: str = ""
+    compressive_strength: float | None = None  #: f_m given by the project [MPa]
     scale_to_spectrum: bool = True
     t1: float = 1.0  #: reference period of the compliance checks [s]
     model: ModelOptions = ModelOptions()
@@ -131,8 +133,18 @@ class AssessmentInputs:
     input_file: str = ""
 
     @property
+    def masonry_strength(self) -> MasonryStrength:
+        """f_m and f_d of the masonry (docs/model.md §1.1): the project's value, else the
+        type's by the knowledge level, else the lowest of Tab. C8.5.I."""
+        return masonry_strength(
+            self.masonry, self.code_check.knowledge_level, self.compressive_strength
+        )
+
+    @property
     def wall(self) -> Wall:
-        return Wall(self.thickness, self.height, self.unit_weight * 1e3)
+        """The dynamics wall (SI), with f_d for the crushing pivot."""
+        f_d = self.masonry_strength.f_d * 1e6  # [Pa]
+        return Wall(self.thickness, self.height, self.unit_weight * 1e3, f_d)
 
     def rebars(self, material: Material, position: Position, ratio: float) -> Rebars:
         return Rebars(

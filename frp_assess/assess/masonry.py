@@ -40,12 +40,10 @@ from typing import Literal
 
 from frp_assess.assess.code_check import CONFIDENCE_FACTORS
 from frp_assess.dynamics import Position
+from frp_assess.dynamics.pivot import STRESS_BLOCK_FACTOR as STRESS_BLOCK_FACTOR  # the model's
 from frp_assess.errors import InputError
 
 KnowledgeLevel = Literal["LC1", "LC2", "LC3"]
-
-#: Stress of the rectangular stress block as a fraction of f_d (NTC 2018 §7.8.2.2.1).
-STRESS_BLOCK_FACTOR = 0.85
 
 #: Default largest x/B for which the edge-pivot premise is accepted (see the module docstring).
 DEFAULT_PIVOT_LIMIT = 0.10
@@ -451,3 +449,68 @@ def max_ratio_for_pivot(
     capacity = limit * thickness * STRESS_BLOCK_FACTOR * f_d * 1e3  # [kN/m]
     per_permille = elastic_modulus * 1e6 * 1e-3 * thickness * strain  # T of ρ = 1 ‰ [kN/m]
     return max(capacity - weight, 0.0) / per_permille
+
+
+# ---------------------------------------------------------------------------------------------
+# The strength an assessment uses
+
+
+@dataclass(frozen=True)
+class MasonryStrength:
+    """The compressive strength behind the pivot of an assessment.
+
+    Attributes:
+        masonry: the type of Tab. C8.5.I, or None when the project gives none.
+        knowledge_level: LC1, LC2 or LC3 (``code_check.knowledge_level``).
+        f_m: compressive strength taken [MPa].
+        confidence_factor: FC [-] (Tab. C8.5.IV).
+        f_d: design compressive strength f_m / FC [MPa].
+        source: where f_m comes from, one line.
+    """
+
+    masonry: str | None
+    knowledge_level: str
+    f_m: float
+    confidence_factor: float
+    f_d: float
+    source: str
+
+
+#: f_m [MPa] taken when the project gives neither ``wall.masonry`` nor
+#: ``wall.compressive_strength``: the lowest value of Tab. C8.5.I (rubble stone, LC1 rule),
+#: so that an unstated masonry is never credited with more strength than the table allows.
+DEFAULT_COMPRESSIVE_STRENGTH = min(m.f_m[0] for m in MASONRY_TABLE.values())
+
+
+def masonry_strength(
+    masonry: str | None, knowledge_level: str, compressive_strength: float | None = None
+) -> MasonryStrength:
+    """f_m and f_d = f_m/FC of a project (docs/model.md §1.1).
+
+    The project's ``compressive_strength`` [MPa] wins; else the masonry type's value by the
+    knowledge-level rule (:func:`masonry_design_values`); else
+    :data:`DEFAULT_COMPRESSIVE_STRENGTH`.  FC is always the knowledge level's.
+    """
+    if knowledge_level not in CONFIDENCE_FACTORS:
+        raise InputError(
+            f"unknown knowledge level {knowledge_level!r}; choose LC1, LC2 or LC3",
+            key="code_check.knowledge_level",
+        )
+    fc = CONFIDENCE_FACTORS[knowledge_level]
+    if compressive_strength is not None:
+        if not compressive_strength > 0:
+            raise InputError(
+                f"must be > 0 MPa, got {compressive_strength}", key="wall.compressive_strength"
+            )
+        f_m, source = compressive_strength, "project value (wall.compressive_strength)"
+    elif masonry is not None:
+        v = masonry_design_values(masonry, knowledge_level)
+        rule = "minimum" if knowledge_level == "LC1" else "mean"
+        f_m, source = v.f_m, f"{_TABLE}, {masonry}, {rule} of the range ({knowledge_level})"
+    else:
+        f_m = DEFAULT_COMPRESSIVE_STRENGTH
+        source = (
+            f"no wall.masonry nor wall.compressive_strength: the lowest f_m of {_TABLE} "
+            f"({f_m:g} MPa)"
+        )
+    return MasonryStrength(masonry, knowledge_level, f_m, fc, f_m / fc, source)

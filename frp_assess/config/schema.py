@@ -29,6 +29,7 @@ from pydantic import (
 from pydantic_core import PydanticCustomError
 
 from frp_assess.config.library import FRP_MATERIALS, MASONRY, FrpMaterial, did_you_mean
+from frp_assess.dynamics.pivot import PivotRule
 from frp_assess.dynamics.rebars import POSITIONS, Position
 from frp_assess.dynamics.rocking import (
     DEFAULT_TOLERANCE,
@@ -179,6 +180,14 @@ class WallSpec(_Model):
     )
     unit_weight: Number | None = Field(
         None, ge=5.0, le=30.0, description="Unit weight w [kN/m3], 5-30; wins over masonry."
+    )
+    compressive_strength: Number | None = Field(
+        None,
+        gt=0,
+        le=100,
+        description="Compressive strength f_m of the masonry [MPa], 0-100; wins over the "
+        "masonry type's value of Tab. C8.5.I (LC1: minimum, LC2/LC3: mean).  Divided by FC of "
+        "code_check.knowledge_level, it sizes the compressed zone at the pivot.",
     )
     mechanism: Mechanism = Field(
         description="one-sided: wall restrained on one side (rebounds on impact); "
@@ -574,6 +583,12 @@ class AnalysisSpec(_Model):
     )
     strain_factor: Number = Field(
         0.5, gt=0, le=1, description="Cyclic reduction c of eps_u, 0 < c <= 1 (0.5)."
+    )
+    pivot: PivotRule = Field(
+        "crushing",
+        description="Where the wall pivots: crushing (default: at x/2 from the edge, x the "
+        "depth of masonry at 0.85*f_d that carries the weight and the bar force at rupture) "
+        "| edge (the base corner, the paper's model).",
     )
     free_vibration_tail: Number = Field(
         0.0, ge=0, le=60, description="Zero motion appended to each record [s] (0)."

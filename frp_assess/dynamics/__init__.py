@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from frp_assess.dynamics.batch import IdaTask, default_jobs, run_batch
 from frp_assess.dynamics.ida import IdaPoint, IdaResult, IdaSettings, ida
+from frp_assess.dynamics.pivot import PIVOT_RULES, PivotGeometry, PivotRule
 from frp_assess.dynamics.rebars import POSITIONS, Position, Rebars
 from frp_assess.dynamics.restitution import housner_two_sided, one_sided, velocity_ratio
 from frp_assess.dynamics.rocking import (
@@ -27,6 +28,7 @@ __all__ = [
     "COLLAPSE_RULES",
     "DEFAULT_TOLERANCE",
     "MECHANISMS",
+    "PIVOT_RULES",
     "RUPTURE_RULES",
     "CollapseRule",
     "Fate",
@@ -38,6 +40,8 @@ __all__ = [
     "IdaTask",
     "Mechanism",
     "ModelOptions",
+    "PivotGeometry",
+    "PivotRule",
     "Position",
     "Rebars",
     "RockingModel",

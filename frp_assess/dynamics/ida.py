@@ -92,7 +92,7 @@ def ida(
     pga = float(np.max(np.abs(acc)))
     if not (math.isfinite(pga) and pga > 0.0):
         raise ValueError("the record has no ground motion (PGA = 0 or not finite)")
-    a_rm = model.wall.a_rm
+    a_rm = model.a_rm  # about the model's pivot (docs/model.md §1.1)
     c0 = a_rm / pga
     c_max = settings.max_multiplier * c0
     points: list[IdaPoint] = []

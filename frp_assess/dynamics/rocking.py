@@ -12,6 +12,7 @@ from numpy.typing import NDArray
 
 from frp_assess.dynamics.kernel import history_length, simulate
 from frp_assess.dynamics.kernel import params as kp
+from frp_assess.dynamics.pivot import PIVOT_RULES, PivotGeometry, PivotRule, pivot_depth
 from frp_assess.dynamics.rebars import Rebars
 from frp_assess.dynamics.restitution import Restitution, velocity_ratio
 from frp_assess.dynamics.wall import Mechanism, Wall
@@ -69,6 +70,9 @@ class ModelOptions:
             error-controlled pair (the independent reference of the tests and benchmarks).
         method: the embedded pair, ``"dopri5"`` (Dormand–Prince 5(4), default) or ``"bs3"``
             (Bogacki–Shampine 3(2); kept for the benchmark that chose the default).
+        pivot: ``"edge"`` (the paper: the base corner, default here) or ``"crushing"`` (at
+            x/2 inside a compressed zone x of the masonry's strength f_d,
+            :attr:`Wall.compressive_strength`; docs/model.md §1.1).
     """
 
     restitution: Restitution = "energy"
@@ -78,6 +82,7 @@ class ModelOptions:
     tolerance: float = DEFAULT_TOLERANCE
     fixed_step: float | None = None
     method: Literal["dopri5", "bs3"] = "dopri5"
+    pivot: PivotRule = "edge"
 
     def __post_init__(self) -> None:
         if self.rupture not in RUPTURE_RULES:
@@ -95,6 +100,8 @@ class ModelOptions:
             raise ValueError(
                 f"integration tolerance must be in [{lo:g}, {hi:g}], got {self.tolerance!r}"
             )
+        if self.pivot not in PIVOT_RULES:
+            raise ValueError(f"pivot must be one of {PIVOT_RULES}, got {self.pivot!r}")
         if self.fixed_step is not None and not (
             math.isfinite(self.fixed_step) and self.fixed_step > 0.0
         ):
@@ -166,19 +173,59 @@ class RockingModel:
                 f"mechanism must be 'one-sided' or 'two-sided', got {self.mechanism!r}"
             )
 
+    @cached_property
+    def pivot(self) -> PivotGeometry:
+        """The block about its pivot (``options.pivot``, docs/model.md §1.1).
+
+        With ``crushing``, a base that cannot carry N = W + T_u at all (x ≥ B) has no rocking
+        mechanism: the assessment drops such an option (:mod:`frp_assess.assess.pivot`); the
+        model falls back to the edge pivot so that every run completes (:attr:`pivot_used`).
+        """
+        depth = pivot_depth(self.wall, self.rebars, self.options.pivot)
+        return PivotGeometry(self.wall, self.rebars, depth if depth < self.wall.thickness else 0.0)
+
+    @property
+    def pivot_used(self) -> PivotRule:
+        """The pivot the time histories use: ``crushing`` when the pivot moved inward."""
+        return "crushing" if self.pivot.depth > 0.0 else "edge"
+
+    @property
+    def alpha(self) -> float:
+        """Slenderness about the pivot α [rad] (the wall's α for the edge pivot)."""
+        return self.wall.alpha if self.pivot.depth == 0.0 else self.pivot.alpha
+
+    @property
+    def a_rm(self) -> float:
+        """Ground acceleration that starts rocking, g·tan α about the pivot [m/s²]."""
+        return self.wall.a_rm if self.pivot.depth == 0.0 else self.pivot.a_rm
+
+    @property
+    def a_rm_g(self) -> float:
+        """:attr:`a_rm` in g [-]."""
+        return self.a_rm / G
+
     @property
     def impact_velocity_ratio(self) -> float:
-        return velocity_ratio(self.options.restitution, self.mechanism, self.wall.alpha)
+        """Eqs. 13–14 by the restitution convention, at the slenderness about the pivot."""
+        return velocity_ratio(self.options.restitution, self.mechanism, self.alpha)
 
     @property
     def K(self) -> float:  # noqa: N802 - the paper's symbol
         """K of Eq. 10 [-] (0 when unreinforced)."""
-        return 0.0 if self.rebars is None else self.rebars.stiffness_term(self.wall)
+        if self.rebars is None:
+            return 0.0
+        if self.pivot.depth == 0.0:
+            return self.rebars.stiffness_term(self.wall)
+        return self.pivot.K
 
     @property
     def theta_max(self) -> float:
         """Rupture rotation θ_max [rad] (``inf``: unreinforced, or a bar that cannot break)."""
-        return math.inf if self.rebars is None else self.rebars.rupture_rotation(self.wall)
+        if self.rebars is None:
+            return math.inf
+        if self.pivot.depth == 0.0:
+            return self.rebars.rupture_rotation(self.wall)
+        return self.pivot.theta_max
 
     def with_options(self, **changes: object) -> RockingModel:
         """The same wall and bars with some options changed."""
@@ -189,20 +236,27 @@ class RockingModel:
         """The kernel's constants (docs/model.md §1–4), derived once."""
         wall, bars, o = self.wall, self.rebars, self.options
         theta_max = self.theta_max
+        edge = self.pivot.depth == 0.0  # the paper's closed forms, bit for bit
+        p2 = wall.p2 if edge else self.pivot.p2
+        alpha = self.alpha
         if bars is None:
             bar_mode, rupture_energy = kp.BAR_NONE, 0.0
         else:
             bar_mode = kp.BAR_SHARED if bars.position == "centred" else kp.BAR_PER_SIDE
-            rupture_energy = (
-                bars.stored_energy(wall, theta_max) / wall.I0 if math.isfinite(theta_max) else 0.0
-            )
+            rupture_energy = 0.0
+            if math.isfinite(theta_max):
+                rupture_energy = (
+                    bars.stored_energy(wall, theta_max) / wall.I0
+                    if edge
+                    else self.pivot.stored_energy(theta_max) / self.pivot.inertia
+                )
         return kp.KernelParams(
             g=G,
-            p2=wall.p2,
-            p=wall.p,
-            alpha=wall.alpha,
-            sin_a=math.sin(wall.alpha),
-            cos_a=math.cos(wall.alpha),
+            p2=p2,
+            p=math.sqrt(p2),
+            alpha=alpha,
+            sin_a=math.sin(alpha),
+            cos_a=math.cos(alpha),
             one_sided=self.mechanism == "one-sided",
             bar_mode=bar_mode,
             k_bar=self.K,
@@ -265,7 +319,7 @@ class RockingModel:
             theta = h_theta[:n].copy()
             strain = np.zeros(n)
             if self.rebars is not None:
-                strain = self.rebars.strain(self.wall, theta) * h_bar[:n]
+                strain = self.pivot.strains(theta) * h_bar[:n]
             time = np.arange(n, dtype=np.float64) * dt
             hist = History(time, theta, h_omega[:n].copy(), strain)
         ruptures = tuple(
@@ -277,8 +331,8 @@ class RockingModel:
             decided_time=float(out.decided_time),
             collapse_time=None if math.isnan(out.collapse_time) else float(out.collapse_time),
             max_rotation=float(out.peak),
-            max_rotation_ratio=float(out.peak) / self.wall.alpha,
-            peak_strain=0.0 if bars is None else float(bars.strain(self.wall, out.peak_with_bar)),
+            max_rotation_ratio=float(out.peak) / self.alpha,
+            peak_strain=0.0 if bars is None else self.pivot.strain(float(out.peak_with_bar)),
             rupture_strain=None if bars is None else bars.rupture_strain,
             impacts=int(out.impacts),
             ruptures=ruptures,

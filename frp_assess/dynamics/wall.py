@@ -23,17 +23,25 @@ class Wall:
         thickness: B [m], out-of-plane thickness.
         height: H [m].
         unit_weight: w [N/m³] (18 kN/m³ = 18e3 N/m³ for solid brick and lime mortar).
+        compressive_strength: design compressive strength of the masonry f_d [Pa]; only the
+            ``crushing`` pivot uses it (docs/model.md §1.1); ``inf``: the masonry never
+            crushes, the pivot stays at the edge.
     """
 
     thickness: float
     height: float
     unit_weight: float
+    compressive_strength: float = math.inf
 
     def __post_init__(self) -> None:
         for name in ("thickness", "height", "unit_weight"):
             value = getattr(self, name)
             if not (math.isfinite(value) and value > 0.0):
                 raise ValueError(f"wall {name} must be a finite number > 0, got {value!r}")
+        if not self.compressive_strength > 0.0:  # inf allowed, nan refused
+            raise ValueError(
+                f"wall compressive strength must be > 0 Pa, got {self.compressive_strength!r}"
+            )
         if self.thickness >= self.height:
             raise ValueError(
                 f"wall thickness B = {self.thickness} m must be smaller than its height "

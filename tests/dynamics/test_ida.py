@@ -24,6 +24,7 @@ class StubModel:
 
     def __init__(self, bands):
         self.wall = Wall(thickness=0.4, height=3.0, unit_weight=18e3)
+        self.a_rm = self.wall.a_rm  # the edge pivot's
         self.bands = bands
         self.calls = []
 
