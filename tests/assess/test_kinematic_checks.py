@@ -29,6 +29,7 @@ from frp_assess.assess.inputs import (
 from frp_assess.assess.kinematic_checks import (
     FloorPosition,
     IdaSummary,
+    base_motions,
     case_checks,
     displacement_spectrum,
     ida_capacity_demand,
@@ -359,3 +360,20 @@ def test_fc_in_ida_is_read_from_the_project(tmp_path: Path):
     inputs = load_inputs(off, warn=None)
     assert inputs.code_check.fc_in_ida is False
     assert ida_confidence_factor(inputs.code_check) == 1.0
+
+
+def test_base_motion_above_ground_is_the_floor_filter():
+    """A constant ground acceleration a switched on at t = 0 under an undamped oscillator
+    (T1, ξ1 = 0) starting at rest: u = −(a/ω²)(1 − cos ωt), so the relative acceleration is
+    ü_rel = −a − ω²·u = −a·cos ωt and the floor's absolute acceleration is
+    a·(1 − γ1·ψ1·cos ωt) (closed form), γ1 = 3·3/7 = 9/7, ψ1 = 6/9.  Z = 0: the record."""
+    dt, a = 0.005, 1.0
+    record = Record("step", dt, np.full(801, a))
+    floor = FloorPosition(height=9.0, storeys=3, wall_base=6.0, period=0.4, damping=0.0)
+    ((acc, step),) = base_motions([record], floor)
+    t = np.arange(801) * dt
+    expected = a * (1.0 - (9 / 7) * (2 / 3) * np.cos(2 * math.pi / 0.4 * t))
+    assert step == dt
+    np.testing.assert_allclose(acc, expected, atol=1e-9)
+    ((ground, _),) = base_motions([record], FloorPosition(9.0, 3, 0.0))
+    np.testing.assert_array_equal(ground, record.acc)
