@@ -218,27 +218,38 @@ def displacement_spectrum(
 
 
 def base_motions(
-    records: Sequence[Record], building: Building | None
+    records: Sequence[Record], building: Building | None, a_g: float
 ) -> list[tuple[NDArray[np.float64], float]]:
-    """(acceleration [m/s²], dt [s]) at the wall's base under each record: the record itself
-    at ground level, the floor's absolute acceleration above it (motions.floor)."""
+    """(acceleration [m/s²], dt [s]) at the wall's base under each record at the design
+    intensity: the ground record scaled to PGA = a_g·S (the IDA's measure, a_dyn = C·PGA of
+    the ground record, docs/model.md §5), then, above ground, filtered into the floor's
+    absolute acceleration (motions.floor; the filter is linear, so the order does not matter).
+
+    Args:
+        records: the ground records.
+        building: the building around a wall above ground (None: ground level).
+        a_g: the design intensity a_g·S [g].
+    """
+    if any(r.pga <= 0.0 for r in records):
+        raise ValueError("a record with zero PGA cannot be scaled to the design intensity")
+    scaled = [(r.acc * (a_g * G / r.pga), r.dt) for r in records]
     if building is None or building.wall_base == 0.0:
-        return [(r.acc, r.dt) for r in records]
+        return scaled
     t1 = building_period(building)
     return [
         (
             floor_acceleration(
-                r.acc,
-                r.dt,
+                acc,
+                dt,
                 height_building=building.height,
                 storeys=building.storeys,
                 wall_base=building.wall_base,
                 period=t1,
                 damping=building.damping,
             ),
-            r.dt,
+            dt,
         )
-        for r in records
+        for acc, dt in scaled
     ]
 
 
@@ -302,8 +313,8 @@ def case_checks(
         sd: elastic displacement spectrum at that intensity (:func:`displacement_spectrum`).
         settings: knowledge level, q, whether FC enters the dynamics.
         floor_ratio_value: a_Z,1/(a_g·S) (:func:`floor_ratio`; 1 at ground level).
-        motions: the base motions at the design intensity (:func:`base_motions`); None: the
-            time-history check is not made.
+        motions: the base motions at the design intensity (:func:`base_motions`); they are
+            run ×FC when FC enters the dynamics; None: the time-history check is not made.
         ida: the IDA's a_dyn of this case; None: no IDA line.
     """
     fc = CONFIDENCE_FACTORS[settings.knowledge_level]
@@ -372,7 +383,7 @@ def kinematic_checks(
 
     Args:
         inputs: the assessment (wall, options, spectrum a_g·S, code-check settings).
-        records: the ground records at the design intensity (as the assessment scaled them);
+        records: the ground records (each is scaled to PGA = a_g·S here, :func:`base_motions`);
             None: no time-history check.
         ida: the IDA's a_dyn by case name; a case missing from it gets no IDA line.
         building: the building around a wall above ground; None: ``inputs.building`` if the
@@ -384,7 +395,7 @@ def kinematic_checks(
     a_g = inputs.spectrum.pga_g
     ratio = floor_ratio(inputs.spectrum, building)
     sd = displacement_spectrum(inputs.spectrum, building)
-    motions = None if records is None else base_motions(records, building)
+    motions = None if records is None else base_motions(records, building, a_g)
     cases = tuple(
         case_checks(
             name,

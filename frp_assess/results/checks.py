@@ -78,7 +78,8 @@ class TimeHistoryResult:
     """The time-history check of Circolare 2019 §C8.7.1.2.1.9 at the design intensity: the
     model run under every record, d0 never exceeded, the mean peak displacement ≤ d_SLV."""
 
-    scale: float  #: factor on the design records (FC when FC applies to the dynamics) [-]
+    #: factor on the records scaled to PGA = a_g·S (FC when FC enters the dynamics) [-]
+    scale: float
     peaks: tuple[float | None, ...]  #: peak displacement of each record [m]; None: it fell
     mean_peak: float | None  #: mean of the peaks [m]; None if a record made the wall fall
     max_peak: float | None  #: largest peak [m]; None if a record made the wall fall

@@ -310,13 +310,24 @@ def test_peak_displacements_of_the_real_model():
     assert peaks[1] == math.inf
 
 
-def test_records_at_the_design_intensity_run_through_kinematic_checks():
-    """Three records of zeros: no rocking, every peak 0, the check passes (ratio None)."""
-    records = [Record(f"r{i}", 0.01, np.zeros(100)) for i in range(3)]
-    checks = kinematic_checks(_inputs(options=()), records=records)
+def test_records_are_scaled_to_the_design_pga_before_the_time_histories():
+    """Each ground record is scaled to PGA = a_g·S: a 0.2 g step and a 0.4 g sine both become
+    0.25 g.  With a_g·S = 0.05 g and FC = 1.35 the base never exceeds 0.0675 g < g·tan α =
+    0.1317 g (the uplift threshold of Eq. 10 at rest), so no record rocks: every peak is 0 and
+    the check passes (ratio None: no displacement to compare with)."""
+    t = np.arange(400) * 0.01
+    step = Record("step", 0.01, np.full(400, 0.2 * G))
+    sine = Record("sine", 0.01, 0.4 * G * np.sin(2 * math.pi * t))
+    motions = base_motions([step, sine], None, AGS)
+    np.testing.assert_allclose(motions[0][0], np.full(400, AGS * G), rtol=1e-12)
+    np.testing.assert_allclose(motions[1][0], AGS * G * np.sin(2 * math.pi * t), rtol=1e-12)
+    low = ElasticSpectrum("low", "ec8", 0.05, 0.15, T_C, T_D)
+    checks = kinematic_checks(_inputs(options=(), spectrum=low), records=[step, sine])
     th = checks.cases[0].time_history
-    assert th is not None and th.peaks == (0.0, 0.0, 0.0)
+    assert th is not None and th.scale == FC and th.peaks == (0.0, 0.0)
     assert th.passed and th.ratio is None
+    with pytest.raises(ValueError, match="zero PGA"):
+        base_motions([Record("zero", 0.01, np.zeros(10))], None, AGS)
 
 
 # --- FC in the IDA verdict ---------------------------------------------------------------------
@@ -363,17 +374,17 @@ def test_fc_in_ida_is_read_from_the_project(tmp_path: Path):
 
 
 def test_base_motion_above_ground_is_the_floor_filter():
-    """A constant ground acceleration a switched on at t = 0 under an undamped oscillator
-    (T1, ξ1 = 0) starting at rest: u = −(a/ω²)(1 − cos ωt), so the relative acceleration is
+    """A constant ground acceleration a (the record's PGA: scaled by 1) switched on at t = 0
+    under an undamped oscillator (T1, ξ1 = 0) starting at rest: u = −(a/ω²)(1 − cos ωt), so
     ü_rel = −a − ω²·u = −a·cos ωt and the floor's absolute acceleration is
     a·(1 − γ1·ψ1·cos ωt) (closed form), γ1 = 3·3/7 = 9/7, ψ1 = 6/9.  Z = 0: the record."""
     dt, a = 0.005, 1.0
     record = Record("step", dt, np.full(801, a))
     floor = FloorPosition(height=9.0, storeys=3, wall_base=6.0, period=0.4, damping=0.0)
-    ((acc, step),) = base_motions([record], floor)
+    ((acc, step),) = base_motions([record], floor, a / G)
     t = np.arange(801) * dt
     expected = a * (1.0 - (9 / 7) * (2 / 3) * np.cos(2 * math.pi / 0.4 * t))
     assert step == dt
     np.testing.assert_allclose(acc, expected, atol=1e-9)
-    ((ground, _),) = base_motions([record], FloorPosition(9.0, 3, 0.0))
+    ((ground, _),) = base_motions([record], FloorPosition(9.0, 3, 0.0), a / G)
     np.testing.assert_array_equal(ground, record.acc)
