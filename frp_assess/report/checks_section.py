@@ -35,9 +35,23 @@ CURVE_HEADER = [
 ]
 
 
+#: ζ_E at or above this is shown as "> 100" (a wall that barely moves under the design records)
+ZETA_SHOWN_MAX = 100.0
+
+
 def fmt_mm(x: float | None) -> str:
-    """A displacement [m] shown in mm with 1 decimal."""
-    return DASH if x is None else f"{1e3 * x:.1f} mm"
+    """A displacement [m] shown in mm with 1 decimal (2 significant digits below 0.1 mm)."""
+    if x is None:
+        return DASH
+    mm_value = 1e3 * x
+    return f"{mm_value:.2g} mm" if 0.0 < mm_value < 0.1 else f"{mm_value:.1f} mm"
+
+
+def fmt_zeta(x: float | None) -> str:
+    """ζ_E with 2 decimals, "> 100" from 100 up."""
+    if x is None:
+        return DASH
+    return f"> {ZETA_SHOWN_MAX:.0f}" if x >= ZETA_SHOWN_MAX else fmt_ratio(x)
 
 
 def fmt_g(x: float | None) -> str:
@@ -51,7 +65,7 @@ def _case_rows(c: CaseChecks) -> list[list[str]]:
             "linear: a0* vs demand/q",
             fmt_g(c.linear.a0_star),
             fmt_g(c.linear.demand),
-            fmt_ratio(c.linear.zeta_e),
+            fmt_zeta(c.linear.zeta_e),
             pass_fail(c.linear.passed),
         ]
     ]
@@ -62,7 +76,7 @@ def _case_rows(c: CaseChecks) -> list[list[str]]:
                 f"nonlinear static {ls.limit_state}: a_g,{ls.limit_state} vs a_g·S",
                 fmt_g(ls.a_g_capacity),
                 fmt_g(ls.a_g),
-                fmt_ratio(ls.zeta_e),
+                fmt_zeta(ls.zeta_e),
                 pass_fail(ls.passed),
             ]
         )
@@ -77,7 +91,7 @@ def _case_rows(c: CaseChecks) -> list[list[str]]:
                 "time history: d_SLV vs mean peak",
                 fmt_mm(th.d_limit),
                 "fell" if th.mean_peak is None else fmt_mm(th.mean_peak),
-                DASH if th.ratio is None else fmt_ratio(th.ratio),
+                fmt_zeta(th.ratio),
                 verdict,
             ]
         )
@@ -93,7 +107,7 @@ def _case_rows(c: CaseChecks) -> list[list[str]]:
                     label,
                     fmt_g(zeta * ida.demand),
                     fmt_g(ida.demand),
-                    fmt_ratio(zeta),
+                    fmt_zeta(zeta),
                     pass_fail(zeta >= 1.0) + ("" if deciding else " (not deciding)"),
                 ]
             )

@@ -86,6 +86,16 @@ def test_table_has_every_check_of_every_case():
     assert data.rows[9][2:] == ["79.0 mm", "0.0 mm", "—", "pass"]
 
 
+def test_tiny_displacements_and_large_ratios_stay_readable():
+    """A mean peak of 0.039 mm is not shown as 0.0 mm, and d_SLV/mean = 2027 as "> 100"."""
+    tiny = TimeHistoryResult(
+        1.35, (3.9e-5,), 3.9e-5, 3.9e-5, 0.197479, 0.078991, True, True, 2025.4, True
+    )
+    checks = KinematicChecks("LC1", 1.35, "FC", True, 0.25, None, (_case("w", tiny, None),))
+    row = checks_table(checks).rows[3]
+    assert row[2:] == ["79.0 mm", "0.039 mm", "> 100", "pass"]
+
+
 def test_curves_table_in_mm_and_seconds():
     data = curves_table(CHECKS)
     assert data.rows[0][:5] == ["Unreinforced", "0", "197.5", "79.0", "1.964"]
