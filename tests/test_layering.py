@@ -33,7 +33,7 @@ INTERNAL: dict[str, set[str]] = {
         "", "errors", "io_utils", "numbers", "text_safety", "dynamics", "motions", "config",
         "results",
     },  # fmt: skip
-    "report": {"errors", "io_utils", "numbers", "text_safety"},
+    "report": {"errors", "io_utils", "numbers", "text_safety", "results"},
     "study": {"", "errors", "io_utils", "dynamics", "motions", "config", "assess", "report"},
     "api": {
         "", "errors", "io_utils", "output_set", "text_safety", "dynamics", "motions", "config",

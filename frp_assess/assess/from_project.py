@@ -147,7 +147,9 @@ def inputs_from_project(project: Project, base_dir: Path, input_file: str = "") 
         costs=Costs(str(project.costs.currency), project.costs.installation_per_metre),
         design=design,
         code_check=CodeCheckSettings(
-            project.code_check.knowledge_level, project.code_check.behaviour_factor
+            project.code_check.knowledge_level,
+            project.code_check.behaviour_factor,
+            project.code_check.fc_in_ida,
         ),
         building=building_of(project.building),
         project={

@@ -83,6 +83,8 @@ class Costs:
 class CodeCheckSettings:
     knowledge_level: str = "LC1"  #: LC1 | LC2 | LC3
     behaviour_factor: float = 2.0  #: q of Circolare 2019 §C8.7.1
+    #: FC also divides the IDA capacity, a_dyn/(FC·a_g·S) (assess.kinematic_checks)
+    fc_in_ida: bool = True
 
 
 @dataclass(frozen=True)

@@ -637,6 +637,11 @@ class CodeCheckSpec(_Model):
         "LC1", description="Knowledge level: FC = 1.35 (LC1), 1.20 (LC2), 1.00 (LC3)."
     )
     behaviour_factor: Number = Field(2.0, ge=1, le=4, description="Behaviour factor q (2.0).")
+    fc_in_ida: bool = Field(
+        True,
+        description="Divide the IDA capacity by FC too: capacity/demand = a_dyn/(FC*a_g*S) "
+        "(true; Circolare 2019 C8.7.1.2.1.3: a rigid block uses LC1's FC = 1.35).",
+    )
 
     @property
     def confidence_factor(self) -> float:

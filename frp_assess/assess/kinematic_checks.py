@@ -1,0 +1,429 @@
+"""The code's kinematic checks of the wall and of every retrofit option, side by side.
+
+Circolare 2019 §C8.7.1 (docs/model.md, "Displacement-based checks"), assembled from the
+clause functions of :mod:`frp_assess.assess.kinematic_nonlinear` and
+:mod:`frp_assess.assess.code_check`:
+
+* the linear check a0* ≥ demand/q (§C8.7.1.2.1.7), the same for every option (the bars are
+  unstressed at rest);
+* the nonlinear static SLV and SLC checks on the capacity curve of the wall *with its bars*
+  (they enter through the internal work of elastic elements, the K·sin θ of Eq. 10): d0 is
+  the bare wall's, d_SLV = min(0.40·d0, the displacement where a bar rupture drops the
+  capacity by more than 50 %), demand from the elastic displacement spectrum at 8 % / 10 %
+  damping, a_g,SLV not below a_g,SLD;
+* the time-history check of §C8.7.1.2.1.9: the rocking model (the same one the IDA runs)
+  under every record at the design intensity, d0 never exceeded, mean peak ≤ d_SLV;
+* the IDA's ζ_E = a_dyn/(FC·a_g·S), mean and least favourable record.
+
+A wall above ground (Circolare 2019 §C7.2.3) takes its demand from the floor spectrum
+(eq. C8.7.1.12) and, in the time-history check, its base motion from the floor filter of
+:mod:`frp_assess.motions.floor`.  The building is described by any object with the attributes
+of :class:`FloorPosition` (the project's ``building`` block once it exists).
+
+Units: ground accelerations in g (a_g·S); records in m/s²; displacements in m.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import Protocol
+
+import numpy as np
+from numpy.typing import NDArray
+
+from frp_assess.assess.code_check import CONFIDENCE_FACTORS, simple_overturning_check
+from frp_assess.assess.inputs import AssessmentInputs, CodeCheckSettings
+from frp_assess.assess.kinematic_nonlinear import (
+    DisplacementSpectrum,
+    LimitStateCheck,
+    capacity_curve,
+    control_displacement,
+    limit_state_check,
+    time_history_check,
+)
+from frp_assess.dynamics import RockingModel
+from frp_assess.motions import ElasticSpectrum, G, Record
+from frp_assess.motions.floor import (
+    default_period,
+    floor_acceleration,
+    floor_displacement_spectrum,
+    floor_peak_acceleration,
+    ground_displacement_spectrum,
+    ground_spectrum_function,
+)
+from frp_assess.results.checks import (
+    CapacitySummary,
+    CaseChecks,
+    FloorBasis,
+    IdaCheck,
+    KinematicChecks,
+    LimitStateResult,
+    LinearCheck,
+    TimeHistoryResult,
+)
+
+#: With ≥ this many records the mean is the design value, else the least favourable record
+#: (EC8 §4.3.3.4.3, NTC 2018 §7.3.5; docs/model.md §5).
+MIN_RECORDS_FOR_MEAN = 7
+
+
+# --- the confidence factor in the IDA verdict ---------------------------------------------
+
+
+def fc_basis(settings: CodeCheckSettings) -> str:
+    """One sentence stating FC and where it comes from (for the report and results.json)."""
+    fc = CONFIDENCE_FACTORS[settings.knowledge_level]
+    rule = (
+        "Circolare 2019 §C8.7.1.2.1.3: a rigid block whose masonry has infinite compressive "
+        "strength uses the FC of LC1, 1.35"
+    )
+    if settings.knowledge_level == "LC1":
+        text = f"FC = {fc:g} (knowledge level LC1; {rule})."
+    else:
+        text = (
+            f"FC = {fc:g} from knowledge level {settings.knowledge_level} (Tab. C8.5.IV), "
+            f"as asked in the project; note that {rule}."
+        )
+    if settings.fc_in_ida:
+        return text + " It divides the IDA capacity too: capacity/demand = a_dyn/(FC·a_g·S)."
+    return text + " The IDA capacity is not divided by it (code_check.fc_in_ida: false)."
+
+
+def ida_confidence_factor(settings: CodeCheckSettings) -> float:
+    """FC [-] that divides the IDA capacity: the knowledge level's (Circolare 2019
+    Tab. C8.5.IV; LC1's 1.35 by default, the rule for a rigid block, §C8.7.1.2.1.3), or 1
+    when ``fc_in_ida`` is turned off."""
+    return CONFIDENCE_FACTORS[settings.knowledge_level] if settings.fc_in_ida else 1.0
+
+
+def ida_capacity_demand(design_a_dyn: float, demand: float, fc: float) -> float:
+    """capacity/demand = a_dyn / (FC·demand) [-] of the IDA verdict (issue 15 §3).
+
+    Args:
+        design_a_dyn: the design value of a_dyn [g] (mean over ≥ 7 records, else the least
+            favourable record).
+        demand: a_g·S [g].
+        fc: confidence factor [-] (:func:`ida_confidence_factor`).
+    """
+    if not (demand > 0.0 and fc > 0.0):
+        raise ValueError(f"demand and FC must be > 0, got {demand!r}, {fc!r}")
+    return design_a_dyn / (fc * demand)
+
+
+@dataclass(frozen=True)
+class IdaSummary:
+    """What the IDA of one case gives to the side-by-side table."""
+
+    mean_a_dyn: float  #: mean a_dyn over the records [g]
+    least_a_dyn: float  #: least favourable record's a_dyn [g]
+    records: int  #: number of records (≥ 7: the mean decides)
+
+
+def ida_check(ida: IdaSummary, demand: float, fc: float) -> IdaCheck:
+    """ζ_E of the IDA, mean and least favourable record, and the verdict on the design value
+    (the mean with ≥ 7 records, else the least favourable; docs/model.md §5)."""
+    mean = ida_capacity_demand(ida.mean_a_dyn, demand, fc)
+    least = ida_capacity_demand(ida.least_a_dyn, demand, fc)
+    rule = "mean" if ida.records >= MIN_RECORDS_FOR_MEAN else "least"
+    zeta = mean if rule == "mean" else least
+    return IdaCheck(fc, demand, mean, least, rule, zeta, zeta >= 1.0)
+
+
+# --- the wall's place in the building --------------------------------------------------------
+
+
+class Building(Protocol):
+    """The building around a wall above ground (the project's ``building`` block)."""
+
+    @property
+    def height(self) -> float: ...  # H_b [m]
+    @property
+    def storeys(self) -> int: ...  # n [-]
+    @property
+    def wall_base(self) -> float: ...  # Z [m]
+    @property
+    def period(self) -> float | None: ...  # T1 [s]; None: C1·H_b^(3/4)
+    @property
+    def damping(self) -> float: ...  # ξ1 [-]
+
+
+@dataclass(frozen=True)
+class FloorPosition:
+    """A wall whose rocking base is at Z in a building (Circolare 2019 §C7.2.3, first mode).
+
+    Stands in for ``AssessmentInputs.building`` until the project has that block; any object
+    with these attributes is accepted by :func:`kinematic_checks`.
+    """
+
+    height: float  #: H_b [m]
+    storeys: int  #: n [-]
+    wall_base: float  #: Z [m], 0 ≤ Z < H_b
+    period: float | None = None  #: T1 [s]; None: C1·H_b^(3/4) (motions.floor.default_period)
+    damping: float = 0.05  #: ξ1 [-]
+
+
+def building_period(building: Building) -> float:
+    """T1 [s]: the given one, or C1·H_b^(3/4) (Circolare 2019 eq. C7.3.2)."""
+    return default_period(building.height) if building.period is None else building.period
+
+
+def floor_ratio(spectrum: ElasticSpectrum, building: Building | None) -> float:
+    """a_Z,1 / (a_g·S) [-]: the floor's peak acceleration per unit ground intensity
+    (Circolare 2019 eq. C7.2.7, first mode); 1 at ground level."""
+    if building is None or building.wall_base == 0.0:
+        return 1.0
+    ground = ground_spectrum_function(spectrum)
+    t1 = building_period(building)
+    se_t1 = float(ground(np.asarray([t1]), building.damping)[0])
+    a_z = floor_peak_acceleration(
+        se_t1,
+        storeys=building.storeys,
+        z_over_h=building.wall_base / building.height,
+        building_damping=building.damping,
+    )
+    return a_z / spectrum.pga_g
+
+
+def displacement_spectrum(
+    spectrum: ElasticSpectrum, building: Building | None
+) -> DisplacementSpectrum:
+    """Sd(T [s], ξ [-]) [m] at the design intensity: the ground's S_De (NTC 2018 eq. 3.2.12)
+    or, above ground, the floor's (Circolare 2019 eq. C8.7.1.12)."""
+    ground = ground_spectrum_function(spectrum)
+    if building is None or building.wall_base == 0.0:
+
+        def at_ground(period: float, damping: float) -> float:
+            return float(ground_displacement_spectrum([period], ground, damping)[0])
+
+        return at_ground
+    t1 = building_period(building)
+    z_over_h = building.wall_base / building.height
+
+    def at_floor(period: float, damping: float) -> float:
+        return float(
+            floor_displacement_spectrum(
+                [period],
+                ground,
+                period=t1,
+                storeys=building.storeys,
+                z_over_h=z_over_h,
+                building_damping=building.damping,
+                damping=damping,
+            )[0]
+        )
+
+    return at_floor
+
+
+def base_motions(
+    records: Sequence[Record], building: Building | None, a_g: float
+) -> list[tuple[NDArray[np.float64], float]]:
+    """(acceleration [m/s²], dt [s]) at the wall's base under each record at the design
+    intensity: the ground record scaled to PGA = a_g·S (the IDA's measure, a_dyn = C·PGA of
+    the ground record, docs/model.md §5), then, above ground, filtered into the floor's
+    absolute acceleration (motions.floor; the filter is linear, so the order does not matter).
+
+    Args:
+        records: the ground records.
+        building: the building around a wall above ground (None: ground level).
+        a_g: the design intensity a_g·S [g].
+    """
+    if any(r.pga <= 0.0 for r in records):
+        raise ValueError("a record with zero PGA cannot be scaled to the design intensity")
+    scaled = [(r.acc * (a_g * G / r.pga), r.dt) for r in records]
+    if building is None or building.wall_base == 0.0:
+        return scaled
+    t1 = building_period(building)
+    return [
+        (
+            floor_acceleration(
+                acc,
+                dt,
+                height_building=building.height,
+                storeys=building.storeys,
+                wall_base=building.wall_base,
+                period=t1,
+                damping=building.damping,
+            ),
+            dt,
+        )
+        for acc, dt in scaled
+    ]
+
+
+# --- the checks of one case ----------------------------------------------------------------
+
+
+def peak_displacements(
+    model: RockingModel,
+    motions: Sequence[tuple[NDArray[np.float64], float]],
+    scale: float = 1.0,
+) -> tuple[float, ...]:
+    """Peak displacement d_C [m] of the control point under each motion times ``scale``
+    (the free vibration after the record included); inf where the collapse rule says the
+    wall fell."""
+    peaks = []
+    for acc, dt in motions:
+        res = model.run(acc, dt, scale)
+        peaks.append(
+            math.inf if res.collapsed else control_displacement(res.max_rotation, model.wall)
+        )
+    return tuple(peaks)
+
+
+def _optional(x: float) -> float | None:
+    return x if math.isfinite(x) else None
+
+
+def _limit_state(check: LimitStateCheck, a_g_sld_value: float) -> LimitStateResult:
+    return LimitStateResult(
+        limit_state=check.limit_state,
+        d_limit=check.d_limit,
+        a_limit=check.a_limit,
+        period=check.period,
+        damping=check.damping,
+        demand=check.demand,
+        a_g=check.a_g,
+        a_g_sld=a_g_sld_value,
+        a_g_capacity=check.a_g_capacity,
+        zeta_e=check.zeta_e,
+        passed=check.passed,
+    )
+
+
+def case_checks(
+    name: str,
+    model: RockingModel,
+    *,
+    a_g: float,
+    sd: DisplacementSpectrum,
+    settings: CodeCheckSettings,
+    floor_ratio_value: float = 1.0,
+    motions: Sequence[tuple[NDArray[np.float64], float]] | None = None,
+    ida: IdaSummary | None = None,
+) -> CaseChecks:
+    """Every code check of one case (the wall of ``model`` with its bars, if any).
+
+    Args:
+        name: the case's name.
+        model: its rocking model (wall, bars, options: the time-history check runs it).
+        a_g: design intensity a_g·S [g].
+        sd: elastic displacement spectrum at that intensity (:func:`displacement_spectrum`).
+        settings: knowledge level, q, whether FC enters the dynamics.
+        floor_ratio_value: a_Z,1/(a_g·S) (:func:`floor_ratio`; 1 at ground level).
+        motions: the base motions at the design intensity (:func:`base_motions`); they are
+            run ×FC when FC enters the dynamics; None: the time-history check is not made.
+        ida: the IDA's a_dyn of this case; None: no IDA line.
+    """
+    fc = CONFIDENCE_FACTORS[settings.knowledge_level]
+    wall = model.wall
+    curve = capacity_curve(wall, model.rebars, fc=fc)
+    # a_g,SLD = a0*/(a_Z per unit a_g·S) (eq. C8.7.1.8), in g: a0* is in m/s²
+    sld = curve.a0 / G / floor_ratio_value
+    slv = limit_state_check(curve, "SLV", sd, a_g, a_g_sld_value=sld)
+    slc = limit_state_check(curve, "SLC", sd, a_g, a_g_sld_value=sld)
+    lin = simple_overturning_check(
+        wall.thickness,
+        wall.height,
+        a_g * floor_ratio_value,
+        settings.knowledge_level,
+        settings.behaviour_factor,
+    )
+    linear = LinearCheck(lin.a0_star, lin.demand, lin.behaviour_factor, lin.ratio, lin.passed)
+    capacity = CapacitySummary(
+        e_star=curve.e_star,
+        m_star=curve.m_star,
+        a0_star=curve.a0,
+        a_max=curve.a_max,
+        d0=curve.d0,
+        stiffness=curve.stiffness,
+        rupture_displacement=_optional(curve.rupture_displacement),
+        rupture_limit=_optional(curve.rupture_limit),
+    )
+    time_history = None
+    if motions is not None:
+        scale = fc if settings.fc_in_ida else 1.0
+        th = time_history_check(peak_displacements(model, motions, scale), curve.d0, slv.d_limit)
+        time_history = TimeHistoryResult(
+            scale=scale,
+            peaks=tuple(_optional(p) for p in th.peaks),
+            mean_peak=_optional(th.mean_peak),
+            max_peak=_optional(th.max_peak),
+            d0=th.d0,
+            d_limit=th.d_limit,
+            d0_respected=th.d0_respected,
+            mean_respected=th.mean_respected,
+            ratio=_optional(th.ratio) if math.isfinite(th.mean_peak) else 0.0,
+            passed=th.passed,
+        )
+    ida_result = None
+    if ida is not None:
+        ida_result = ida_check(ida, a_g, ida_confidence_factor(settings))
+    return CaseChecks(
+        case=name,
+        capacity=capacity,
+        linear=linear,
+        slv=_limit_state(slv, sld),
+        slc=_limit_state(slc, sld),
+        time_history=time_history,
+        ida=ida_result,
+    )
+
+
+def kinematic_checks(
+    inputs: AssessmentInputs,
+    *,
+    records: Sequence[Record] | None = None,
+    ida: Mapping[str, IdaSummary] | None = None,
+    building: Building | None = None,
+) -> KinematicChecks:
+    """The code checks of the unreinforced wall and of every retrofit option.
+
+    Args:
+        inputs: the assessment (wall, options, spectrum a_g·S, code-check settings).
+        records: the ground records (each is scaled to PGA = a_g·S here, :func:`base_motions`);
+            None: no time-history check.
+        ida: the IDA's a_dyn by case name; a case missing from it gets no IDA line.
+        building: the building around a wall above ground; None: ``inputs.building`` if the
+            inputs have that attribute, else ground level.
+    """
+    if building is None:
+        building = getattr(inputs, "building", None)
+    settings = inputs.code_check
+    a_g = inputs.spectrum.pga_g
+    ratio = floor_ratio(inputs.spectrum, building)
+    sd = displacement_spectrum(inputs.spectrum, building)
+    motions = None if records is None else base_motions(records, building, a_g)
+    cases = tuple(
+        case_checks(
+            name,
+            model,
+            a_g=a_g,
+            sd=sd,
+            settings=settings,
+            floor_ratio_value=ratio,
+            motions=motions,
+            ida=None if ida is None else ida.get(name),
+        )
+        for name, model in zip(inputs.case_names(), inputs.case_models(), strict=True)
+    )
+    floor = None
+    if building is not None and building.wall_base > 0.0:
+        floor = FloorBasis(
+            z_over_h=building.wall_base / building.height,
+            storeys=building.storeys,
+            period=building_period(building),
+            damping=building.damping,
+            floor_ratio=ratio,
+        )
+    return KinematicChecks(
+        knowledge_level=settings.knowledge_level,
+        fc=CONFIDENCE_FACTORS[settings.knowledge_level],
+        fc_basis=fc_basis(settings),
+        fc_in_ida=settings.fc_in_ida,
+        a_g=a_g,
+        floor=floor,
+        cases=cases,
+    )
