@@ -18,7 +18,8 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 from frp_assess.config.library import FRP_MATERIALS, did_you_mean
-from frp_assess.dynamics import IdaSettings, ModelOptions, Rebars, RockingModel, Wall
+from frp_assess.dynamics import IdaSettings, ModelOptions, RockingModel
+from frp_assess.dynamics.units import rebars_from_practice, wall_from_practice
 from frp_assess.errors import InputError
 from frp_assess.study.schema import StudyFile, spectrum_label, spectrum_text
 
@@ -185,13 +186,13 @@ class StudyPlan:
 
     def model(self, case: Case) -> RockingModel:
         """The dynamics model of ``case`` (SI units inside)."""
-        wall = Wall(case.thickness, case.height, self.study.unit_weight * 1e3)
+        wall = wall_from_practice(case.thickness, case.height, self.study.unit_weight)
         bars = None
         if case.material is not None:
             m = self.materials[case.material]
             assert case.position is not None and case.ratio is not None
-            bars = Rebars(
-                m.elastic_modulus * 1e9,
+            bars = rebars_from_practice(
+                m.elastic_modulus,
                 m.ultimate_strain,
                 case.position,  # type: ignore[arg-type]
                 case.ratio,
