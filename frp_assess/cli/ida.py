@@ -7,10 +7,15 @@ import json
 import math
 
 from frp_assess.assess.runner import design_value_rule, summarise
-from frp_assess.cli.arg_types import number_in
 from frp_assess.cli.output import Column, make_console, print_table, user
-from frp_assess.cli.wall_args import add_model_arguments, add_record_arguments, build_model
+from frp_assess.cli.wall_args import (
+    add_model_arguments,
+    add_option_argument,
+    add_record_arguments,
+    build_model,
+)
 from frp_assess.dynamics import IdaSettings, IdaTask, run_batch
+from frp_assess.dynamics.options import IDA_OPTIONS
 from frp_assess.errors import InputError
 from frp_assess.motions.readers import read_record
 from frp_assess.motions.record import G
@@ -28,21 +33,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     add_model_arguments(p)
     add_record_arguments(p, many=True)
     ida = p.add_argument_group("IDA search")
-    ida.add_argument(
-        "--step-ratio", type=number_in(1.01, 10), default=1.10, help="hunt ratio s (default 1.10)"
-    )
-    ida.add_argument(
-        "--tolerance",
-        type=number_in(1e-4, 0.1),
-        default=0.005,
-        help="bisection tolerance (0.005)",
-    )
-    ida.add_argument(
-        "--max-multiplier",
-        type=number_in(1, 1000, low_open=True),
-        default=100.0,
-        help="give up beyond C_max = this × C₀ (default 100)",
-    )
+    for option in IDA_OPTIONS.values():
+        add_option_argument(ida, option)
     p.add_argument("--jobs", type=int, default=None, help="worker threads (default: all cores)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(handler=run)

@@ -12,27 +12,30 @@ from numpy.typing import NDArray
 
 from frp_assess.dynamics.kernel import history_length, simulate
 from frp_assess.dynamics.kernel import params as kp
+from frp_assess.dynamics.options import (
+    COLLAPSE,
+    COLLAPSE_RULES,
+    FREE_VIBRATION_TAIL,
+    INTEGRATION_TOLERANCE,
+    RESTITUTION,
+    RUPTURE,
+    RUPTURE_RULES,
+    CollapseRule,
+    RuptureRule,
+)
 from frp_assess.dynamics.rebars import Rebars
 from frp_assess.dynamics.restitution import Restitution, velocity_ratio
 from frp_assess.dynamics.wall import Mechanism, Wall
 from frp_assess.errors import NumericalError
 from frp_assess.motions.record import G
 
-RuptureRule = Literal["energy-transfer", "velocity-continuous"]
-CollapseRule = Literal["overturning", "end-of-record", "first-exceedance"]
 Fate = Literal["fell", "at rest", "exceeded", "standing"]
 
-RUPTURE_RULES: tuple[RuptureRule, ...] = ("energy-transfer", "velocity-continuous")
-COLLAPSE_RULES: tuple[CollapseRule, ...] = ("overturning", "end-of-record", "first-exceedance")
-
-#: Default local error tolerance of the Dormand–Prince pair [-].  Measured on the convergence
-#: corpus (scripts/validate_accuracy.py; a subset in tests/validation/test_convergence.py): at
-#: this value a 100× tighter tolerance and RK4 at 0.1 ms move no well-conditioned
-#: first-collapse multiplier by more than 0.2 % and no peak rotation by more than 0.1 %
-#: (1e-7 missed the bar on 2 of 191 multipliers, by up to 3.5 %).
-DEFAULT_TOLERANCE = 1e-8
+#: Default local error tolerance of the Dormand–Prince pair [-] (the measurement that chose it:
+#: :data:`~frp_assess.dynamics.options.INTEGRATION_TOLERANCE`).
+DEFAULT_TOLERANCE = INTEGRATION_TOLERANCE.default
 #: Bounds of the tolerance a user may ask for [-].
-TOLERANCE_RANGE = (1e-12, 1e-3)
+TOLERANCE_RANGE = INTEGRATION_TOLERANCE.bounds
 
 _FATES: dict[int, Fate] = {
     kp.FATE_FELL: "fell",
@@ -71,11 +74,11 @@ class ModelOptions:
             (Bogacki–Shampine 3(2); kept for the benchmark that chose the default).
     """
 
-    restitution: Restitution = "energy"
-    rupture: RuptureRule = "energy-transfer"
-    collapse: CollapseRule = "overturning"
-    free_vibration_tail: float = 0.0
-    tolerance: float = DEFAULT_TOLERANCE
+    restitution: Restitution = RESTITUTION.default
+    rupture: RuptureRule = RUPTURE.default
+    collapse: CollapseRule = COLLAPSE.default
+    free_vibration_tail: float = FREE_VIBRATION_TAIL.default
+    tolerance: float = INTEGRATION_TOLERANCE.default
     fixed_step: float | None = None
     method: Literal["dopri5", "bs3"] = "dopri5"
 
