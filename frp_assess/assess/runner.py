@@ -9,7 +9,14 @@ from dataclasses import dataclass
 
 from frp_assess.assess.cache import IdaCache, record_digest, task_key
 from frp_assess.assess.inputs import AssessmentInputs, Material
-from frp_assess.dynamics import IdaResult, IdaTask, Position, RockingModel, run_batch
+from frp_assess.dynamics import (
+    IdaResult,
+    IdaSettings,
+    IdaTask,
+    Position,
+    RockingModel,
+    run_batch,
+)
 from frp_assess.motions import G, Record
 
 #: progress(stage, done, total)
@@ -63,20 +70,36 @@ def summarise(results: Sequence[IdaResult], settings_max: float, a_rm_g: float) 
     )
 
 
+#: runs IDA tasks in order, as :func:`~frp_assess.dynamics.run_batch` (its signature)
+BatchRunner = Callable[..., list[IdaResult]]
+
+
 class IdaRunner:
-    """Runs (models × records) IDAs, reusing and filling the cache."""
+    """Runs (models × records) IDAs, reusing and filling the cache.
+
+    ``inputs`` gives the IDA settings (or ``settings``, for a runner without an assessment:
+    the study); ``batch`` computes the missing ones (default :func:`run_batch` on local
+    threads; the study passes its executor's).
+    """
 
     def __init__(
         self,
         records: Sequence[Record],
-        inputs: AssessmentInputs,
+        inputs: AssessmentInputs | None,
         cache: IdaCache,
         *,
         jobs: int | None = None,
         cancel: threading.Event | None = None,
+        settings: IdaSettings | None = None,
+        batch: BatchRunner = run_batch,
     ) -> None:
         self.records = list(records)
-        self.inputs = inputs
+        if settings is None:
+            if inputs is None:
+                raise ValueError("IdaRunner needs the assessment inputs or the IDA settings")
+            settings = inputs.ida
+        self.settings = settings
+        self.batch = batch
         self.cache = cache
         self.jobs = jobs
         self.cancel = cancel
@@ -104,13 +127,13 @@ class IdaRunner:
         slots: list[int] = []
         for m_i, model in enumerate(models):
             for r_i, rec in enumerate(self.records):
-                key = task_key(model, self._hashes[r_i], self.inputs.ida)
+                key = task_key(model, self._hashes[r_i], self.settings)
                 hit = self.cache.get(key)
                 if hit is not None:
                     out[m_i * n_rec + r_i] = hit
                 else:
                     keys.append(key)
-                    tasks.append(IdaTask(model, rec.acc, rec.dt, self.inputs.ida))
+                    tasks.append(IdaTask(model, rec.acc, rec.dt, self.settings))
                     slots.append(m_i * n_rec + r_i)
         hits = total - len(tasks)
         self.reused += hits
@@ -127,7 +150,7 @@ class IdaRunner:
             if on_pair is not None:
                 on_pair(*divmod(slots[i], n_rec))
 
-        fresh = run_batch(
+        fresh = self.batch(
             tasks,
             jobs=self.jobs,
             on_result=on_result,
