@@ -14,15 +14,13 @@ from typing import Any
 from frp_assess.cli.arg_types import number_in
 from frp_assess.dynamics import MECHANISMS, POSITIONS, ModelOptions, RockingModel
 from frp_assess.dynamics.options import (
-    COLLAPSE,
     FREE_VIBRATION_TAIL,
     INTEGRATION_TOLERANCE,
+    MODEL_OPTIONS,
     RESTITUTION,
-    RUPTURE,
     STRAIN_FACTOR,
     Option,
 )
-from frp_assess.dynamics.restitution import Restitution
 from frp_assess.dynamics.units import rebars_from_practice, wall_from_practice
 from frp_assess.errors import InputError
 from frp_assess.motions.readers import FORMATS, UNITS
@@ -59,11 +57,21 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
     bars.add_argument("--ratio", type=RATIO, metavar="RHO", help="active bar area ρ [‰ of B·1 m]")
     add_option_argument(bars, STRAIN_FACTOR, metavar="C")
     model = parser.add_argument_group("model options (docs/model.md §3–4)")
-    add_option_argument(model, RESTITUTION, metavar="energy|velocity|NUMBER")
-    add_option_argument(model, RUPTURE)
-    add_option_argument(model, COLLAPSE)
-    add_option_argument(model, INTEGRATION_TOLERANCE, metavar="TOL")
-    add_option_argument(model, FREE_VIBRATION_TAIL, metavar="SECONDS")
+    for option in MODEL_OPTIONS.values():
+        add_option_argument(model, option, metavar=_METAVARS.get(option.key))
+
+
+#: the metavar of some options in the help (the others show their choices or the key)
+_METAVARS = {
+    RESTITUTION.key: "energy|velocity|NUMBER",
+    INTEGRATION_TOLERANCE.key: "TOL",
+    FREE_VIBRATION_TAIL.key: "SECONDS",
+}
+
+
+def option_dest(option: Option[Any]) -> str:
+    """The attribute of the parsed arguments that holds ``option``."""
+    return option.flag.removeprefix("--").replace("-", "_")
 
 
 def option_type(option: Option[Any]) -> Callable[[str], float]:
@@ -82,7 +90,7 @@ def add_option_argument(
 ) -> None:
     """The command-line argument of a declared option (dynamics/options.py): its flag,
     default, accepted values and help.  An option that takes words and a number is read as
-    text (checked by :func:`parse_restitution`)."""
+    text (checked by :func:`parse_word_or_number`)."""
     kwargs: dict[str, Any] = {"default": option.default, "help": option.describe()}
     if option.numeric and not option.choices:
         kwargs["type"] = option_type(option)
@@ -125,19 +133,29 @@ def _positive(value: float, option: str, unit: str) -> float:
     return value
 
 
-def parse_restitution(text: str) -> Restitution:
-    """The ``--restitution`` argument: one of the words, or a velocity ratio in range."""
-    if text in RESTITUTION.choices:
-        return text  # type: ignore[return-value]  # one of the Convention words
+def parse_word_or_number(option: Option[Any], text: str) -> str | float:
+    """The argument of an option that takes words and a number (``--restitution``): one of
+    the words, or a number in its range; else a one-line :class:`InputError`."""
+    if text in option.choices:
+        return text
     try:
         value = float(text)
     except ValueError:
         value = math.nan
-    if not RESTITUTION.accepts(value):
-        raise InputError(
-            f"expected {RESTITUTION.allowed_text()}, found {text!r}", key=RESTITUTION.flag
-        )
+    if not option.accepts(value):
+        raise InputError(f"expected {option.allowed_text()}, found {text!r}", key=option.flag)
     return value
+
+
+def model_options(args: argparse.Namespace) -> ModelOptions:
+    """The model options of the parsed arguments (every one of dynamics/options.py)."""
+    values: dict[str, Any] = {}
+    for key, option in MODEL_OPTIONS.items():
+        value = getattr(args, option_dest(option))
+        if option.choices and option.numeric and isinstance(value, str):
+            value = parse_word_or_number(option, value)
+        values[key] = value
+    return ModelOptions(**values)
 
 
 def build_model(args: argparse.Namespace) -> RockingModel:
@@ -181,11 +199,4 @@ def build_model(args: argparse.Namespace) -> RockingModel:
         )
     if not (math.isfinite(args.tail) and args.tail >= 0.0):
         raise InputError(f"expected a duration >= 0 s, found {args.tail:g}", key="--tail")
-    options = ModelOptions(
-        restitution=parse_restitution(args.restitution),
-        rupture=args.rupture,
-        collapse=args.collapse,
-        free_vibration_tail=args.tail,
-        tolerance=args.rtol,
-    )
-    return RockingModel(wall, args.mechanism, rebars, options)
+    return RockingModel(wall, args.mechanism, rebars, model_options(args))

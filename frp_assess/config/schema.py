@@ -29,13 +29,16 @@ from pydantic import (
 from pydantic_core import PydanticCustomError
 
 from frp_assess.config.library import FRP_MATERIALS, MASONRY, FrpMaterial, did_you_mean
+from frp_assess.dynamics.ida import IdaSettings
 from frp_assess.dynamics.options import (
     COLLAPSE,
     FREE_VIBRATION_TAIL,
     IDA_MAX_MULTIPLIER,
+    IDA_OPTIONS,
     IDA_STEP_RATIO,
     IDA_TOLERANCE,
     INTEGRATION_TOLERANCE,
+    MODEL_OPTIONS,
     RESTITUTION,
     RUPTURE,
     STRAIN_FACTOR,
@@ -45,6 +48,7 @@ from frp_assess.dynamics.options import (
     RuptureRule,
 )
 from frp_assess.dynamics.rebars import POSITIONS, Position
+from frp_assess.dynamics.rocking import ModelOptions
 from frp_assess.dynamics.wall import Mechanism
 
 GroundType = Literal["A", "B", "C", "D", "E"]
@@ -542,6 +546,10 @@ class IdaSpec(_Model):
     tolerance: Number = option_field(IDA_TOLERANCE)
     max_multiplier: Number = option_field(IDA_MAX_MULTIPLIER)
 
+    def settings(self) -> IdaSettings:
+        """The search rule these fields give."""
+        return IdaSettings(**{key: getattr(self, key) for key in IDA_OPTIONS})
+
 
 class IntegrationSpec(_Model):
     """Error control of the time integration (docs/model.md §4)."""
@@ -558,6 +566,12 @@ class ModelOptionsSpec(_Model):
     collapse: CollapseRule = option_field(COLLAPSE)
     strain_factor: Number = option_field(STRAIN_FACTOR)
     free_vibration_tail: Number = option_field(FREE_VIBRATION_TAIL)
+
+    def model_options(self, tolerance: float) -> ModelOptions:
+        """The model options these fields give, integrated at ``tolerance`` [-] (a project
+        file holds it under ``integration``, a study file as ``integration_tolerance``)."""
+        given = {key: getattr(self, key) for key in MODEL_OPTIONS if key != "tolerance"}
+        return ModelOptions(**given, tolerance=tolerance)
 
 
 class AnalysisSpec(ModelOptionsSpec):

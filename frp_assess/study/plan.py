@@ -18,7 +18,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 from frp_assess.config.library import FRP_MATERIALS, did_you_mean
-from frp_assess.dynamics import IdaSettings, ModelOptions, RockingModel
+from frp_assess.dynamics import RockingModel
 from frp_assess.dynamics.units import rebars_from_practice, wall_from_practice
 from frp_assess.errors import InputError
 from frp_assess.study.schema import StudyFile, spectrum_label, spectrum_text
@@ -122,16 +122,8 @@ class StudyPlan:
         self.n_groups = (
             len(self.spectra) * len(self.mechanisms) * len(self.heights) * len(self.geometry)
         )
-        o = study.model
-        self.options = ModelOptions(
-            restitution=o.restitution,
-            rupture=o.rupture,
-            collapse=o.collapse,
-            free_vibration_tail=o.free_vibration_tail,
-            tolerance=o.integration_tolerance,
-        )
-        i = study.ida
-        self.ida_settings = IdaSettings(i.step_ratio, i.tolerance, i.max_multiplier)
+        self.options = study.model.model_options(study.model.integration_tolerance)
+        self.ida_settings = study.ida.settings()
 
     def __len__(self) -> int:
         return self.n_groups * self.group_size

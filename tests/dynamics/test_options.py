@@ -55,6 +55,25 @@ def test_every_model_option_is_declared_with_its_default() -> None:
         assert user_fields[key].default == option.default, key
 
 
+def test_every_model_option_has_its_schema_field() -> None:
+    """A new option in MODEL_OPTIONS needs a field in ModelOptionsSpec (shared by the project
+    and study files), the integration tolerance aside."""
+    missing = set(MODEL_OPTIONS) - {INTEGRATION_TOLERANCE.key} - set(ModelOptionsSpec.model_fields)
+    assert not missing, f"add {sorted(missing)} to config/schema.py ModelOptionsSpec"
+
+
+def test_the_schemas_give_the_dataclasses() -> None:
+    spec = ModelOptionsSpec.model_validate(
+        {"restitution": 0.7, "rupture": "velocity-continuous", "free_vibration_tail": 2.0}
+    )
+    assert spec.model_options(1e-9) == ModelOptions(
+        restitution=0.7, rupture="velocity-continuous", free_vibration_tail=2.0, tolerance=1e-9
+    )
+    assert ModelOptionsSpec().model_options(INTEGRATION_TOLERANCE.default) == ModelOptions()
+    ida = IdaSpec.model_validate({"step_ratio": 1.2, "max_multiplier": 50.0})
+    assert ida.settings() == IdaSettings(step_ratio=1.2, max_multiplier=50.0)
+
+
 def test_the_ida_settings_are_the_declared_ones() -> None:
     assert {f.name: f.default for f in fields(IdaSettings)} == {
         k: o.default for k, o in IDA_OPTIONS.items()
