@@ -17,6 +17,7 @@ from frp_assess.dynamics import (
     RockingModel,
     Wall,
 )
+from frp_assess.dynamics.units import rebars_from_practice, wall_from_practice
 from frp_assess.motions import ElasticSpectrum
 
 #: the name of case 0, the wall without bars
@@ -113,11 +114,11 @@ class AssessmentInputs:
 
     @property
     def wall(self) -> Wall:
-        return Wall(self.thickness, self.height, self.unit_weight * 1e3)
+        return wall_from_practice(self.thickness, self.height, self.unit_weight)
 
     def rebars(self, material: Material, position: Position, ratio: float) -> Rebars:
-        return Rebars(
-            material.elastic_modulus * 1e9,
+        return rebars_from_practice(
+            material.elastic_modulus,
             material.ultimate_strain,
             position,
             ratio,
