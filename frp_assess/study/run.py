@@ -307,6 +307,8 @@ def executor_batch(ex: Executor) -> BatchRunner:
         on_result: OnResult | None = None,
         cancel: threading.Event | None = None,
     ) -> list[IdaResult]:
+        if not tasks:  # everything came from the cache: no call to a remote cluster
+            return []
         out: list[IdaResult | None] = [None] * len(tasks)
 
         def got(i: int, res: IdaResult) -> None:

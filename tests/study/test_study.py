@@ -223,3 +223,13 @@ def test_the_study_runs_through_the_assessment_runner_on_its_executor(
 def test_a_runner_needs_inputs_or_settings(records):
     with pytest.raises(ValueError, match="inputs or the IDA settings"):
         IdaRunner(records["A2"], None, IdaCache(None))
+
+
+def test_a_chunk_found_in_the_cache_does_not_call_the_executor():
+    from frp_assess.study.run import executor_batch
+
+    class Refusing(LocalExecutor):
+        def run(self, tasks, on_result, progress, cancel):
+            raise AssertionError("the executor was called with nothing to do")
+
+    assert executor_batch(Refusing(1))([]) == []
