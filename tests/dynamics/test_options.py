@@ -199,3 +199,19 @@ def test_descriptions_state_range_unit_and_default() -> None:
     assert FREE_VIBRATION_TAIL.describe().endswith(": a number in [0, 60] s (default 0).")
     assert IDA_MAX_MULTIPLIER.range_text() == "(1, 1000]"
     assert VERIFY.describe().endswith("(default no).")
+
+
+def test_the_template_shows_the_declared_defaults() -> None:
+    """`frp-assess new` writes the analysis block with its defaults: they are the declared ones."""
+    from frp_assess.api import template_text
+    from frp_assess.config import load_project_text
+
+    analysis = load_project_text(template_text(), "t.yaml").project.analysis
+    for key, option in MODEL_OPTIONS.items():
+        if option is not INTEGRATION_TOLERANCE:
+            assert getattr(analysis, key) == option.default, key
+    assert analysis.strain_factor == STRAIN_FACTOR.default
+    assert analysis.integration.tolerance == INTEGRATION_TOLERANCE.default
+    assert analysis.integration.verify == VERIFY.default
+    for key, option in IDA_OPTIONS.items():
+        assert getattr(analysis.ida, key) == option.default, key
