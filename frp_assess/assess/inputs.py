@@ -17,6 +17,7 @@ from frp_assess.dynamics import (
     RockingModel,
     Wall,
 )
+from frp_assess.dynamics.options import STRAIN_FACTOR, VERIFY
 from frp_assess.dynamics.units import rebars_from_practice, wall_from_practice
 from frp_assess.motions import ElasticSpectrum
 
@@ -102,8 +103,9 @@ class AssessmentInputs:
     scale_to_spectrum: bool = True
     t1: float = 1.0  #: reference period of the compliance checks [s]
     model: ModelOptions = ModelOptions()
-    verify: bool = False  #: repeat every IDA at a 10× tighter tolerance (docs/model.md §4.5)
-    strain_factor: float = 0.5
+    #: repeat every IDA at a 10× tighter tolerance (docs/model.md §4.5)
+    verify: bool = VERIFY.default
+    strain_factor: float = STRAIN_FACTOR.default
     ida: IdaSettings = IdaSettings()
     target: float = 1.0  #: required mean capacity/demand
     costs: Costs = Costs()
