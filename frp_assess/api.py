@@ -9,9 +9,13 @@ everything, writes the results directory as one set (locked, staged, swapped in:
 from __future__ import annotations
 
 import datetime as _dt
+import json
+import math
+import re
 import threading
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import asdict, dataclass
+from importlib import resources
 from pathlib import Path
 from typing import Any
 
@@ -29,14 +33,25 @@ from frp_assess.assess.results import (
     results_json,
     spectra_csv,
 )
-from frp_assess.assess.runner import DesignResult, IdaRunner, design_search, summarise
+from frp_assess.assess.runner import (
+    CaseSummary,
+    DesignResult,
+    IdaRunner,
+    design_search,
+    design_value_rule,
+    summarise,
+)
 from frp_assess.assess.seismic import SeismicInput, build_records
 from frp_assess.assess.sensitivity import sensitivity
 from frp_assess.assess.verification import verify
+from frp_assess.dynamics import IdaResult, IdaSettings, RockingModel, RockingResult
 from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_write_text
-from frp_assess.motions import write_at2
+from frp_assess.motions import Record, write_at2
 from frp_assess.output_set import FolderLock, staged_set
+from frp_assess.study import run as study_run
+from frp_assess.study.run import Executor, StudyStats
+from frp_assess.study.schema import StudyFile
 from frp_assess.text_safety import plain
 
 #: progress(stage, done, total); stages: "records", "ida", "design", "writing"
@@ -277,3 +292,141 @@ def missing_idas(inputs: AssessmentInputs, seismic: SeismicInput, out_dir: Path)
 def default_out_dir(project_file: Path) -> Path:
     """``<stem>-results/`` next to the project file."""
     return project_file.with_name(f"{project_file.stem}-results")
+
+
+# ----------------------------------------------------------------------------------------------
+# The other commands: one time history, one IDA, a run's time history, a new project, a study.
+# The CLI and the TUI call these; they build no models and run no IDA loops of their own.
+
+
+def simulate(
+    model: RockingModel, record: Record, scale: float = 1.0, *, history: bool = False
+) -> RockingResult:
+    """One time history of ``model`` under ``record`` scaled by ``scale`` [-] (``history``:
+    keep θ(t), θ'(t) and the bar strain at the record's samples)."""
+    if not (math.isfinite(scale) and scale > 0.0):
+        raise ValueError(f"the record multiplier must be > 0, got {scale!r}")
+    return model.run(record.acc, record.dt, scale, history=history)
+
+
+@dataclass(frozen=True)
+class IdaOutcome:
+    """The IDA of one wall under a set of records, summarised as `run` summarises a case."""
+
+    records: tuple[Record, ...]
+    results: tuple[IdaResult, ...]  #: one per record, in order
+    summary: CaseSummary  #: mean/least favourable/design a_dyn [g], the lower-bound rule
+    design_value: str  #: how the design a_dyn is taken from the records (results.json wording)
+    computed: int  #: IDAs computed (the others came from the cache)
+
+
+def run_ida(
+    model: RockingModel,
+    records: Sequence[Record],
+    settings: IdaSettings,
+    *,
+    jobs: int | None = None,
+    cache_dir: Path | None = None,
+    progress: Callable[[int, int], None] | None = None,
+    cancel: threading.Event | None = None,
+) -> IdaOutcome:
+    """IDA of ``model`` under every record, through the cached runner of `run`
+    (:class:`~frp_assess.assess.runner.IdaRunner`; ``cache_dir`` None: no cache), summarised
+    by the one definition of the mean (a record without collapse up to C_max counts at
+    C_max·PGA, a lower bound: :func:`~frp_assess.assess.runner.summarise`)."""
+    runner = IdaRunner(
+        records, None, IdaCache(cache_dir), jobs=jobs, cancel=cancel, settings=settings
+    )
+    results = runner.run([model], progress)[0]
+    return IdaOutcome(
+        tuple(records),
+        tuple(results),
+        summarise(results, settings.max_multiplier, model.wall.a_rm_g),
+        design_value_rule(len(results)),
+        runner.computed,
+    )
+
+
+@dataclass(frozen=True)
+class TimeHistory:
+    """One case of a run under one of its records at one multiplier."""
+
+    model: RockingModel  #: the case's wall, bars and options
+    record: Record
+    multiplier: float  #: C [-]
+    result: RockingResult  #: with its history
+
+
+def time_history(
+    inputs: AssessmentInputs,
+    records: Sequence[Record],
+    case_index: int,
+    record_index: int,
+    multiplier: float,
+) -> TimeHistory:
+    """The time history of case ``case_index`` of a run (0: the unreinforced wall, then each
+    option) under its record ``record_index`` scaled by ``multiplier``, as the IDA ran it (on
+    the floor motion at Z for a wall above the ground floor)."""
+    model = inputs.case_models()[case_index]
+    rec = floor_record(records[record_index], inputs.building)
+    res = simulate(model, rec, float(multiplier), history=True)
+    return TimeHistory(model, rec, float(multiplier), res)
+
+
+#: the project name in the packaged template, replaced by one taken from the file name
+TEMPLATE_NAME = "Example wall"
+
+
+def template_text() -> str:
+    """The text of the packaged, commented template ``frp_assess/templates/wall.yaml``."""
+    return resources.files("frp_assess").joinpath("templates/wall.yaml").read_text("utf-8")
+
+
+def project_name_from_path(path: Path) -> str:
+    """A project name from a file name, as a YAML scalar: ``north_wall.yaml`` ->
+    ``north wall`` (none left: the template's); a name YAML would read otherwise is quoted
+    (as a JSON string)."""
+    name = path.stem.replace("_", " ").replace("-", " ").strip() or TEMPLATE_NAME
+    if not re.fullmatch(r"[A-Za-z0-9][\w .()-]*", name):
+        name = json.dumps(name, ensure_ascii=False)  # a JSON string is a quoted YAML scalar
+    return name
+
+
+def new_project_text(path: Path | None, template: str | None = None) -> str:
+    """The text of a new project (`frp-assess new`, the TUI's new project): ``template``
+    (default: the packaged one) with the project named after ``path`` (None: unchanged)."""
+    text = template or template_text()
+    if path is None:
+        return text
+    return text.replace(f"name: {TEMPLATE_NAME}", f"name: {project_name_from_path(path)}", 1)
+
+
+def run_study(
+    study: StudyFile,
+    out_dir: Path,
+    *,
+    executor: Executor | None = None,
+    jobs: int | None = None,
+    progress: Callable[[int, int], None] | None = None,
+    cancel: threading.Event | None = None,
+    records: dict[str, list[Record]] | None = None,
+    figures: bool = True,
+) -> tuple[StudyStats, list[Path]]:
+    """Run a parametric study into ``out_dir`` (chunked, cached, resumable:
+    :func:`frp_assess.study.run.run_study`, on the cached runner of `run`) and, if
+    ``figures``, write its PDF; returns the run's counts and the figure files written."""
+    stats = study_run.run_study(
+        study,
+        out_dir,
+        jobs=jobs,
+        executor=executor,
+        progress=progress,
+        cancel=cancel,
+        records=records,
+    )
+    written: list[Path] = []
+    if figures:
+        from frp_assess.study.figures import write_study_pdf
+
+        written = list(write_study_pdf(out_dir))
+    return stats, written

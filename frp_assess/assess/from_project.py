@@ -31,7 +31,7 @@ from frp_assess.config.schema import (
     PresetSpectrum,
     TableSpectrum,
 )
-from frp_assess.dynamics import IdaSettings, ModelOptions
+from frp_assess.dynamics import IdaSettings
 from frp_assess.errors import InputError
 from frp_assess.motions import (
     ElasticSpectrum,
@@ -130,14 +130,7 @@ def inputs_from_project(project: Project, base_dir: Path, input_file: str = "") 
         else float(wall.compressive_strength),
         scale_to_spectrum=spec.scale_to_spectrum,
         t1=seismic.t1,
-        model=ModelOptions(
-            restitution=analysis.restitution,
-            rupture=analysis.rupture,
-            collapse=analysis.collapse,
-            free_vibration_tail=analysis.free_vibration_tail,
-            tolerance=analysis.integration.tolerance,
-            pivot=analysis.pivot,
-        ),
+        model=analysis.model_options(analysis.integration.tolerance),
         verify=analysis.integration.verify,
         strain_factor=analysis.strain_factor,
         ida=IdaSettings(

@@ -18,6 +18,8 @@ from frp_assess.dynamics import (
     RockingModel,
     Wall,
 )
+from frp_assess.dynamics.options import STRAIN_FACTOR, VERIFY
+from frp_assess.dynamics.units import rebars_from_practice, wall_from_practice
 from frp_assess.motions import ElasticSpectrum
 
 #: the name of case 0, the wall without bars
@@ -122,8 +124,9 @@ class AssessmentInputs:
     scale_to_spectrum: bool = True
     t1: float = 1.0  #: reference period of the compliance checks [s]
     model: ModelOptions = ModelOptions()
-    verify: bool = False  #: repeat every IDA at a 10× tighter tolerance (docs/model.md §4.5)
-    strain_factor: float = 0.5
+    #: repeat every IDA at a 10× tighter tolerance (docs/model.md §4.5)
+    verify: bool = VERIFY.default
+    strain_factor: float = STRAIN_FACTOR.default
     ida: IdaSettings = IdaSettings()
     target: float = 1.0  #: required mean capacity/demand
     costs: Costs = Costs()
@@ -145,12 +148,13 @@ class AssessmentInputs:
     @property
     def wall(self) -> Wall:
         """The dynamics wall (SI), with f_d for the crushing pivot."""
-        f_d = self.masonry_strength.f_d * 1e6  # [Pa]
-        return Wall(self.thickness, self.height, self.unit_weight * 1e3, f_d)
+        return wall_from_practice(
+            self.thickness, self.height, self.unit_weight, self.masonry_strength.f_d
+        )
 
     def rebars(self, material: Material, position: Position, ratio: float) -> Rebars:
-        return Rebars(
-            material.elastic_modulus * 1e9,
+        return rebars_from_practice(
+            material.elastic_modulus,
             material.ultimate_strain,
             position,
             ratio,

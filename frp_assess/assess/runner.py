@@ -9,8 +9,15 @@ from dataclasses import dataclass
 
 from frp_assess.assess.cache import IdaCache, record_digest, task_key
 from frp_assess.assess.floor_input import floor_record, in_ground_terms
-from frp_assess.assess.inputs import AssessmentInputs, Material
-from frp_assess.dynamics import IdaResult, IdaTask, Position, RockingModel, run_batch
+from frp_assess.assess.inputs import AssessmentInputs, Building, Material
+from frp_assess.dynamics import (
+    IdaResult,
+    IdaSettings,
+    IdaTask,
+    Position,
+    RockingModel,
+    run_batch,
+)
 from frp_assess.motions import G, Record
 
 #: progress(stage, done, total)
@@ -64,8 +71,16 @@ def summarise(results: Sequence[IdaResult], settings_max: float, a_rm_g: float) 
     )
 
 
+#: runs IDA tasks in order, as :func:`~frp_assess.dynamics.run_batch` (its signature)
+BatchRunner = Callable[..., list[IdaResult]]
+
+
 class IdaRunner:
     """Runs (models × records) IDAs, reusing and filling the cache.
+
+    ``inputs`` gives the IDA settings and the building (or ``settings`` and ``building``, for a
+    runner without an assessment: the study); ``batch`` computes the missing ones (default
+    :func:`run_batch` on local threads; the study passes its executor's).
 
     The one place where a wall above the ground floor gets its floor motion: the IDA of each
     (model, record) pair runs on ``motions[i]`` (the floor motion at Z of ``records[i]``, or
@@ -76,19 +91,30 @@ class IdaRunner:
     def __init__(
         self,
         records: Sequence[Record],
-        inputs: AssessmentInputs,
+        inputs: AssessmentInputs | None,
         cache: IdaCache,
         *,
         jobs: int | None = None,
         cancel: threading.Event | None = None,
+        settings: IdaSettings | None = None,
+        building: Building | None = None,
+        batch: BatchRunner = run_batch,
     ) -> None:
         self.records = list(records)
-        self.inputs = inputs
+        if settings is None:
+            if inputs is None:
+                raise ValueError("IdaRunner needs the assessment inputs or the IDA settings")
+            settings = inputs.ida
+        if inputs is not None:
+            building = inputs.building
+        self.settings = settings
+        self.building = building
+        self.batch = batch
         self.cache = cache
         self.jobs = jobs
         self.cancel = cancel
         #: the motion at the wall's base under each record (the floor's, for a building)
-        self.motions = [floor_record(r, inputs.building) for r in self.records]
+        self.motions = [floor_record(r, building) for r in self.records]
         self._hashes = [record_digest(r.acc, r.dt) for r in self.records]
         self.computed = 0
         self.reused = 0
@@ -113,14 +139,14 @@ class IdaRunner:
         slots: list[int] = []
         for m_i, model in enumerate(models):
             for r_i in range(n_rec):
-                key = task_key(model, self._hashes[r_i], self.inputs.ida, self.inputs.building)
+                key = task_key(model, self._hashes[r_i], self.settings, self.building)
                 hit = self.cache.get(key)
                 if hit is not None:
                     out[m_i * n_rec + r_i] = hit
                 else:
                     motion = self.motions[r_i]
                     keys.append(key)
-                    tasks.append(IdaTask(model, motion.acc, motion.dt, self.inputs.ida))
+                    tasks.append(IdaTask(model, motion.acc, motion.dt, self.settings))
                     slots.append(m_i * n_rec + r_i)
         hits = total - len(tasks)
         self.reused += hits
@@ -133,7 +159,7 @@ class IdaRunner:
             progress(hits, total)
 
         def ground_terms(i: int, res: IdaResult) -> IdaResult:
-            if self.inputs.building is None:
+            if self.building is None:
                 return res
             return in_ground_terms(res, self.records[slots[i] % n_rec].pga)
 
@@ -142,7 +168,7 @@ class IdaRunner:
             if on_pair is not None:
                 on_pair(*divmod(slots[i], n_rec))
 
-        fresh = run_batch(
+        fresh = self.batch(
             tasks,
             jobs=self.jobs,
             on_result=on_result,

@@ -6,11 +6,16 @@ import argparse
 import json
 import math
 
-from frp_assess.assess.runner import design_value_rule, summarise
-from frp_assess.cli.arg_types import number_in
+from frp_assess.api import run_ida
 from frp_assess.cli.output import Column, make_console, print_table, user
-from frp_assess.cli.wall_args import add_model_arguments, add_record_arguments, build_model
-from frp_assess.dynamics import IdaSettings, IdaTask, run_batch
+from frp_assess.cli.wall_args import (
+    add_model_arguments,
+    add_option_argument,
+    add_record_arguments,
+    build_model,
+)
+from frp_assess.dynamics import IdaSettings
+from frp_assess.dynamics.options import IDA_OPTIONS
 from frp_assess.errors import InputError
 from frp_assess.motions.readers import read_record
 from frp_assess.motions.record import G
@@ -28,21 +33,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     add_model_arguments(p)
     add_record_arguments(p, many=True)
     ida = p.add_argument_group("IDA search")
-    ida.add_argument(
-        "--step-ratio", type=number_in(1.01, 10), default=1.10, help="hunt ratio s (default 1.10)"
-    )
-    ida.add_argument(
-        "--tolerance",
-        type=number_in(1e-4, 0.1),
-        default=0.005,
-        help="bisection tolerance (0.005)",
-    )
-    ida.add_argument(
-        "--max-multiplier",
-        type=number_in(1, 1000, low_open=True),
-        default=100.0,
-        help="give up beyond C_max = this × C₀ (default 100)",
-    )
+    for option in IDA_OPTIONS.values():
+        add_option_argument(ida, option)
     p.add_argument("--jobs", type=int, default=None, help="worker threads (default: all cores)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(handler=run)
@@ -57,8 +49,8 @@ def run(args: argparse.Namespace) -> int:
     if args.jobs is not None and args.jobs < 1:
         raise InputError(f"expected at least 1 job, found {args.jobs}", key="--jobs")
     records = [read_record(path, format=args.format, units=args.units) for path in args.record]
-    tasks = [IdaTask(model, r.acc, r.dt, settings) for r in records]
-    results = run_batch(tasks, jobs=args.jobs)
+    outcome = run_ida(model, records, settings, jobs=args.jobs)
+    results = outcome.results
     rows = []
     for rec, res in zip(records, results, strict=True):
         rows.append(
@@ -71,8 +63,8 @@ def run(args: argparse.Namespace) -> int:
             }
         )
     # one definition with `run`: a record that does not collapse up to C_max counts at
-    # C_max·PGA, a lower bound (frp_assess.assess.runner.summarise)
-    summary = summarise(results, settings.max_multiplier, model.wall.a_rm_g)
+    # C_max·PGA, a lower bound (frp_assess.assess.runner.summarise, through api.run_ida)
+    summary = outcome.summary
     n_bound = sum(r["a_dyn"] is None for r in rows)
     out = {
         "alpha": model.wall.alpha,
@@ -82,7 +74,7 @@ def run(args: argparse.Namespace) -> int:
         "min_a_dyn": summary.min_a_dyn,
         "mean_q": summary.mean_q,
         "design_a_dyn": summary.design_a_dyn,
-        "design_value": design_value_rule(len(rows)),
+        "design_value": outcome.design_value,
         "lower_bound": summary.lower_bound,
         "records_without_collapse": n_bound,
     }
@@ -127,7 +119,7 @@ def run(args: argparse.Namespace) -> int:
     console.print(
         f"over the {len(rows)} records: mean a_dyn = {ge}{summary.mean_a_dyn:.4f} g, mean q = "
         f"{ge}{summary.mean_q:.3f}, least favourable a_dyn = {ge}{summary.min_a_dyn:.4f} g; "
-        f"design a_dyn ({design_value_rule(len(rows))}) = {ge}{summary.design_a_dyn:.4f} g"
+        f"design a_dyn ({outcome.design_value}) = {ge}{summary.design_a_dyn:.4f} g"
     )
     if n_bound:
         console.print(

@@ -3,16 +3,12 @@
 from __future__ import annotations
 
 import argparse
-import json
-import re
-from importlib import resources
 from pathlib import Path
 
+from frp_assess.api import new_project_text
 from frp_assess.cli.output import plain_line
 from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_write_text
-
-TEMPLATE_NAME = "Example wall"
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -27,21 +23,13 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(handler=run)
 
 
-def template_text() -> str:
-    """The text of the packaged template ``frp_assess/templates/wall.yaml``."""
-    return resources.files("frp_assess").joinpath("templates/wall.yaml").read_text("utf-8")
-
-
 def run(args: argparse.Namespace) -> int:
     path = Path(args.file)
     if path.exists() and not args.force:
         raise InputError(f"{path} already exists; use --force to overwrite it")
     if path.is_dir():
         raise InputError(f"{path} is a directory")
-    name = path.stem.replace("_", " ").replace("-", " ").strip() or TEMPLATE_NAME
-    if not re.fullmatch(r"[A-Za-z0-9][\w .()-]*", name):
-        name = json.dumps(name, ensure_ascii=False)  # a JSON string is a quoted YAML scalar
-    text = template_text().replace(f"name: {TEMPLATE_NAME}", f"name: {name}", 1)
+    text = new_project_text(path)
     try:
         atomic_write_text(path, text)
     except OSError as exc:

@@ -9,6 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
+from frp_assess.api import simulate
 from frp_assess.cli.arg_types import number_in
 from frp_assess.cli.output import plain_line
 from frp_assess.cli.wall_args import add_model_arguments, add_record_arguments, build_model
@@ -47,7 +48,7 @@ def run(args: argparse.Namespace) -> int:
     if args.out:
         check_out_file(Path(args.out))
     record = read_record(args.record, format=args.format, units=args.units)
-    res = model.run(record.acc, record.dt, args.scale, history=args.out is not None)
+    res = simulate(model, record, args.scale, history=args.out is not None)
     out = {
         "collapsed": res.collapsed,
         "fate": res.fate,

@@ -50,7 +50,8 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from frp_assess.study import load_study, run_study
+    from frp_assess.api import run_study
+    from frp_assess.study import load_study
     from frp_assess.study.executors import make_executor
 
     path = Path(args.file)
@@ -88,13 +89,14 @@ def run(args: argparse.Namespace) -> int:
                 f"{executor.describe()}"
             )
             try:
-                stats = run_study(
+                stats, written = run_study(
                     study,
                     out_dir,
                     executor=executor,
                     progress=progress,
                     cancel=cancel,
                     records=records,
+                    figures=not args.no_figures,
                 )
             except KeyboardInterrupt:
                 cancel.set()
@@ -105,10 +107,6 @@ def run(args: argparse.Namespace) -> int:
         f"{stats.computed} IDAs computed, {stats.reused} reused; {stats.seconds:.1f} s; "
         f"results in {user(out_dir)}/"
     )
-    if not args.no_figures:
-        from frp_assess.study.figures import write_study_pdf
-
-        written = write_study_pdf(out_dir)
-        for w in written:
-            console.print(f"wrote {user(w)}")
+    for w in written:
+        console.print(f"wrote {user(w)}")
     return 0

@@ -29,14 +29,28 @@ from pydantic import (
 from pydantic_core import PydanticCustomError
 
 from frp_assess.config.library import FRP_MATERIALS, MASONRY, FrpMaterial, did_you_mean
-from frp_assess.dynamics.pivot import PivotRule
-from frp_assess.dynamics.rebars import POSITIONS, Position
-from frp_assess.dynamics.rocking import (
-    DEFAULT_TOLERANCE,
-    TOLERANCE_RANGE,
+from frp_assess.dynamics.ida import IdaSettings
+from frp_assess.dynamics.options import (
+    COLLAPSE,
+    FREE_VIBRATION_TAIL,
+    IDA_MAX_MULTIPLIER,
+    IDA_OPTIONS,
+    IDA_STEP_RATIO,
+    IDA_TOLERANCE,
+    INTEGRATION_TOLERANCE,
+    MODEL_OPTIONS,
+    PIVOT,
+    RESTITUTION,
+    RUPTURE,
+    STRAIN_FACTOR,
+    VERIFY,
     CollapseRule,
+    Option,
     RuptureRule,
 )
+from frp_assess.dynamics.pivot import PivotRule
+from frp_assess.dynamics.rebars import POSITIONS, Position
+from frp_assess.dynamics.rocking import ModelOptions
 from frp_assess.dynamics.wall import Mechanism
 from frp_assess.motions.floor import default_period
 
@@ -497,14 +511,24 @@ InterventionItem = Annotated[
 
 
 # ------------------------------------------------------------------------------- analysis
+def option_field(option: Option[Any]) -> Any:
+    """The pydantic field of a declared option: its default, range and description."""
+    bounds: dict[str, float] = {}
+    if option.numeric and not option.choices:
+        if option.low is not None:
+            bounds["gt" if option.low_open else "ge"] = option.low
+        if option.high is not None:
+            bounds["lt" if option.high_open else "le"] = option.high
+    return Field(option.default, description=option.describe(), **bounds)  # type: ignore[call-overload]
+
+
 def _restitution(value: Any) -> Any:
-    if isinstance(value, str) and value in ("energy", "velocity"):
+    if isinstance(value, str) and RESTITUTION.accepts(value):
         return value
-    if isinstance(value, int | float) and not isinstance(value, bool) and 0 < value <= 1:
+    if isinstance(value, int | float) and RESTITUTION.accepts(value):
         return float(value)
     raise PydanticCustomError(
-        "restitution",
-        f"expected energy, velocity or a number in (0, 1], found {value!r}",
+        "restitution", f"expected {RESTITUTION.allowed_text()}, found {value!r}"
     )
 
 
@@ -514,8 +538,12 @@ Restitution = Annotated[
     WithJsonSchema(
         {
             "anyOf": [
-                {"enum": ["energy", "velocity"], "type": "string"},
-                {"type": "number", "exclusiveMinimum": 0, "maximum": 1},
+                {"enum": list(RESTITUTION.choices), "type": "string"},
+                {
+                    "type": "number",
+                    "exclusiveMinimum": RESTITUTION.low,
+                    "maximum": RESTITUTION.high,
+                },
             ]
         }
     ),
@@ -525,74 +553,42 @@ Restitution = Annotated[
 class IdaSpec(_Model):
     """The incremental dynamic analysis rule (docs/model.md §5)."""
 
-    step_ratio: Number = Field(
-        1.10,
-        ge=1.01,
-        le=10,
-        description="Step ratio s of C, 1.01-10 (1.10); closer to 1 only multiplies the runs.",
-    )
-    tolerance: Number = Field(
-        0.005,
-        ge=1e-4,
-        le=0.1,
-        description="Relative bisection tolerance, 1e-4 to 0.1 (0.005); finer is below the "
-        "accuracy of the integration.",
-    )
-    max_multiplier: Number = Field(
-        100.0,
-        gt=1,
-        le=1000,
-        description="Give up at this multiple of C0 [-], 1-1000 (100): 'no collapse'.",
-    )
+    step_ratio: Number = option_field(IDA_STEP_RATIO)
+    tolerance: Number = option_field(IDA_TOLERANCE)
+    max_multiplier: Number = option_field(IDA_MAX_MULTIPLIER)
+
+    def settings(self) -> IdaSettings:
+        """The search rule these fields give."""
+        return IdaSettings(**{key: getattr(self, key) for key in IDA_OPTIONS})
 
 
 class IntegrationSpec(_Model):
     """Error control of the time integration (docs/model.md §4)."""
 
-    tolerance: Number = Field(
-        DEFAULT_TOLERANCE,
-        ge=TOLERANCE_RANGE[0],
-        le=TOLERANCE_RANGE[1],
-        description=f"Local error tolerance of the Dormand-Prince 5(4) pair [-], "
-        f"{TOLERANCE_RANGE[0]:g}-{TOLERANCE_RANGE[1]:g} ({DEFAULT_TOLERANCE:g}).",
-    )
-    verify: bool = Field(
-        False,
-        description="Repeat every IDA at a 10x tighter tolerance and report the largest "
-        "change of a collapse multiplier (false).",
-    )
+    tolerance: Number = option_field(INTEGRATION_TOLERANCE)
+    verify: bool = option_field(VERIFY)
 
 
-class AnalysisSpec(_Model):
+class ModelOptionsSpec(_Model):
+    """The model options of docs/model.md §2–4 a project and a study file share."""
+
+    restitution: Restitution = option_field(RESTITUTION)
+    rupture: RuptureRule = option_field(RUPTURE)
+    collapse: CollapseRule = option_field(COLLAPSE)
+    strain_factor: Number = option_field(STRAIN_FACTOR)
+    free_vibration_tail: Number = option_field(FREE_VIBRATION_TAIL)
+    pivot: PivotRule = option_field(PIVOT)
+
+    def model_options(self, tolerance: float) -> ModelOptions:
+        """The model options these fields give, integrated at ``tolerance`` [-] (a project
+        file holds it under ``integration``, a study file as ``integration_tolerance``)."""
+        given = {key: getattr(self, key) for key in MODEL_OPTIONS if key != "tolerance"}
+        return ModelOptions(**given, tolerance=tolerance)
+
+
+class AnalysisSpec(ModelOptionsSpec):
     """Model options and the IDA settings (docs/model.md §3–5)."""
 
-    restitution: Restitution = Field(
-        "energy",
-        description="energy: velocity ratio sqrt(r) | velocity: r | a number in (0, 1]: the "
-        "velocity ratio itself.",
-    )
-    rupture: RuptureRule = Field(
-        "energy-transfer",
-        description="Bar rupture rule: energy-transfer (Eq. 12) | velocity-continuous.",
-    )
-    collapse: CollapseRule = Field(
-        "overturning",
-        description="Collapse: overturning (the wall falls; followed after the record until "
-        "its fate is certain) | end-of-record (|theta| >= alpha when the record ends, the "
-        "paper's convention) | first-exceedance (|theta| reaches alpha at any time).",
-    )
-    strain_factor: Number = Field(
-        0.5, gt=0, le=1, description="Cyclic reduction c of eps_u, 0 < c <= 1 (0.5)."
-    )
-    pivot: PivotRule = Field(
-        "crushing",
-        description="Where the wall pivots: crushing (default: at x/2 from the edge, x the "
-        "depth of masonry at 0.85*f_d that carries the weight and the bar force at rupture) "
-        "| edge (the base corner, the paper's model).",
-    )
-    free_vibration_tail: Number = Field(
-        0.0, ge=0, le=60, description="Zero motion appended to each record [s] (0)."
-    )
     integration: IntegrationSpec = Field(
         default_factory=IntegrationSpec, description="Time integration."
     )

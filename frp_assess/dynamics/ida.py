@@ -9,13 +9,16 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from frp_assess.dynamics.options import IDA_MAX_MULTIPLIER, IDA_STEP_RATIO, IDA_TOLERANCE
 from frp_assess.dynamics.rocking import RockingModel
 from frp_assess.errors import Cancelled
 
 
 @dataclass(frozen=True)
 class IdaSettings:
-    """Search rule of docs/model.md §5.
+    """Search rule of docs/model.md §5 (defaults and the ranges a user may ask for:
+    :data:`~frp_assess.dynamics.options.IDA_OPTIONS`; the checks here are the wider ones of
+    the search itself).
 
     Attributes:
         step_ratio: s, the hunt tries C₀·s^k, k = 0, 1, 2, …
@@ -23,9 +26,9 @@ class IdaSettings:
         max_multiplier: give up (no collapse) beyond C_max = max_multiplier·C₀.
     """
 
-    step_ratio: float = 1.10
-    tolerance: float = 0.005
-    max_multiplier: float = 100.0
+    step_ratio: float = IDA_STEP_RATIO.default
+    tolerance: float = IDA_TOLERANCE.default
+    max_multiplier: float = IDA_MAX_MULTIPLIER.default
 
     def __post_init__(self) -> None:
         if not (math.isfinite(self.step_ratio) and self.step_ratio > 1.0):

@@ -12,6 +12,18 @@ from numpy.typing import NDArray
 
 from frp_assess.dynamics.kernel import history_length, simulate
 from frp_assess.dynamics.kernel import params as kp
+from frp_assess.dynamics.options import (
+    COLLAPSE,
+    COLLAPSE_RULES,
+    FREE_VIBRATION_TAIL,
+    INTEGRATION_TOLERANCE,
+    PIVOT,
+    RESTITUTION,
+    RUPTURE,
+    RUPTURE_RULES,
+    CollapseRule,
+    RuptureRule,
+)
 from frp_assess.dynamics.pivot import PIVOT_RULES, PivotGeometry, PivotRule, pivot_depth
 from frp_assess.dynamics.rebars import Rebars
 from frp_assess.dynamics.restitution import Restitution, velocity_ratio
@@ -19,21 +31,13 @@ from frp_assess.dynamics.wall import Mechanism, Wall
 from frp_assess.errors import NumericalError
 from frp_assess.motions.record import G
 
-RuptureRule = Literal["energy-transfer", "velocity-continuous"]
-CollapseRule = Literal["overturning", "end-of-record", "first-exceedance"]
 Fate = Literal["fell", "at rest", "exceeded", "standing"]
 
-RUPTURE_RULES: tuple[RuptureRule, ...] = ("energy-transfer", "velocity-continuous")
-COLLAPSE_RULES: tuple[CollapseRule, ...] = ("overturning", "end-of-record", "first-exceedance")
-
-#: Default local error tolerance of the Dormand–Prince pair [-].  Measured on the convergence
-#: corpus (scripts/validate_accuracy.py; a subset in tests/validation/test_convergence.py): at
-#: this value a 100× tighter tolerance and RK4 at 0.1 ms move no well-conditioned
-#: first-collapse multiplier by more than 0.2 % and no peak rotation by more than 0.1 %
-#: (1e-7 missed the bar on 2 of 191 multipliers, by up to 3.5 %).
-DEFAULT_TOLERANCE = 1e-8
+#: Default local error tolerance of the Dormand–Prince pair [-] (the measurement that chose it:
+#: :data:`~frp_assess.dynamics.options.INTEGRATION_TOLERANCE`).
+DEFAULT_TOLERANCE = INTEGRATION_TOLERANCE.default
 #: Bounds of the tolerance a user may ask for [-].
-TOLERANCE_RANGE = (1e-12, 1e-3)
+TOLERANCE_RANGE = INTEGRATION_TOLERANCE.bounds
 
 _FATES: dict[int, Fate] = {
     kp.FATE_FELL: "fell",
@@ -70,19 +74,19 @@ class ModelOptions:
             error-controlled pair (the independent reference of the tests and benchmarks).
         method: the embedded pair, ``"dopri5"`` (Dormand–Prince 5(4), default) or ``"bs3"``
             (Bogacki–Shampine 3(2); kept for the benchmark that chose the default).
-        pivot: ``"edge"`` (the paper: the base corner, default here) or ``"crushing"`` (at
-            x/2 inside a compressed zone x of the masonry's strength f_d,
-            :attr:`Wall.compressive_strength`; docs/model.md §1.1).
+        pivot: ``"crushing"`` (default: at x/2 inside a compressed zone x of the masonry's
+            strength f_d, :attr:`Wall.compressive_strength`; a wall without a strength keeps
+            the edge pivot) or ``"edge"`` (the paper: the base corner; docs/model.md §1.1).
     """
 
-    restitution: Restitution = "energy"
-    rupture: RuptureRule = "energy-transfer"
-    collapse: CollapseRule = "overturning"
-    free_vibration_tail: float = 0.0
-    tolerance: float = DEFAULT_TOLERANCE
+    restitution: Restitution = RESTITUTION.default
+    rupture: RuptureRule = RUPTURE.default
+    collapse: CollapseRule = COLLAPSE.default
+    free_vibration_tail: float = FREE_VIBRATION_TAIL.default
+    tolerance: float = INTEGRATION_TOLERANCE.default
     fixed_step: float | None = None
     method: Literal["dopri5", "bs3"] = "dopri5"
-    pivot: PivotRule = "edge"
+    pivot: PivotRule = PIVOT.default
 
     def __post_init__(self) -> None:
         if self.rupture not in RUPTURE_RULES:

@@ -20,7 +20,8 @@ from dataclasses import dataclass
 
 from frp_assess.assess.inputs import Building
 from frp_assess.config.library import FRP_MATERIALS, did_you_mean
-from frp_assess.dynamics import IdaSettings, ModelOptions, Rebars, RockingModel, Wall
+from frp_assess.dynamics import RockingModel
+from frp_assess.dynamics.units import rebars_from_practice, wall_from_practice
 from frp_assess.errors import InputError
 from frp_assess.study.schema import StudyFile, spectrum_label, spectrum_text
 
@@ -136,16 +137,8 @@ class StudyPlan:
             * len(self.geometry)
             * len(self.wall_bases)
         )
-        o = study.model
-        self.options = ModelOptions(
-            restitution=o.restitution,
-            rupture=o.rupture,
-            collapse=o.collapse,
-            free_vibration_tail=o.free_vibration_tail,
-            tolerance=o.integration_tolerance,
-        )
-        i = study.ida
-        self.ida_settings = IdaSettings(i.step_ratio, i.tolerance, i.max_multiplier)
+        self.options = study.model.model_options(study.model.integration_tolerance)
+        self.ida_settings = study.ida.settings()
 
     def __len__(self) -> int:
         return self.n_groups * self.group_size
@@ -209,13 +202,13 @@ class StudyPlan:
 
     def model(self, case: Case) -> RockingModel:
         """The dynamics model of ``case`` (SI units inside)."""
-        wall = Wall(case.thickness, case.height, self.study.unit_weight * 1e3)
+        wall = wall_from_practice(case.thickness, case.height, self.study.unit_weight)
         bars = None
         if case.material is not None:
             m = self.materials[case.material]
             assert case.position is not None and case.ratio is not None
-            bars = Rebars(
-                m.elastic_modulus * 1e9,
+            bars = rebars_from_practice(
+                m.elastic_modulus,
                 m.ultimate_strain,
                 case.position,  # type: ignore[arg-type]
                 case.ratio,

@@ -31,9 +31,9 @@ from pathlib import Path
 from typing import Protocol
 
 from frp_assess import __version__
-from frp_assess.assess.cache import IdaCache, record_digest, task_key
-from frp_assess.assess.floor_input import floor_record, in_ground_terms
-from frp_assess.assess.runner import summarise
+from frp_assess.assess.cache import IdaCache
+from frp_assess.assess.inputs import Building
+from frp_assess.assess.runner import BatchRunner, IdaRunner, summarise
 from frp_assess.dynamics import IdaResult, IdaTask, default_jobs, run_batch
 from frp_assess.errors import Cancelled
 from frp_assess.io_utils import atomic_open, atomic_write_text
@@ -227,20 +227,34 @@ def run_study(
     per_case = max(n_rec.values())
     if len(set(n_rec.values())) != 1:
         raise ValueError("every spectrum needs the same number of records")
-    hashes = {label: [record_digest(r.acc, r.dt) for r in recs[label]] for label in plan.spectra}
     cache = IdaCache(cache_dir if cache_dir is not None else out_dir / CACHE_DIR)
+    # the cached runner of `frp-assess run`, one per record set and floor of the building
+    # (the floor motions are computed once per runner), on the study's executor
+    runners: dict[tuple[str, Building | None], IdaRunner] = {}
+
+    def runner(label: str, building: Building | None) -> IdaRunner:
+        key = (label, building)
+        if key not in runners:
+            runners[key] = IdaRunner(
+                recs[label],
+                None,
+                cache,
+                cancel=stop,
+                settings=plan.ida_settings,
+                building=building,
+                batch=executor_batch(ex),
+            )
+        return runners[key]
+
     parts = out_dir / f"parts-{plan.digest()}"
     parts.mkdir(parents=True, exist_ok=True)
-    settings = plan.ida_settings
     n_cases = len(plan)
     total = n_cases * per_case
     size = study.chunk_size
     n_chunks = math.ceil(n_cases / size)
     done = 0
-    computed = 0
-    reused = 0
     skipped = 0
-    lock = threading.Lock()
+    on_disk = 0  #: (case, record) IDAs of the chunks already written
 
     def report() -> None:
         if progress is not None:
@@ -254,71 +268,75 @@ def run_study(
         long_path, summary_path = _chunk_paths(parts, k)
         if long_path.exists() and summary_path.exists():
             skipped += 1
-            reused += (hi - lo) * per_case
+            on_disk += (hi - lo) * per_case
             done += (hi - lo) * per_case
             report()
             continue
         cases = list(plan.cases(lo, hi))
-        models = [plan.model(c) for c in cases]
-        results: list[list[IdaResult | None]] = [[None] * per_case for _ in cases]
-        keys: list[str] = []
-        slots: list[tuple[int, int]] = []
-        tasks: list[IdaTask] = []
-        ground_pga: list[float | None] = []  #: per task: the ground PGA of a floor motion
-        for ci, (case, model) in enumerate(zip(cases, models, strict=True)):
-            building = plan.building(case)
-            for ri, rec in enumerate(recs[case.spectrum]):
-                key = task_key(model, hashes[case.spectrum][ri], settings, building)
-                hit = cache.get(key)
-                if hit is not None:
-                    results[ci][ri] = hit
-                else:
-                    motion = floor_record(rec, building)
-                    keys.append(key)
-                    slots.append((ci, ri))
-                    ground_pga.append(None if building is None else rec.pga)
-                    tasks.append(IdaTask(model, motion.acc, motion.dt, settings))
-        hits = len(cases) * per_case - len(tasks)
-        reused += hits
-        done += hits
-        report()
-        base = done
+        results: list[Sequence[IdaResult]] = [()] * len(cases)
+        groups: dict[tuple[str, Building | None], list[int]] = {}
+        for i, case in enumerate(cases):  # the cases of a chunk by record set and floor
+            groups.setdefault((case.spectrum, plan.building(case)), []).append(i)
+        for (label, building), slots in groups.items():
+            base = done
 
-        def on_result(
-            i: int,
-            res: IdaResult,
-            keys: list[str] = keys,
-            slots: list[tuple[int, int]] = slots,
-            results: list[list[IdaResult | None]] = results,
-            ground_pga: list[float | None] = ground_pga,
-        ) -> None:
-            pga = ground_pga[i]
-            res = res if pga is None else in_ground_terms(res, pga)
-            cache.put(keys[i], res)
-            ci, ri = slots[i]
-            results[ci][ri] = res
-
-        def on_progress(d: int, base: int = base) -> None:
-            nonlocal done
-            with lock:
+            def on_progress(d: int, n: int, base: int = base) -> None:
+                nonlocal done
                 done = base + d
-            report()
+                report()
 
-        if tasks:
-            ex.run(tasks, on_result, on_progress, stop)
-            if any(r is None for row in results for r in row):  # pragma: no cover - defensive
-                raise Cancelled("study cancelled")
-            computed += len(tasks)
-        done = base + len(tasks)
+            found = runner(label, building).run(
+                [plan.model(cases[i]) for i in slots], on_progress
+            )
+            for i, res in zip(slots, found, strict=True):
+                results[i] = res
+            done = base + len(slots) * per_case
         report()
-        _write_chunk(plan, cases, results, recs, long_path, summary_path)  # type: ignore[arg-type]
+        _write_chunk(plan, cases, results, recs, long_path, summary_path)
     _assemble(plan, parts, n_chunks, out_dir)
     seconds = time.perf_counter() - t_start
+    computed = sum(r.computed for r in runners.values())
+    reused = on_disk + sum(r.reused for r in runners.values())
     stats = StudyStats(
         n_cases, per_case, computed, reused, n_chunks, skipped, seconds, out_dir, ex.describe()
     )
     _write_manifest(plan, recs, stats, out_dir)
     return stats
+
+
+def executor_batch(ex: Executor) -> BatchRunner:
+    """The executor as the batch runner of :class:`~frp_assess.assess.runner.IdaRunner`
+    (the signature of :func:`~frp_assess.dynamics.run_batch`; ``jobs`` is the executor's)."""
+
+    def batch(
+        tasks: Sequence[IdaTask],
+        *,
+        jobs: int | None = None,
+        progress: Callable[[int, int], None] | None = None,
+        on_result: OnResult | None = None,
+        cancel: threading.Event | None = None,
+    ) -> list[IdaResult]:
+        if not tasks:  # everything came from the cache: no call to a remote cluster
+            return []
+        out: list[IdaResult | None] = [None] * len(tasks)
+
+        def got(i: int, res: IdaResult) -> None:
+            out[i] = res
+            if on_result is not None:
+                on_result(i, res)
+
+        n = len(tasks)
+        ex.run(
+            tasks,
+            got,
+            (lambda d: None) if progress is None else (lambda d: progress(d, n)),
+            cancel if cancel is not None else threading.Event(),
+        )
+        if any(r is None for r in out):  # pragma: no cover - defensive
+            raise Cancelled("study cancelled")
+        return [r for r in out if r is not None]
+
+    return batch
 
 
 def _write_chunk(

@@ -23,7 +23,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from pathlib import Path
-from typing import Annotated, Any, Literal
+from typing import Annotated, Any
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
 
@@ -35,17 +35,15 @@ from frp_assess.config.schema import (
     MAX_RECORD_DURATION,
     MAX_SEED,
     MIN_TIME_STEP,
+    IdaSpec,
+    ModelOptionsSpec,
     Number,
+    option_field,
 )
 from frp_assess.config.yaml_source import parse_yaml, read_text_file
-from frp_assess.dynamics.rebars import POSITIONS
-from frp_assess.dynamics.rocking import (
-    DEFAULT_TOLERANCE,
-    TOLERANCE_RANGE,
-    CollapseRule,
-    RuptureRule,
-)
-from frp_assess.dynamics.wall import MECHANISMS
+from frp_assess.dynamics.options import INTEGRATION_TOLERANCE
+from frp_assess.dynamics.rebars import POSITIONS, Position
+from frp_assess.dynamics.wall import MECHANISMS, Mechanism
 from frp_assess.errors import InputError
 from frp_assess.study.building import StudyBuilding
 
@@ -119,55 +117,11 @@ class RecordSetSpec(_Strict):
         return self
 
 
-class ModelSpec(_Strict):
-    """Model options of docs/model.md §3–4 and the cyclic strain factor of §2."""
+class ModelSpec(ModelOptionsSpec):
+    """Model options of docs/model.md §2–4: those of a project's ``analysis`` (the same
+    fields, checks and defaults) and the integration tolerance, here flat."""
 
-    restitution: Literal["energy", "velocity"] | float = Field(
-        default="energy",
-        description="impact rule: 'energy' (|θ'+| = √r·|θ'-|), 'velocity' (r·|θ'-|) or a "
-        "velocity ratio in (0, 1]",
-    )
-    rupture: RuptureRule = "energy-transfer"
-    collapse: CollapseRule = Field(
-        default="overturning",
-        description="overturning (the wall falls) | end-of-record (the paper's convention: "
-        "|θ| >= α when the record ends; the paper-study files pin it) | first-exceedance",
-    )
-    integration_tolerance: Number = Field(
-        default=DEFAULT_TOLERANCE,
-        ge=TOLERANCE_RANGE[0],
-        le=TOLERANCE_RANGE[1],
-        description=f"local error tolerance of the integrator [-] ({DEFAULT_TOLERANCE:g})",
-    )
-    strain_factor: Number = Field(default=0.5, gt=0, le=1, description="c in ε_max = c·ε_u [-]")
-    free_vibration_tail: Number = Field(
-        default=0.0, ge=0, le=60, description="zero ground motion appended to each record [s], 0-60"
-    )
-
-    @field_validator("restitution")
-    @classmethod
-    def _ratio_range(cls, v: Any) -> Any:
-        if isinstance(v, float) and not (0.0 < v <= 1.0):
-            raise ValueError("a numeric restitution is a velocity ratio in (0, 1]")
-        return v
-
-
-class IdaSpec(_Strict):
-    """IDA search rule of docs/model.md §5."""
-
-    step_ratio: Number = Field(
-        default=1.10, ge=1.01, le=10, description="hunt ratio s [-], 1.01-10"
-    )
-    tolerance: Number = Field(
-        default=0.005, ge=1e-4, le=0.1, description="bisection tolerance [-], 1e-4 to 0.1"
-    )
-    max_multiplier: Number = Field(
-        default=100.0, gt=1.0, le=1000, description="C_max / C₀ [-], 1-1000"
-    )
-
-
-Position = Literal["centred", "external"]
-Mechanism = Literal["one-sided", "two-sided"]
+    integration_tolerance: Number = option_field(INTEGRATION_TOLERANCE)
 
 
 def _unique_positive(values: list[float], what: str) -> list[float]:

@@ -7,7 +7,7 @@ from typing import Any
 
 import pytest
 
-from frp_assess.cli.new import template_text
+from frp_assess.api import template_text
 from frp_assess.config import Project, load_project_text, project_data
 from frp_assess.config.yaml_update import update_project_text
 from frp_assess.errors import InputError

@@ -9,10 +9,12 @@ from pathlib import Path
 import pytest
 
 from frp_assess.assess.cache import IdaCache, record_digest, task_key
+from frp_assess.assess.runner import IdaRunner
 from frp_assess.dynamics import ida
 from frp_assess.errors import Cancelled, InputError
 from frp_assess.study import StudyPlan, load_study, parse_study, read_summary, run_study
 from frp_assess.study.comparison import compare
+from frp_assess.study.run import LocalExecutor
 from tests.study.conftest import TINY
 
 
@@ -176,3 +178,58 @@ def test_comparison_on_the_tiny_study(tmp_path, tiny_study, records):
     assert table["q of the unreinforced wall grows with α"].verdict == "not tested"
     head = table["headline: CFRP, ρ = 1 ‰ (one-sided, external, H = 3 m, α = 7.5°, A2)"]
     assert head.verdict in ("agrees", "differs") and head.deviation.endswith("%")
+
+
+def test_the_study_runs_through_the_assessment_runner_on_its_executor(
+    tmp_path, tiny_study, records
+):
+    """Every IDA of the study goes once through the executor given; the cache it fills is
+    the one `frp-assess run` reads: the assessment's IdaRunner finds every pair there and
+    gives the numbers of long.csv."""
+
+    class Counting(LocalExecutor):
+        tasks = 0
+
+        def run(self, tasks, on_result, progress, cancel):
+            Counting.tasks += len(tasks)
+            super().run(tasks, on_result, progress, cancel)
+
+    out = tmp_path / "study"
+    stats = run_study(tiny_study, out, executor=Counting(1), records=records)
+    assert Counting.tasks == stats.computed == 6 * 3 and stats.reused == 0
+
+    def must_not_compute(tasks, **_):
+        assert not tasks, f"{len(tasks)} IDAs not in the cache"
+        return []
+
+    plan = StudyPlan(tiny_study)
+    runner = IdaRunner(
+        records["A2"],
+        None,
+        IdaCache(out / ".cache"),
+        settings=plan.ida_settings,
+        batch=must_not_compute,
+    )
+    found = runner.run([plan.model(c) for c in plan.cases()])
+    assert runner.computed == 0 and runner.reused == 6 * 3
+    written = [r["collapse_multiplier"] for r in _rows(out / "long.csv")]
+    assert written == [
+        "" if r.collapse_multiplier is None else repr(r.collapse_multiplier)
+        for case in found
+        for r in case
+    ]
+
+
+def test_a_runner_needs_inputs_or_settings(records):
+    with pytest.raises(ValueError, match="inputs or the IDA settings"):
+        IdaRunner(records["A2"], None, IdaCache(None))
+
+
+def test_a_chunk_found_in_the_cache_does_not_call_the_executor():
+    from frp_assess.study.run import executor_batch
+
+    class Refusing(LocalExecutor):
+        def run(self, tasks, on_result, progress, cancel):
+            raise AssertionError("the executor was called with nothing to do")
+
+    assert executor_batch(Refusing(1))([]) == []

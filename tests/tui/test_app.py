@@ -10,9 +10,8 @@ import pytest
 from rich.console import Console
 from textual.widgets import DataTable, Input, Select, Static, TabbedContent, TabPane
 
-from frp_assess.api import CACHE_DIR, default_out_dir, run_assessment
+from frp_assess.api import CACHE_DIR, default_out_dir, run_assessment, template_text
 from frp_assess.assess.from_project import inputs_from_project
-from frp_assess.cli.new import template_text
 from frp_assess.config import load_project, load_project_text
 from frp_assess.tui.app import FrpAssessApp
 from frp_assess.tui.help import HelpScreen

@@ -7,11 +7,11 @@ from pathlib import Path
 
 import pytest
 
+from frp_assess.api import TEMPLATE_NAME
 from frp_assess.assess.from_project import material_of
 from frp_assess.assess.inputs import Costs
 from frp_assess.assess.quantities import frp_quantity
 from frp_assess.config import load_project_text, project_data
-from frp_assess.tui.core.new_project import TEMPLATE_NAME
 from frp_assess.tui.core.opening import opening_data
 from frp_assess.tui.core.project_info import (
     option_rows,

@@ -1,4 +1,4 @@
-"""A new project in the TUI starts from the same text as ``frp-assess new``."""
+"""A new project in the TUI and ``frp-assess new`` start from one text, api.new_project_text."""
 
 from __future__ import annotations
 
@@ -6,9 +6,9 @@ from pathlib import Path
 
 import pytest
 
+from frp_assess.api import TEMPLATE_NAME, new_project_text, template_text
 from frp_assess.cli import main
 from frp_assess.config import load_project_text
-from frp_assess.tui.core.new_project import TEMPLATE_NAME, new_project_text, template_text
 
 
 @pytest.mark.parametrize(

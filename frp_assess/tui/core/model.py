@@ -225,14 +225,14 @@ class WallDerived:
 
 def wall_derived(wall: Any) -> WallDerived | str:
     """The derived constants of the ``wall`` block, or the loader's message if it is invalid."""
-    from frp_assess.dynamics import Wall
+    from frp_assess.dynamics.units import wall_from_practice
 
     try:
         spec = WallSpec.model_validate(wall)
     except ValidationError as err:
         path, message = describe(WallSpec, err.errors(include_url=False)[0])
         return f"{format_path(('wall', *path))}: {message}"
-    w = Wall(spec.thickness, spec.height, spec.unit_weight_kn * 1e3)
+    w = wall_from_practice(spec.thickness, spec.height, spec.unit_weight_kn)
     return WallDerived(w.alpha, w.R, w.p, w.a_rm_g, w.mass, spec.unit_weight_kn)
 
 

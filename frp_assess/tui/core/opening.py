@@ -5,10 +5,10 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
+from frp_assess.api import new_project_text
 from frp_assess.config import load_project_text, project_data
 from frp_assess.config.loader import parse_yaml
 from frp_assess.errors import InputError
-from frp_assess.tui.core.new_project import new_project_text
 
 
 def opening_data(

@@ -21,9 +21,9 @@ from frp_assess.api import (
     missing_idas,
     prepare_records,
     run_assessment,
+    time_history,
     write_outputs,
 )
-from frp_assess.assess.floor_input import floor_record
 from frp_assess.assess.from_project import inputs_from_project
 from frp_assess.assess.inputs import AssessmentInputs
 from frp_assess.assess.seismic import SeismicInput
@@ -236,11 +236,10 @@ def case_history(
 ) -> HistoryData:
     """The time history of case ``case_index`` (0 = unreinforced) under record
     ``record_index`` of the run, scaled by ``multiplier`` (as the IDA does)."""
-    inputs = outcome.inputs
-    option = None if case_index == 0 else inputs.options[case_index - 1]
-    model = inputs.model_for(option)
-    rec = floor_record(outcome.seismic.records[record_index], inputs.building)
-    res = model.run(rec.acc, rec.dt, float(multiplier), history=True)
+    run = time_history(
+        outcome.inputs, outcome.seismic.records, case_index, record_index, multiplier
+    )
+    model, rec, res = run.model, run.record, run.result
     h = res.history
     assert h is not None
     n = h.computed
