@@ -28,7 +28,7 @@ from frp_assess.assess.inputs import (
     Option,
 )
 from frp_assess.assess.runner import IdaRunner
-from frp_assess.dynamics import IdaSettings
+from frp_assess.dynamics import IdaSettings, ModelOptions
 from frp_assess.motions import G, Record, preset_spectrum, response_spectrum
 from frp_assess.motions.floor import floor_acceleration
 
@@ -62,6 +62,7 @@ def inputs(building: Building | None, **kw: object) -> AssessmentInputs:
         options=(Option("GFRP ext 1", GFRP, "external", 1.0),),
         ida=SETTINGS,
         building=building,
+        model=ModelOptions(pivot="edge"),  # the hand values below: a_RM = g·B/H
     )
     base.update(kw)
     return AssessmentInputs(**base)  # type: ignore[arg-type]
