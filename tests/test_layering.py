@@ -30,7 +30,9 @@ INTERNAL: dict[str, set[str]] = {
     "config": {"errors", "io_utils", "dynamics", "motions"},
     "assess": {
         "", "errors", "io_utils", "numbers", "text_safety", "dynamics", "motions", "config",
+        "results",
     },  # fmt: skip
+    "results": {"errors"},
     "report": {"errors", "io_utils", "numbers", "text_safety"},
     "study": {"", "errors", "io_utils", "dynamics", "motions", "config", "assess", "report"},
     "api": {
