@@ -79,7 +79,10 @@ def choose_layout(
     """
     sizes = sizes_for(bars, material)
     if diameter is not None:
-        size = bar_size(material, diameter, sizes)
+        try:
+            size = bar_size(material, diameter, sizes)
+        except InputError as exc:
+            raise InputError(exc.message, key="diameter") from None
         lay = bar_layout(
             ratio,
             thickness,

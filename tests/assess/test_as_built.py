@@ -81,7 +81,7 @@ def test_layout_with_a_given_diameter_and_a_project_size():
 def test_layout_problems_are_input_errors():
     with pytest.raises(InputError, match="available: 6, 8, 10, 12, 14, 16") as exc:
         choose_layout(BarSettings(), 0.25, 5.0, "GFRP", "centred", 1.0, 13.0)
-    assert exc.value.key == "bars.diameter"
+    assert exc.value.key == "diameter"
     # Ø6 at 3 ‰ on B = 0.4 m, L = 1 m: 1200/28.27 → 43 bars at 23 mm < 0.10 m
     with pytest.raises(InputError, match="closer than bars.min_spacing") as exc:
         choose_layout(BarSettings(), 0.4, 1.0, "GFRP", "centred", 3.0, 6.0)
