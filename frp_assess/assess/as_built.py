@@ -15,6 +15,7 @@ material not listed under ``bars.catalogue``) takes the nominal diameters Ø6–
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from frp_assess.assess.bars import (
@@ -119,18 +120,27 @@ def choose_layout(
 
 def option_with_layout(inputs: AssessmentInputs, option: Option) -> Option:
     """``option`` with its layout, ``ratio`` = the ratio the model uses (installed with
-    ``bars.whole_bars``) and ``ratio_asked`` = the option's ratio (InputError as
-    :func:`choose_layout`)."""
+    ``bars.whole_bars``) and ``ratio_asked`` = the option's ratio.
+
+    With ``bars.whole_bars`` an option that cannot be built is an InputError (as
+    :func:`choose_layout`); without, the model uses the ratio asked anyway (the paper's
+    smeared idealisation) and such an option has no layout (``layout`` None).
+    """
     asked = option.asked
-    lay = choose_layout(
-        inputs.bars,
-        inputs.thickness,
-        inputs.length,
-        option.material.name,
-        option.position,
-        asked,
-        option.diameter,
-    )
+    try:
+        lay = choose_layout(
+            inputs.bars,
+            inputs.thickness,
+            inputs.length,
+            option.material.name,
+            option.position,
+            asked,
+            option.diameter,
+        )
+    except InputError:
+        if inputs.bars.whole_bars:
+            raise
+        return replace(option, ratio=asked, ratio_asked=asked, layout=None)
     used = lay.ratio_installed if inputs.bars.whole_bars else asked
     return Option(
         option.name,
@@ -307,11 +317,13 @@ def as_built(
     )
 
 
-def option_as_built(inputs: AssessmentInputs, option: Option) -> AsBuilt:
-    """The as-built record of an option (its layout made here if it has none)."""
+def option_as_built(inputs: AssessmentInputs, option: Option) -> AsBuilt | None:
+    """The as-built record of an option (its layout made here if it has none); None for an
+    option that cannot be built, which only ``bars.whole_bars: false`` lets through."""
     if option.layout is None:
         option = option_with_layout(inputs, option)
-    assert option.layout is not None
+    if option.layout is None:
+        return None
     rule = DIAMETER_GIVEN if option.diameter is not None else DIAMETER_CHOSEN
     return as_built(inputs, option.material, option.layout, option.ratio, rule)
 

@@ -60,6 +60,8 @@ def quantity_for(
 def option_quantity(inputs: AssessmentInputs, option: Option) -> Quantity:
     """The bars of ``option`` as built: n whole bars per line × lines × bar length
     (H + 2·bond length when ``bars.anchorage`` is given), × bar area × density; cost as
-    :func:`frp_quantity`."""
+    :func:`frp_quantity` (which it falls back on for an option that cannot be built)."""
     built = option_as_built(inputs, option)
+    if built is None:  # cannot be built (bars.whole_bars: false): the smeared estimate
+        return quantity_for(inputs, option.material, option.position, option.ratio)
     return Quantity(built.mass / inputs.length, built.mass, built.cost)

@@ -153,6 +153,7 @@ def test_design_strain_against_cnr_dt_200():
     assert bars is not None  # c is applied once: c·(η_a·ε_fk/γ_f)
     assert bars.strain_factor * bars.ultimate_strain == pytest.approx(e_d)
     built = option_as_built(inputs, o)
+    assert built is not None
     assert built.strain.eta_a == 0.75 and built.strain.partial_factor == 1.10
     assert built.strain.cyclic_factor == 0.5 and built.strain.fibre == "glass"
     # CFRP with the producer's ε_fk = 0.012, aggressive: η_a = 0.85 → 0.5·0.85·0.012/1.1
@@ -173,7 +174,8 @@ def test_design_strain_against_cnr_dt_200():
         "  - {material: GFRP, position: centred, ratio: 1.0}", extra="bars: {design_values: false}"
     )
     assert mean.rupture_strain(mean.options[0].material) == pytest.approx(0.5 * 0.015)
-    assert option_as_built(mean, mean.options[0]).strain.eta_a is None
+    built = option_as_built(mean, mean.options[0])
+    assert built is not None and built.strain.eta_a is None
 
 
 def test_as_built_quantities_and_anchorage_by_hand():
@@ -193,6 +195,7 @@ def test_as_built_quantities_and_anchorage_by_hand():
     )
     (o,) = inputs.options
     built = option_as_built(inputs, o)
+    assert built is not None
     e_d = 0.5 * 0.65 * 0.015 * (1 - 0.1645) / 1.10
     a_b = math.pi * 16
     force = a_b * 46 * e_d
@@ -214,8 +217,9 @@ def test_as_built_quantities_and_anchorage_by_hand():
     assert option_quantity(inputs, o).mass == pytest.approx(mass)
     # without bars.anchorage: the bars over H only, no bond length
     plain = replace(inputs, bars=replace(inputs.bars, anchorage=None))
-    assert option_as_built(plain, o).mass == pytest.approx(25 * 3 * a_b * 1e-6 * 2000)
-    assert option_as_built(plain, o).anchorage.length_required is None
+    bare = option_as_built(plain, o)
+    assert bare is not None and bare.mass == pytest.approx(25 * 3 * a_b * 1e-6 * 2000)
+    assert bare.anchorage.length_required is None
 
 
 def test_anchorage_tensile_strength_given():
@@ -224,8 +228,22 @@ def test_anchorage_tensile_strength_given():
         extra="bars: {anchorage: {hole_clearance: 4, bond_bar: 8.0, bond_masonry: 0.5,"
         " tensile_strength: 0.3}}",
     )
-    a = option_as_built(inputs, inputs.options[0]).anchorage
-    assert a.tensile_strength == 0.3 and a.cone_ok is not None
+    built = option_as_built(inputs, inputs.options[0])
+    assert built is not None
+    assert built.anchorage.tensile_strength == 0.3 and built.anchorage.cone_ok is not None
+
+
+def test_smeared_ratios_let_an_option_that_cannot_be_built_through():
+    # B = 0.2 m, L = 1 m: at most 10 × Ø16 = 2010.6 mm² = 10.05 ‰; 12 ‰ cannot be built
+    text = "  - {material: GFRP, position: centred, ratio: 12}"
+    with pytest.raises(InputError, match="cannot be installed"):
+        inputs_of(text)
+    smeared = inputs_of(text, extra="bars: {whole_bars: false}")
+    (o,) = smeared.options
+    assert o.ratio == 12.0 and o.layout is None
+    assert option_as_built(smeared, o) is None
+    # the quantity falls back on the smeared estimate: 12 ‰ · 0.2 m · 3 m · 1 m · 2000 kg/m³
+    assert option_quantity(smeared, o).mass == pytest.approx(0.012 * 0.2 * 3.0 * 2000.0)
 
 
 # --------------------------------------------------------------------------- design mode

@@ -36,6 +36,7 @@ interventions:
       material: [GFRP, BFRP, CFRP]
       position: [centred, external]
       ratio: [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16]
+bars: {whole_bars: false}  # ratios above 6.7 per mille cannot be built in whole bars
 """
 
 
