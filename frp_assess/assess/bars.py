@@ -310,10 +310,23 @@ def best_layout(
 # Design strain
 
 
-def environmental_factor(material: str, exposure: str) -> float:
-    """η_a of CNR-DT 200 R1/2013 Table 3.2 for a bar material (GFRP, BFRP, CFRP, AFRP)."""
-    fibre = FIBRE_OF_MATERIAL.get(material)
-    if fibre is None:
+def fibre_of(material: str, fibre: str | None = None) -> str:
+    """The fibre whose η_a a bar material takes: ``fibre`` when given (basalt: the glass
+    values, module docstring), else by the library key, else glass (the smallest η_a of the
+    table: the conservative choice for a fibre not stated)."""
+    if fibre is not None:
+        return "glass" if fibre == "basalt" else fibre
+    return FIBRE_OF_MATERIAL.get(material, "glass")
+
+
+def environmental_factor(material: str, exposure: str, *, fibre: str | None = None) -> float:
+    """η_a of CNR-DT 200 R1/2013 Table 3.2 for a bar material (GFRP, BFRP, CFRP, AFRP), or
+    for the ``fibre`` given (glass, carbon, aramid, basalt)."""
+    if fibre is not None:
+        fibre = fibre_of(material, fibre)
+    else:
+        fibre = FIBRE_OF_MATERIAL.get(material)
+    if fibre is None or fibre not in ENVIRONMENTAL_FACTORS:
         raise InputError(
             f"no environmental factor for {material!r}; known: {', '.join(FIBRE_OF_MATERIAL)}",
             key="materials",
@@ -324,6 +337,11 @@ def environmental_factor(material: str, exposure: str) -> float:
             key="exposure",
         )
     return ENVIRONMENTAL_FACTORS[fibre][exposure]
+
+
+#: CoV of the rupture strain assumed when the producer gives no characteristic value
+#: (an assumption of this tool, on the safe side of the scatter of tension tests on FRP bars)
+DEFAULT_STRAIN_COV = 0.10
 
 
 def characteristic_strain(mean: float, cov: float, k: float = 1.645) -> float:
@@ -362,13 +380,15 @@ def design_rupture_strain(
     *,
     cyclic_factor: float = CYCLIC_FACTOR,
     partial_factor: float = FRP_RUPTURE_PARTIAL_FACTOR,
+    fibre: str | None = None,
 ) -> DesignStrain:
-    """The rupture strain the analysis uses: ε_d = c·η_a·ε_fk/γ_f (module docstring)."""
+    """The rupture strain the analysis uses: ε_d = c·η_a·ε_fk/γ_f (module docstring);
+    ``fibre`` as :func:`environmental_factor`."""
     if not characteristic > 0:
         raise ValueError(f"characteristic strain must be > 0, got {characteristic}")
     if not (0 < cyclic_factor <= 1 and partial_factor >= 1):
         raise ValueError(f"need 0 < c <= 1 and gamma_f >= 1, got {cyclic_factor}, {partial_factor}")
-    eta = environmental_factor(material, exposure)
+    eta = environmental_factor(material, exposure, fibre=fibre)
     return DesignStrain(
         characteristic=characteristic,
         eta_a=eta,

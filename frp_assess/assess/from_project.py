@@ -8,12 +8,17 @@ and the TUI build exactly the same inputs from the same project.
 from __future__ import annotations
 
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
+from dataclasses import replace
 from pathlib import Path
 
+from frp_assess.assess.as_built import option_with_layout
+from frp_assess.assess.bars import BarSize
 from frp_assess.assess.inputs import (
+    AnchorageSettings,
     ArtificialRecords,
     AssessmentInputs,
+    BarSettings,
     Building,
     CodeCheckSettings,
     Costs,
@@ -22,11 +27,14 @@ from frp_assess.assess.inputs import (
     Option,
     RecordFile,
 )
-from frp_assess.config import MASONRY, FrpMaterial, Project, load_project
-from frp_assess.config.problems import raise_all
+from frp_assess.config import MASONRY, FrpMaterial, LoadedProject, Project, load_project
+from frp_assess.config.messages import Loc, format_path, line_of
+from frp_assess.config.problems import problems_of, raise_all
 from frp_assess.config.schema import (
+    BarsSpec,
     BuildingSpec,
     Ec8Spectrum,
+    Intervention,
     Ntc2018Spectrum,
     PresetSpectrum,
     TableSpectrum,
@@ -61,7 +69,14 @@ def spectrum_of(
 
 def material_of(frp: FrpMaterial) -> Material:
     return Material(
-        frp.name, frp.elastic_modulus, frp.ultimate_strain, frp.density, frp.price, frp.source
+        frp.name,
+        frp.elastic_modulus,
+        frp.ultimate_strain,
+        frp.density,
+        frp.price,
+        frp.source,
+        characteristic_strain=frp.characteristic_strain,
+        fibre=frp.fibre,
     )
 
 
@@ -78,15 +93,96 @@ def building_of(spec: BuildingSpec | None) -> Building | None:
     )
 
 
-def inputs_from_project(project: Project, base_dir: Path, input_file: str = "") -> AssessmentInputs:
-    """Map a validated :class:`Project` onto the assessment's inputs.
+def bar_settings_of(spec: BarsSpec) -> BarSettings:
+    """The ``bars:`` block as :class:`BarSettings`."""
+    a = spec.anchorage
+    return BarSettings(
+        exposure=spec.exposure,
+        design_values=spec.design_values,
+        whole_bars=spec.whole_bars,
+        min_spacing=spec.min_spacing,
+        max_spacing=spec.max_spacing,
+        catalogue=tuple(
+            BarSize(b.material, float(b.diameter), float(b.area), str(b.source))
+            for b in spec.catalogue
+        ),
+        anchorage=None
+        if a is None
+        else AnchorageSettings(a.hole_clearance, a.bond_bar, a.bond_masonry, a.tensile_strength),
+    )
+
+
+def _option_loc(project: Project, option: Option, key: str) -> Loc:
+    """Where in the file an expanded option comes from (its item, or the sweep's ratio)."""
+    for i, item in enumerate(project.interventions):
+        if isinstance(item, Intervention):
+            if (
+                item.material == option.material.name
+                and item.position == option.position
+                and float(item.ratio) == option.asked
+                and item.diameter == option.diameter
+            ):
+                return ("interventions", i, key)
+        elif (
+            option.diameter is None
+            and option.material.name in item.sweep.material
+            and option.position in item.sweep.position
+            and option.asked in item.sweep.ratio
+        ):
+            return ("interventions", i, "sweep", "ratio", item.sweep.ratio.index(option.asked))
+    return ("interventions",)
+
+
+def laid_out(
+    project: Project, inputs: AssessmentInputs, *, file: str | None = None,
+    lines: Mapping[Loc, int] | None = None,
+) -> AssessmentInputs:  # fmt: skip
+    """``inputs`` with every option laid out in whole bars (docs/model.md §2.1); every option
+    that cannot be built is a problem located at its item (line when ``lines`` is given)."""
+    options: list[Option] = []
+    problems: list[InputError] = []
+    for option in inputs.options:
+        try:
+            options.append(option_with_layout(inputs, option))
+        except InputError as exc:
+            loc = _option_loc(project, option, exc.key or "ratio")
+            problems.append(
+                InputError(
+                    f"{option.name}: {exc.message}",
+                    file=file,
+                    line=None if lines is None else line_of(lines, loc),
+                    key=format_path(loc),
+                )
+            )
+    raise_all(problems)
+    return replace(inputs, options=tuple(options))
+
+
+def inputs_from_project(
+    project: Project,
+    base_dir: Path,
+    input_file: str = "",
+    *,
+    lines: Mapping[Loc, int] | None = None,
+    file: str | None = None,
+) -> AssessmentInputs:
+    """Map a validated :class:`Project` onto the assessment's inputs, every option laid out
+    in whole bars (:func:`laid_out`; an option that cannot be built is an InputError naming
+    ``file`` (default ``input_file``), with its line when ``lines`` is given).
 
     Record file paths are resolved against ``base_dir`` (the project file's folder).
     """
     wall, seismic, analysis = project.wall, project.seismic, project.analysis
     table = {name: material_of(m) for name, m in project.material_table().items()}
     options = tuple(
-        Option(str(o.name), table[o.material], o.position, float(o.ratio))
+        Option(
+            str(o.name),
+            table[o.material],
+            o.position,
+            float(o.ratio),
+            ratio_asked=float(o.ratio),
+            diameter=None if o.diameter is None else float(o.diameter),
+        )
         for o in project.expand_interventions()
     )
     spec = seismic.records
@@ -114,7 +210,7 @@ def inputs_from_project(project: Project, base_dir: Path, input_file: str = "") 
         masonry_description = MASONRY[wall.masonry].description
     elif wall.masonry is not None:
         masonry_description = f"{MASONRY[wall.masonry].description}; unit weight given explicitly"
-    return AssessmentInputs(
+    inputs = AssessmentInputs(
         thickness=wall.thickness,
         height=wall.height,
         unit_weight=project.unit_weight_kn(),
@@ -152,7 +248,9 @@ def inputs_from_project(project: Project, base_dir: Path, input_file: str = "") 
             "notes": info.notes,
         },
         input_file=input_file,
+        bars=bar_settings_of(project.bars),
     )
+    return laid_out(project, inputs, file=file or input_file or None, lines=lines)
 
 
 def _print_warning(line: str) -> None:
@@ -175,7 +273,29 @@ def load_inputs(
     if warn is not None:
         for line in loaded.warnings:
             warn(line)
-    return inputs_from_project(loaded.project, loaded.base_dir, str(loaded.path.name))
+    return inputs_from_project(
+        loaded.project,
+        loaded.base_dir,
+        str(loaded.path.name),
+        lines=loaded.lines,
+        file=str(loaded.path),
+    )
+
+
+def layout_problems(loaded: LoadedProject) -> list[InputError]:
+    """The options of a loaded project that cannot be built in whole bars (one located
+    problem each), for ``validate``."""
+    try:
+        inputs_from_project(
+            loaded.project,
+            loaded.base_dir,
+            str(loaded.path.name),
+            lines=loaded.lines,
+            file=str(loaded.path),
+        )
+    except InputError as exc:
+        return list(problems_of(exc))
+    return []
 
 
 def read_record_files(project: Project, base_dir: Path) -> tuple[list[Record], list[InputError]]:

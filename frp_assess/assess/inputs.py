@@ -8,6 +8,17 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from frp_assess.assess.bars import (
+    DEFAULT_MAX_SPACING,
+    DEFAULT_MIN_SPACING,
+    DEFAULT_STRAIN_COV,
+    BarLayout,
+    BarSize,
+    DesignStrain,
+    characteristic_strain,
+    design_rupture_strain,
+    fibre_of,
+)
 from frp_assess.assess.masonry import MasonryStrength, masonry_strength
 from frp_assess.dynamics import (
     IdaSettings,
@@ -36,16 +47,46 @@ class Material:
     density: float  #: [kg/m³]
     price: float  #: [currency/kg], indicative
     source: str = ""
+    characteristic_strain: float | None = None  #: ε_fk [-]; None: ε_u·(1 − 1.645·0.10)
+    fibre: str | None = None  #: glass | carbon | aramid | basalt; None: by the name
+
+    @property
+    def characteristic(self) -> float:
+        """ε_fk [-]: the producer's value, else the 5 % fractile of ε_u with a CoV of 0.10
+        (:data:`~frp_assess.assess.bars.DEFAULT_STRAIN_COV`)."""
+        if self.characteristic_strain is not None:
+            return self.characteristic_strain
+        return characteristic_strain(self.ultimate_strain, DEFAULT_STRAIN_COV)
+
+    @property
+    def characteristic_source(self) -> str:
+        """Where ε_fk comes from (one line for results.json)."""
+        if self.characteristic_strain is not None:
+            return "given (characteristic_strain)"
+        return f"eps_u*(1 - 1.645*{DEFAULT_STRAIN_COV:g}), CoV assumed"
 
 
 @dataclass(frozen=True)
 class Option:
-    """One retrofit option: a material, a position and a ratio."""
+    """One retrofit option: a material, a position and a ratio.
+
+    ``ratio`` is the ratio the model uses: the ratio installed by whole bars of ``layout``
+    (``bars.whole_bars``, the default), else the ratio asked; ``ratio_asked`` is the
+    project's (0: not given, i.e. equal to ``ratio``).
+    """
 
     name: str
     material: Material
     position: Position
-    ratio: float  #: ρ [‰], active bars
+    ratio: float  #: ρ [‰], active bars, as the model uses it
+    ratio_asked: float = 0.0  #: ρ asked [‰]
+    diameter: float | None = None  #: bar diameter asked [mm]; None: chosen by the layout
+    layout: BarLayout | None = None  #: the bars over the wall
+
+    @property
+    def asked(self) -> float:
+        """ρ asked [‰]."""
+        return self.ratio_asked or self.ratio
 
 
 @dataclass(frozen=True)
@@ -79,6 +120,29 @@ class DesignRequest:
 class Costs:
     currency: str = "EUR"
     installation_per_metre: float = 0.0  #: per metre of wall length and layer of bars
+
+
+@dataclass(frozen=True)
+class AnchorageSettings:
+    """Bond of the bars in resin-filled holes (``bars.anchorage``)."""
+
+    hole_clearance: float  #: d_h − d [mm]
+    bond_bar: float  #: τ_b, bar–resin [MPa]
+    bond_masonry: float  #: τ_m, resin–masonry [MPa]
+    tensile_strength: float | None = None  #: f_t of the masonry [MPa]; None: 1.5·τ0d
+
+
+@dataclass(frozen=True)
+class BarSettings:
+    """The bars as built (``bars:``, docs/model.md §2.1)."""
+
+    exposure: str = "external"  #: internal | external | aggressive
+    design_values: bool = True  #: ε_d = c·η_a·ε_fk/γ_f; False: c·ε_u
+    whole_bars: bool = True  #: the model uses the installed ratio; False: the asked one
+    min_spacing: float = DEFAULT_MIN_SPACING  #: [m]
+    max_spacing: float = DEFAULT_MAX_SPACING  #: [m]
+    catalogue: tuple[BarSize, ...] = ()  #: the project's sizes
+    anchorage: AnchorageSettings | None = None
 
 
 @dataclass(frozen=True)
@@ -136,6 +200,7 @@ class AssessmentInputs:
     building: Building | None = None
     project: dict[str, str] = field(default_factory=dict)
     input_file: str = ""
+    bars: BarSettings = BarSettings(design_values=False, whole_bars=False)
 
     @property
     def masonry_strength(self) -> MasonryStrength:
@@ -152,13 +217,34 @@ class AssessmentInputs:
             self.thickness, self.height, self.unit_weight, self.masonry_strength.f_d
         )
 
+    def design_strain(self, material: Material) -> DesignStrain | None:
+        """ε_d = c·η_a·ε_fk/γ_f of ``material`` with c = ``strain_factor`` (docs/model.md
+        §2.1), or None when the design values are off."""
+        if not self.bars.design_values:
+            return None
+        return design_rupture_strain(
+            material.characteristic,
+            material.name,
+            self.bars.exposure,
+            cyclic_factor=self.strain_factor,
+            fibre=fibre_of(material.name, material.fibre),
+        )
+
+    def rupture_strain(self, material: Material) -> float:
+        """The rupture strain the model uses [-]: ε_d with design values, else c·ε_u."""
+        d = self.design_strain(material)
+        return self.strain_factor * material.ultimate_strain if d is None else d.design
+
     def rebars(self, material: Material, position: Position, ratio: float) -> Rebars:
+        """The bars of the model.  The cyclic factor c stays the model's ``strain_factor``;
+        with design values the strain it multiplies is η_a·ε_fk/γ_f instead of ε_u, so that
+        c is applied once (docs/model.md §2.1)."""
+        d = self.design_strain(material)
+        strain = (
+            material.ultimate_strain if d is None else d.eta_a * d.characteristic / d.partial_factor
+        )
         return rebars_from_practice(
-            material.elastic_modulus,
-            material.ultimate_strain,
-            position,
-            ratio,
-            self.strain_factor,
+            material.elastic_modulus, strain, position, ratio, self.strain_factor
         )
 
     def model_for(self, option: Option | None) -> RockingModel:

@@ -3,8 +3,8 @@
 docs/model.md §1.1.  Units: forces per metre of wall [kN/m], lengths [m], stresses [MPa].
 
 The check is made at the largest compression the section must carry in the model,
-N = W + T_u (T_u: the acting bar at its design rupture strain ε_max = c·ε_u; N = W for the
-unreinforced wall), on the stress block 0.85·f_d: x = N / (0.85·f_d·1 m).
+N = W + T_u (T_u: the acting bar at the rupture strain ε_max the model uses, c·ε_u or the
+design value; N = W for the unreinforced wall), on the stress block 0.85·f_d: x = N / (0.85·f_d·1 m).
 
 Drop rule (:func:`pivot_fails`):
 
@@ -145,7 +145,7 @@ def case_pivot(
     if option is None:
         force, distance = 0.0, None
     else:
-        strain = inputs.strain_factor * option.material.ultimate_strain  # ε_max [-]
+        strain = inputs.rupture_strain(option.material)  # ε_max the model uses [-]
         force = bar_force(option.ratio, b, option.material.elastic_modulus, strain)
         distance = bar_lever_arm(option.position, b)
     check = pivot_check(weight, force, b, f_d, limit)
@@ -195,13 +195,13 @@ def largest_ratio(
     The depth must stay below a bound x_b: ``edge`` x_b = limit·B (kept at equality);
     ``crushing`` the bar's distance from the compressed edge (B/2 centred, B external; the
     option is dropped at equality, so ρ must stay strictly below the value returned).  From
-    x = (W + T_u)/(0.85·f_d·1 m) and T_u = E·ρ·B·c·ε_u:
-    ρ = (0.85·f_d·x_b − W)/(E·B·c·ε_u), 0 when the wall alone reaches the bound.
+    x = (W + T_u)/(0.85·f_d·1 m) and T_u = E·ρ·B·ε_max:
+    ρ = (0.85·f_d·x_b − W)/(E·B·ε_max), 0 when the wall alone reaches the bound.
     """
     b = inputs.thickness
     weight = wall_weight(inputs.unit_weight, b, inputs.height)
     f_d = inputs.masonry_strength.f_d
-    strain = inputs.strain_factor * material.ultimate_strain
+    strain = inputs.rupture_strain(material)  # ε_max the model uses [-]
     bound = limit * b if inputs.model.pivot == "edge" else bar_lever_arm(position, b)
     capacity = STRESS_BLOCK_FACTOR * f_d * 1e3 * bound  # [kN/m]
     per_permille = bar_force(1.0, b, material.elastic_modulus, strain)  # T_u of 1 ‰ [kN/m]

@@ -1,10 +1,17 @@
-"""FRP quantities and indicative costs of an option."""
+"""FRP quantities and indicative costs of an option.
+
+:func:`option_quantity` counts the bars as built (whole bars over the bar length, anchorages
+included, docs/model.md §2.1); :func:`frp_quantity` is the smeared estimate from a ratio
+(bars over the free height H), equal to it for the installed ratio when no anchorage length
+is known.
+"""
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
-from frp_assess.assess.inputs import AssessmentInputs, Costs, Material
+from frp_assess.assess.as_built import option_as_built
+from frp_assess.assess.inputs import AssessmentInputs, Costs, Material, Option
 from frp_assess.dynamics import Position
 
 
@@ -33,7 +40,7 @@ def frp_quantity(
 
     Args:
         thickness, height, length: B, H, L [m].
-        ratio: ρ [‰] of the active bars.
+        ratio: ρ [‰] of the active bars (an option's ``ratio``: the installed one).
     """
     area_per_m = ratio * 1e-3 * thickness * layers(position)  # [m²/m]
     mass_per_m = area_per_m * height * material.density
@@ -48,3 +55,13 @@ def quantity_for(
     return frp_quantity(
         inputs.thickness, inputs.height, inputs.length, material, position, ratio, inputs.costs
     )
+
+
+def option_quantity(inputs: AssessmentInputs, option: Option) -> Quantity:
+    """The bars of ``option`` as built: n whole bars per line × lines × bar length
+    (H + 2·bond length when ``bars.anchorage`` is given), × bar area × density; cost as
+    :func:`frp_quantity` (which it falls back on for an option that cannot be built)."""
+    built = option_as_built(inputs, option)
+    if built is None:  # cannot be built (bars.whole_bars: false): the smeared estimate
+        return quantity_for(inputs, option.material, option.position, option.ratio)
+    return Quantity(built.mass / inputs.length, built.mass, built.cost)

@@ -7,6 +7,8 @@ import threading
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
+from frp_assess.assess.as_built import choose_layout, largest_installable_ratio
+from frp_assess.assess.bars import BarLayout
 from frp_assess.assess.cache import IdaCache, record_digest, task_key
 from frp_assess.assess.floor_input import floor_record, in_ground_terms
 from frp_assess.assess.inputs import AssessmentInputs, Building, Material
@@ -190,6 +192,11 @@ class DesignResult:
     summary: CaseSummary | None
     capacity_demand: float | None
     message: str
+    #: the bars that build ``ratio`` (installed ratio ≥ ratio), None if no ratio was found
+    layout: BarLayout | None = None
+    #: the ratio the model used for ``ratio`` [‰]: installed, or ``ratio`` with
+    #: ``bars.whole_bars: false``
+    ratio_model: float | None = None
 
 
 def design_search(
@@ -200,18 +207,48 @@ def design_search(
     demand_g: float,
 ) -> DesignResult:
     """Smallest ρ on the grid of ``resolution`` within ``ratio_range`` whose design capacity
-    meets the target, by bisection (capacity/demand is taken as increasing with ρ)."""
+    meets the target, by bisection (capacity/demand is taken as increasing with ρ).
+
+    Each grid ratio is built in whole bars (:func:`~frp_assess.assess.as_built.choose_layout`,
+    the diameter chosen by the least installed ratio) and the model runs with the installed
+    ratio (with ``bars.whole_bars``), so the answer's layout installs at least the ratio found
+    and capacity/demand is that of the bars as built.  The installed ratio never decreases
+    along the grid (each size's rounding is monotone, and a size that stops fitting the
+    spacing rule never comes back), so the bisection keeps its premise.  Grid ratios beyond
+    the largest installable one are left out of the search (the message says so).
+    """
     assert inputs.design is not None
     lo_r, hi_r = inputs.design.ratio_range
     res = inputs.design.resolution
     grid_lo = math.ceil(lo_r / res - 1e-9)
     grid_hi = math.floor(hi_r / res + 1e-9)
+    top_ratio = largest_installable_ratio(
+        inputs.bars, inputs.thickness, inputs.length, material.name
+    )
+    capped = grid_hi * res > top_ratio * (1.0 + 1e-12)
+    if capped:
+        grid_hi = math.floor(top_ratio / res + 1e-9)
+    hi_shown = grid_hi * res if capped else hi_r
+    cap_note = (
+        f" (the search stops at {grid_hi * res:g} ‰: the largest {material.name} bar at "
+        f"bars.min_spacing installs {top_ratio:.3g} ‰)"
+        if capped
+        else ""
+    )
     a_rm = inputs.wall.a_rm_g
     cache: dict[int, CaseSummary] = {}
 
+    def layout(k: int) -> BarLayout:
+        return choose_layout(
+            inputs.bars, inputs.thickness, inputs.length, material.name, position, k * res
+        )
+
+    def model_ratio(k: int) -> float:
+        return layout(k).ratio_installed if inputs.bars.whole_bars else k * res
+
     def evaluate(k: int) -> CaseSummary:
         if k not in cache:
-            bars = inputs.rebars(material, position, k * res)
+            bars = inputs.rebars(material, position, model_ratio(k))
             model = RockingModel(inputs.wall, inputs.mechanism, bars, inputs.model)
             cache[k] = summarise(runner.run([model])[0], inputs.ida.max_multiplier, a_rm)
         return cache[k]
@@ -228,8 +265,9 @@ def design_search(
             None,
             top,
             cd,
-            f"no ratio up to {hi_r:g} ‰ meets the target {inputs.target:g}"
-            + ("" if cd is None else f" (reaches {cd:.2f} at {hi_r:g} ‰)"),
+            f"no ratio up to {hi_shown:g} ‰ meets the target {inputs.target:g}"
+            + ("" if cd is None else f" (reaches {cd:.2f} at {hi_shown:g} ‰)")
+            + cap_note,
         )
     if ok(grid_lo):
         k = grid_lo
@@ -251,4 +289,15 @@ def design_search(
         )
     else:
         message = f"ρ = {ratio:g} ‰ is the smallest ratio (to {res:g} ‰) meeting the target"
-    return DesignResult(material, position, ratio, s, s.design_a_dyn / demand_g, message)
+    lay = layout(k)
+    message += f"; built as {lay.note}"
+    return DesignResult(
+        material,
+        position,
+        ratio,
+        s,
+        s.design_a_dyn / demand_g,
+        message + cap_note,
+        layout=lay,
+        ratio_model=model_ratio(k),
+    )

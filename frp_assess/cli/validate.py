@@ -8,7 +8,7 @@ import sys
 from collections.abc import Mapping
 from pathlib import Path
 
-from frp_assess.assess.from_project import read_record_files
+from frp_assess.assess.from_project import layout_problems, read_record_files
 from frp_assess.config import LoadedProject
 from frp_assess.config.library import MASONRY
 from frp_assess.config.loader import load_parsed
@@ -176,7 +176,7 @@ def validate_file(path: Path) -> tuple[list[str], tuple[str, ...]]:
         return study_summary(study, name), ()
     loaded = load_parsed(data, lines, name, base_dir=path.parent)
     records, problems = read_record_files(loaded.project, loaded.base_dir)
-    raise_all(problems)
+    raise_all(problems + layout_problems(loaded))
     return summary(loaded), (*loaded.warnings, *plausibility_warnings(records))
 
 

@@ -24,6 +24,10 @@ class FrpMaterial:
         price: indicative price of the bars [currency/kg] (EUR in the library).
         source: where the values come from.
         description: one line for reports.
+        characteristic_strain: ε_fk [-], the 5 % fractile, when the producer gives it (None:
+            derived from ε_u, docs/model.md §2.1).
+        fibre: glass, carbon, aramid or basalt, for the environmental factor η_a (None: by
+            the name, glass for an unknown one).
     """
 
     name: str
@@ -33,6 +37,8 @@ class FrpMaterial:
     price: float
     source: str = ""
     description: str = ""
+    characteristic_strain: float | None = None
+    fibre: str | None = None
 
 
 @dataclass(frozen=True)

@@ -65,6 +65,12 @@ RECORD_FORMATS: tuple[str, ...] = get_args(RecordFormat)
 RecordUnits = Literal["g", "m/s2", "m/s^2", "cm/s2", "cm/s^2", "gal"]
 #: the largest reinforcement ratio accepted [‰]
 MAX_RATIO = 20.0
+#: the largest bar diameter [mm] and area [mm²] accepted
+MAX_BAR_DIAMETER = 50.0
+MAX_BAR_AREA = 2000.0
+#: exposure of the bars (CNR-DT 200 R1/2013 Table 3.2) and fibres of its η_a
+Exposure = Literal["internal", "external", "aggressive"]
+Fibre = Literal["glass", "carbon", "aramid", "basalt"]
 #: shortest artificial record [s]: the generator's envelope rise (2.5 s) + stationary part
 #: (10 s) + 1 s of decay (frp_assess.motions.simqke; a test keeps the two equal)
 MIN_ARTIFICIAL_DURATION = 13.5
@@ -464,6 +470,111 @@ class MaterialSpec(_Model):
         max_length=MAX_NAME_CHARS,
         description=f"Source of the values (text, at most {MAX_NAME_CHARS} characters).",
     )
+    characteristic_strain: Number | None = Field(
+        None,
+        gt=0,
+        lt=1,
+        description="Characteristic rupture strain eps_fk [-] (5 % fractile, producer's data "
+        "sheet); default eps_u*(1 - 1.645*0.10) (docs/model.md §2.1).",
+    )
+    fibre: Fibre | None = Field(
+        None,
+        description="Fibre for the environmental factor eta_a (CNR-DT 200 R1/2013 Table 3.2): "
+        "glass | carbon | aramid | basalt (default: by the library key, glass for a new "
+        "material).",
+    )
+
+
+# ------------------------------------------------------------------------------------ bars
+class BarSizeSpec(_Model):
+    """A bar size added to the built-in catalogue (nominal diameters 6-16 mm, area pi*d^2/4)."""
+
+    material: str = Field(description="Material: a library key or one of 'materials'.")
+    diameter: Number = Field(gt=0, le=MAX_BAR_DIAMETER, description="Nominal diameter d [mm].")
+    area: Number = Field(
+        gt=0, le=MAX_BAR_AREA, description="Nominal area [mm2] (the producer's data sheet)."
+    )
+    source: FreeText = Field(
+        "user input",
+        max_length=MAX_NAME_CHARS,
+        description=f"Source (text, at most {MAX_NAME_CHARS} characters).",
+    )
+
+
+class AnchorageSpec(_Model):
+    """Bond of the bars in resin-filled holes, for the anchorage length and the pull-out cone."""
+
+    hole_clearance: Number = Field(
+        gt=0, le=50, description="Hole diameter minus bar diameter [mm] (d_h = d + clearance)."
+    )
+    bond_bar: Number = Field(
+        gt=0, le=50, description="Bond strength bar-resin tau_b [MPa] (producer's tests)."
+    )
+    bond_masonry: Number = Field(
+        gt=0, le=10, description="Bond strength resin-masonry tau_m [MPa] (pull-out tests)."
+    )
+    tensile_strength: Number | None = Field(
+        None,
+        gt=0,
+        le=10,
+        description="Tensile strength f_t of the masonry for the pull-out cone [MPa] "
+        "(default 1.5*tau_0d of wall.masonry and the knowledge level).",
+    )
+
+
+class BarsSpec(_Model):
+    """The bars as they are built: catalogue, spacing rule, exposure, design values."""
+
+    exposure: Exposure = Field(
+        "external",
+        description="Exposure of the bars (CNR-DT 200 R1/2013 Table 3.2): internal | external "
+        "| aggressive (external).",
+    )
+    design_values: bool = Field(
+        True,
+        description="Use the design rupture strain c*eta_a*eps_fk/gamma_f (true); false: "
+        "c*eps_u, the mean producer value (the paper).",
+    )
+    whole_bars: bool = Field(
+        True,
+        description="The model uses the ratio installed by whole bars (true); false: the "
+        "ratio asked, smeared (the paper).",
+    )
+    min_spacing: Number = Field(
+        0.10, gt=0, le=10, description="Smallest spacing between bar axes [m] (0.10)."
+    )
+    max_spacing: Number = Field(
+        1.0, gt=0, le=10, description="Largest spacing between bar axes [m] (1.0)."
+    )
+    catalogue: list[BarSizeSpec] = Field(
+        default_factory=list,
+        max_length=200,
+        description="Bar sizes added to (same diameter: replacing) the built-in nominal "
+        "diameters 6-16 mm.",
+    )
+    anchorage: AnchorageSpec | None = Field(
+        None, description="Bond strengths for the anchorage length and pull-out cone."
+    )
+
+    @model_validator(mode="after")
+    def _spacing(self) -> BarsSpec:
+        if self.min_spacing > self.max_spacing:
+            raise located_error(
+                f"expected min_spacing <= max_spacing = {self.max_spacing:g} m, found "
+                f"{self.min_spacing:g}",
+                "min_spacing",
+            )
+        seen: dict[tuple[str, float], int] = {}
+        for i, size in enumerate(self.catalogue):
+            j = seen.setdefault((size.material, float(size.diameter)), i)
+            if j != i:
+                raise located_error(
+                    f"{size.material} Ø{size.diameter:g} is already catalogue[{j}]",
+                    "catalogue",
+                    i,
+                    "diameter",
+                )
+        return self
 
 
 # -------------------------------------------------------------------------- interventions
@@ -482,6 +593,13 @@ class Intervention(_Model):
     material: str = Field(description="Material: a library key or one of 'materials'.")
     position: Position = Field(description="centred (one bar) | external (one on each face).")
     ratio: Ratio = Field(description="Ratio rho [per mille] of the active bars, 0 < rho <= 20.")
+    diameter: Number | None = Field(
+        None,
+        gt=0,
+        le=MAX_BAR_DIAMETER,
+        description="Bar diameter d [mm], from the catalogue (default: the size installing "
+        "the least ratio within the spacing rule).",
+    )
 
 
 class SweepAxes(_Model):
@@ -730,6 +848,10 @@ class Project(_Model):
         default_factory=CodeCheckSpec, description="Code kinematic check settings."
     )
     costs: CostsSpec = Field(default_factory=CostsSpec, description="Indicative costs.")
+    bars: BarsSpec = Field(
+        default_factory=BarsSpec,
+        description="Bars as built: exposure, design values, spacing rule, catalogue, anchorage.",
+    )
 
     @model_validator(mode="after")
     def _cross_checks(self) -> Project:
@@ -759,6 +881,8 @@ class Project(_Model):
         if self.design is not None:
             for j, m in enumerate(self.design.materials):
                 self._check_material(m, known, "design", "materials", j)
+        for j, size in enumerate(self.bars.catalogue):
+            self._check_material(size.material, known, "bars", "catalogue", j, "material")
         seen: dict[str, Intervention] = {}
         for i, option in self._expanded_with_index():
             other = seen.setdefault(str(option.name), option)
@@ -810,14 +934,22 @@ class Project(_Model):
             base = table.get(name)
             fields = {
                 f: getattr(spec, f)
-                for f in ("elastic_modulus", "ultimate_strain", "density", "price", "source")
+                for f in (
+                    "elastic_modulus",
+                    "ultimate_strain",
+                    "density",
+                    "price",
+                    "source",
+                    "characteristic_strain",
+                    "fibre",
+                )
                 if getattr(spec, f) is not None
             }
             if base is None:
                 fields.setdefault("source", "user input")
                 table[name] = FrpMaterial(name=name, description="user material", **fields)
             else:
-                if "source" not in fields and set(fields) - {"price"}:
+                if "source" not in fields and set(fields) - {"price", "fibre"}:
                     fields["source"] = "user input (overrides the library)"
                 table[name] = FrpMaterial(
                     name=name,
@@ -827,6 +959,10 @@ class Project(_Model):
                     price=fields.get("price", base.price),
                     source=fields.get("source", base.source),
                     description=base.description,
+                    characteristic_strain=fields.get(
+                        "characteristic_strain", base.characteristic_strain
+                    ),
+                    fibre=fields.get("fibre", base.fibre),
                 )
         return table
 
@@ -835,6 +971,8 @@ class Project(_Model):
         for i, item in enumerate(self.interventions):
             if isinstance(item, Intervention):
                 name = item.name or option_name(item.material, item.position, item.ratio)
+                if not item.name and item.diameter is not None:
+                    name += f" Ø{item.diameter:g}"
                 out.append((i, item.model_copy(update={"name": name})))
                 continue
             ax = item.sweep
@@ -853,8 +991,8 @@ class Project(_Model):
 
     def expand_interventions(self) -> list[Intervention]:
         """The concrete options, in file order, every one named; an option equal to an earlier
-        one (same material, position and ratio) is dropped."""
-        seen: set[tuple[str, str, float]] = set()
+        one (same material, position, ratio and diameter) is dropped."""
+        seen: set[tuple[str, str, float, float | None]] = set()
         out: list[Intervention] = []
         for _, option in self._expanded_with_index():
             key = _key(option)
@@ -864,5 +1002,6 @@ class Project(_Model):
         return out
 
 
-def _key(option: Intervention) -> tuple[str, str, float]:
-    return (option.material, option.position, float(option.ratio))
+def _key(option: Intervention) -> tuple[str, str, float, float | None]:
+    d = None if option.diameter is None else float(option.diameter)
+    return (option.material, option.position, float(option.ratio), d)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import math
 import shutil
 from pathlib import Path
 
@@ -48,8 +49,9 @@ def test_small_project_end_to_end_and_instant_rerun(tmp_path, capsys):
     assert first["demand"]["pga"] == pytest.approx(0.106)
     assert first["project"]["name"] == "Small <&> wall"
     gfrp = first["cases"][1]
-    # 1 ‰ of 0.3 m x 5 m on each face, GFRP density 2000 kg/m3, bars 3 m long
-    assert gfrp["frp_mass"] == pytest.approx(2 * 0.001 * 0.3 * 5.0 * 3.0 * 2000.0, rel=1e-9)
+    # 1 ‰ of 0.3 m x 5 m = 1500 mm² on each face, built as 30 bars Ø8 (30·16π = 1508 mm²,
+    # docs/model.md §2.1), GFRP density 2000 kg/m3, bars 3 m long
+    assert gfrp["frp_mass"] == pytest.approx(2 * 30 * 16e-6 * math.pi * 3.0 * 2000.0, rel=1e-9)
     assert first["retrofit_required"] is (not first["cases"][0]["meets_target"])
     out = capsys.readouterr().out
     assert "Spectrum compatibility" in out
@@ -117,7 +119,7 @@ def test_project_maps_onto_inputs(tmp_path):
     assert inputs.strain_factor == 0.4
     gfrp = inputs.options[0].material
     assert gfrp.price == 9.0 and gfrp.elastic_modulus == FRP_MATERIALS["GFRP"].elastic_modulus
-    assert inputs.options[1].name == "my carbon" and inputs.options[1].ratio == 2.0
+    assert inputs.options[1].name == "my carbon" and inputs.options[1].ratio_asked == 2.0
     assert inputs.costs.installation_per_metre == 100.0
     assert inputs.input_file == "p.yaml"
 
