@@ -4,7 +4,8 @@ docs/model.md §1.1.  Units: forces per metre of wall [kN/m], lengths [m], stres
 
 The check is made at the largest compression the section must carry in the model,
 N = W + T_u (T_u: the acting bar at the rupture strain ε_max the model uses, c·ε_u or the
-design value; N = W for the unreinforced wall), on the stress block 0.85·f_d: x = N / (0.85·f_d·1 m).
+design value; N = W for the unreinforced wall), on the stress block 0.85·f_d:
+x = N / (0.85·f_d·1 m).
 
 Drop rule (:func:`pivot_fails`):
 
