@@ -1,0 +1,1 @@
+"""The typed results of an assessment (docs/results-json.md)."""
