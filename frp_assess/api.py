@@ -2,18 +2,18 @@
 
 ``run_assessment`` takes validated :class:`~frp_assess.assess.inputs.AssessmentInputs`, runs
 everything, writes the results directory as one set (locked, staged, swapped in:
-:mod:`frp_assess.output_set`) and returns the results dict
-(docs/results-json.md).  Progress and cancellation are plain callables/events.
+:mod:`frp_assess.output_set`) and returns the typed results
+(:class:`~frp_assess.results.model.AssessmentResult`, docs/results-json.md).  Progress and
+cancellation are plain callables/events.
 """
 
 from __future__ import annotations
 
 import datetime as _dt
 import threading
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import asdict, dataclass
 from pathlib import Path
-from typing import Any
 
 from frp_assess.assess.cache import IdaCache, cache_file, record_digest, task_key
 from frp_assess.assess.code_check import simple_overturning_check
@@ -21,12 +21,9 @@ from frp_assess.assess.inputs import AssessmentInputs, Material
 from frp_assess.assess.results import (
     below_collapse,
     build_results,
-    case_dict,
-    history_dict,
+    case_result,
+    history_run,
     rank_cases,
-    results_csv,
-    results_json,
-    spectra_csv,
 )
 from frp_assess.assess.runner import DesignResult, IdaRunner, design_search, summarise
 from frp_assess.assess.seismic import SeismicInput, build_records
@@ -36,6 +33,15 @@ from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_write_text
 from frp_assess.motions import write_at2
 from frp_assess.output_set import FolderLock, staged_set
+from frp_assess.results.csv_files import results_csv, spectra_csv
+from frp_assess.results.json_io import to_json
+from frp_assess.results.model import (
+    AssessmentResult,
+    CaseResult,
+    Governing,
+    Sensitivity,
+    SensitivityRow,
+)
 from frp_assess.text_safety import plain
 
 #: progress(stage, done, total); stages: "records", "ida", "design", "writing"
@@ -75,7 +81,7 @@ def run_assessment(
     created: str | None = None,
     pdf: bool = True,
     write: bool = True,
-) -> tuple[dict[str, Any], RunStats]:
+) -> tuple[AssessmentResult, RunStats]:
     """Run the assessment and write ``out_dir``; returns (results, stats).
 
     ``progress`` reports each stage overall; ``case_progress`` additionally names every
@@ -116,22 +122,24 @@ def run_assessment(
     summaries = [summarise(r, inputs.ida.max_multiplier, a_rm) for r in all_results]
     urm_design = summaries[0].design_a_dyn
     options = [None, *inputs.options]
-    cases = [
-        case_dict(inputs, o, m, s, names, demand, urm_design)
-        for o, m, s in zip(options, models, summaries, strict=True)
-    ]
-    recommended = rank_cases(cases, inputs.target)
+    cases, recommended = rank_cases(
+        [
+            case_result(inputs, o, m, s, names, demand, urm_design)
+            for o, m, s in zip(options, models, summaries, strict=True)
+        ],
+        inputs.target,
+    )
     report("sensitivity", 0, 1)
-    focus = next((i for i, c in enumerate(cases) if c.get("rank") == 1), 0)
+    focus = next((i for i, c in enumerate(cases) if c.rank == 1), 0)
     # the same cache, its own counts: RunStats reports the assessment's IDAs
     sens_runner = IdaRunner(records, inputs, runner.cache, jobs=jobs, cancel=cancel)
-    conventions = {
-        "case": cases[focus]["name"],
-        "rows": [
-            asdict(row)
+    conventions = Sensitivity(
+        case=cases[focus].name,
+        rows=tuple(
+            SensitivityRow(**asdict(row))
             for row in sensitivity(sens_runner, models[focus], demand, inputs.ida.max_multiplier)
-        ],
-    }
+        ),
+    )
     report("sensitivity", 1, 1)
 
     design: list[DesignResult] | None = None
@@ -178,14 +186,14 @@ def run_assessment(
 
 def governing_histories(
     inputs: AssessmentInputs,
-    cases: list[dict[str, Any]],
+    cases: Sequence[CaseResult],
     records: list,
     all_results: list,
     recommended: str | None,
-) -> dict[str, Any] | None:
+) -> Governing | None:
     """θ/α(t) and bar strain of the recommended option (else the unreinforced wall) under the
     record that fails first, at the collapse multiplier and just below it."""
-    idx = next((i for i, c in enumerate(cases) if c["name"] == recommended), 0)
+    idx = next((i for i, c in enumerate(cases) if c.name == recommended), 0)
     res = all_results[idx]
     failing = [(r.collapse_multiplier, k) for k, r in enumerate(res) if r.collapse_multiplier]
     if not failing:
@@ -194,23 +202,23 @@ def governing_histories(
     model = inputs.model_for(None if idx == 0 else inputs.options[idx - 1])
     rec = records[k]
     below = below_collapse(c, res[k].survivor_multiplier, inputs.ida.tolerance)
-    runs = [
-        history_dict("collapse", c, model.run(rec.acc, rec.dt, c, history=True), model.wall.alpha),
-        history_dict(
+    runs = (
+        history_run("collapse", c, model.run(rec.acc, rec.dt, c, history=True), model.wall.alpha),
+        history_run(
             "just below", below, model.run(rec.acc, rec.dt, below, history=True), model.wall.alpha
         ),
-    ]
+    )
     bars = model.rebars
-    return {
-        "case": cases[idx]["name"],
-        "record": rec.name,
-        "runs": runs,
-        "rupture_strain": None if bars is None else bars.rupture_strain,
-    }
+    return Governing(
+        case=cases[idx].name,
+        record=rec.name,
+        runs=runs,
+        rupture_strain=None if bars is None else bars.rupture_strain,
+    )
 
 
 def write_outputs(
-    results: dict[str, Any], seismic: SeismicInput, out_dir: Path, *, pdf: bool
+    results: AssessmentResult, seismic: SeismicInput, out_dir: Path, *, pdf: bool
 ) -> None:
     """Write the output set — results.json, results.csv, spectra.csv, records/*.AT2 and (if
     ``pdf`` and available) report.pdf — as one set (:mod:`frp_assess.output_set`).
@@ -233,7 +241,7 @@ def write_outputs(
             write_at2(rec, staging / "records" / f"{rec.name}.AT2", f"{rec.name}: {rec.source}")
         atomic_write_text(staging / "spectra.csv", spectra_csv(results))
         atomic_write_text(staging / "results.csv", results_csv(results))
-        atomic_write_text(staging / "results.json", results_json(results))
+        atomic_write_text(staging / "results.json", to_json(results))
         if pdf:
             build_pdf(results, staging / "report.pdf")
 
@@ -250,7 +258,7 @@ def _is_plain_file_name(name: str) -> bool:
     )
 
 
-def build_pdf(results: dict[str, Any], path: Path) -> bool:
+def build_pdf(results: AssessmentResult, path: Path) -> bool:
     """Build the PDF report if the report package is installed; returns whether it did."""
     try:
         from frp_assess.report.document import build_report

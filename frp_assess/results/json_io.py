@@ -2,7 +2,8 @@
 
 One generic pair driven by the dataclasses' type hints: a new dataclass or field in
 :mod:`frp_assess.results.model` needs no change here.  Supported annotations: dataclasses,
-``tuple[X, ...]``, fixed ``tuple[X, Y]``, ``list[X]``, ``dict[str, X]``, ``X | None``,
+``tuple[X, ...]``, fixed ``tuple[X, Y]``, ``list[X]``, ``dict[str, X]``, unions (``X | None``,
+``str | float``: the first alternative that fits),
 ``float``/``int``/``str``/``bool`` and ``object`` (any JSON value, kept as read).  A field
 with a default may be missing from the file; an unknown key or a value of the wrong type is
 an :class:`~frp_assess.errors.InputError` naming the file and the key path.
@@ -84,9 +85,12 @@ def _convert(tp: Any, value: Any, file: str | None, key: str) -> Any:
         if value is None and type(None) in args:
             return None
         inner = [a for a in args if a is not type(None)]
-        if len(inner) != 1:
-            raise TypeError(f"unsupported union {tp!r}")
-        return _convert(inner[0], value, file, key)
+        for alternative in inner[:-1]:
+            try:
+                return _convert(alternative, value, file, key)
+            except InputError:
+                continue
+        return _convert(inner[-1], value, file, key)
     if dataclasses.is_dataclass(tp):
         return _dataclass(tp, value, file, key)
     if origin is tuple or origin is list:

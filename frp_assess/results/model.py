@@ -87,7 +87,7 @@ class ModelSettings:
     an impact [-], strain_factor c of eps_max = c·eps_u [-], free_vibration_tail [s], target
     capacity/demand [-]; design_value says how design_a_dyn is taken (prose)."""
 
-    restitution: str  #: energy | velocity | number
+    restitution: str | float  #: energy | velocity, or the coefficient itself [-]
     restitution_ratio: float
     rupture: str
     collapse: str  #: overturning | end-of-record | first-exceedance
