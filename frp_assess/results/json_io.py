@@ -44,16 +44,20 @@ def from_json(text: str, *, file: str | None = None) -> AssessmentResult:
     :data:`~frp_assess.results.model.SCHEMA_VERSION` is refused (written by another version
     of frp-assess: run the project again)."""
     try:
-        data = json.loads(text)
+        data = json.loads(text, parse_constant=_no_constant)
     except json.JSONDecodeError as exc:
-        raise InputError(f"not valid JSON: {exc.msg}", file=file, line=exc.lineno) from None
+        raise InputError(f"invalid JSON: {exc.msg}", file=file, line=exc.lineno) from None
+    except RecursionError:
+        raise InputError("invalid JSON: nested too deeply", file=file) from None
+    except ValueError as exc:  # NaN, Infinity
+        raise InputError(f"invalid JSON: {exc}", file=file) from None
     if not isinstance(data, dict):
         raise InputError("not a results object", file=file)
     version = data.get("schema_version")
     if version != SCHEMA_VERSION:
         raise InputError(
-            f"schema version {version!r} is not the {SCHEMA_VERSION} this frp-assess reads; "
-            "run the project again to rewrite it",
+            f"unsupported schema_version {version!r} (this frp-assess reads "
+            f"{SCHEMA_VERSION}); run the project again to rewrite it",
             file=file,
             key="schema_version",
         )
@@ -95,7 +99,7 @@ def _convert(tp: Any, value: Any, file: str | None, key: str) -> Any:
         return _dataclass(tp, value, file, key)
     if origin is tuple or origin is list:
         if not isinstance(value, list):
-            raise _fail(file, key, f"expected a list, found {_kind(value)}")
+            raise _fail(file, key, f"expected an array, found {_kind(value)}")
         if origin is tuple and not (len(args) == 2 and args[1] is Ellipsis):
             if len(value) != len(args):
                 raise _fail(file, key, f"expected {len(args)} items, found {len(value)}")
@@ -145,6 +149,10 @@ def _scalar(tp: Any, value: Any, file: str | None, key: str) -> Any:
     return value
 
 
+def _no_constant(name: str) -> None:
+    raise ValueError(f"{name} is not a JSON number")
+
+
 def _join(key: str, name: str) -> str:
     return f"{key}.{name}" if key else name
 
@@ -152,6 +160,6 @@ def _join(key: str, name: str) -> str:
 def _kind(value: Any) -> str:
     if value is None:
         return "null"
-    return {dict: "an object", list: "a list", str: "text", bool: "true/false"}.get(
+    return {dict: "an object", list: "an array", str: "text", bool: "true/false"}.get(
         type(value), "a number"
     )
