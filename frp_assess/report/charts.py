@@ -1,4 +1,4 @@
-"""Vector charts (reportlab ``Drawing`` flowables) as pure functions of the results dict.
+"""Vector charts (reportlab ``Drawing`` flowables) as pure functions of the typed results.
 
 A small axes helper (:class:`Axes`) maps data to drawing coordinates on linear or log scales,
 draws the frame, grid, ticks and axis labels; the chart functions only add the data.

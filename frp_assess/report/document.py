@@ -57,8 +57,9 @@ def load_results(results_dir: str | Path) -> AssessmentResult:
 
 
 def contract_error(exc: Exception, path: Path | str) -> InputError:
-    """The one line said when a results file passed :func:`load_results` but a value deeper
-    in does not follow the contract (docs/results-json.md): a key missing, a wrong type."""
+    """The one line said when a results file passed :func:`load_results` (every key and type
+    is checked there) but a value breaks the report (docs/results-json.md): out of range,
+    an empty list where one is needed."""
     if isinstance(exc, KeyError):
         what = f"missing key {exc.args[0]!r}" if exc.args else "a key is missing"
     else:
@@ -68,7 +69,7 @@ def contract_error(exc: Exception, path: Path | str) -> InputError:
     )
 
 
-#: what reading a results dict that does not follow the contract raises
+#: what building the report from results that break the contract (a value out of range) raises
 CONTRACT_ERRORS = (KeyError, TypeError, ValueError, AttributeError, IndexError, ZeroDivisionError)
 
 

@@ -1,4 +1,4 @@
-"""The seven sections of the report, each a list of flowables built from the results dict."""
+"""The seven sections of the report, each a list of flowables built from the typed results."""
 
 from __future__ import annotations
 

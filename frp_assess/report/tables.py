@@ -1,4 +1,4 @@
-"""Table contents as pure functions of the results dict (docs/results-json.md).
+"""Table contents as pure functions of the typed results (docs/results-json.md).
 
 Every function returns plain text (not markup): :mod:`frp_assess.report.flow` escapes it for
 the PDF (:func:`frp_assess.text_safety.pdf`).  Header cells with sub/superscripts or line
