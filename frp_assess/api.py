@@ -2,8 +2,9 @@
 
 ``run_assessment`` takes validated :class:`~frp_assess.assess.inputs.AssessmentInputs`, runs
 everything, writes the results directory as one set (locked, staged, swapped in:
-:mod:`frp_assess.output_set`) and returns the results dict
-(docs/results-json.md).  Progress and cancellation are plain callables/events.
+:mod:`frp_assess.output_set`) and returns the typed results
+(:class:`~frp_assess.results.model.AssessmentResult`, docs/results-json.md).  Progress and
+cancellation are plain callables/events.
 """
 
 from __future__ import annotations
@@ -17,7 +18,6 @@ from collections.abc import Callable, Sequence
 from dataclasses import asdict, dataclass
 from importlib import resources
 from pathlib import Path
-from typing import Any
 
 from frp_assess.assess.cache import IdaCache, cache_file, record_digest, task_key
 from frp_assess.assess.code_check import simple_overturning_check
@@ -26,12 +26,9 @@ from frp_assess.assess.inputs import AssessmentInputs, Material
 from frp_assess.assess.results import (
     below_collapse,
     build_results,
-    case_dict,
-    history_dict,
+    case_result,
+    history_run,
     rank_cases,
-    results_csv,
-    results_json,
-    spectra_csv,
 )
 from frp_assess.assess.runner import (
     CaseSummary,
@@ -52,6 +49,15 @@ from frp_assess.output_set import FolderLock, staged_set
 from frp_assess.study import run as study_run
 from frp_assess.study.run import Executor, StudyStats
 from frp_assess.study.schema import StudyFile
+from frp_assess.results.csv_files import results_csv, spectra_csv
+from frp_assess.results.json_io import to_json
+from frp_assess.results.model import (
+    AssessmentResult,
+    CaseResult,
+    Governing,
+    Sensitivity,
+    SensitivityRow,
+)
 from frp_assess.text_safety import plain
 
 #: progress(stage, done, total); stages: "records", "ida", "design", "writing"
@@ -91,7 +97,7 @@ def run_assessment(
     created: str | None = None,
     pdf: bool = True,
     write: bool = True,
-) -> tuple[dict[str, Any], RunStats]:
+) -> tuple[AssessmentResult, RunStats]:
     """Run the assessment and write ``out_dir``; returns (results, stats).
 
     ``progress`` reports each stage overall; ``case_progress`` additionally names every
@@ -132,22 +138,24 @@ def run_assessment(
     summaries = [summarise(r, inputs.ida.max_multiplier, a_rm) for r in all_results]
     urm_design = summaries[0].design_a_dyn
     options = [None, *inputs.options]
-    cases = [
-        case_dict(inputs, o, m, s, names, demand, urm_design)
-        for o, m, s in zip(options, models, summaries, strict=True)
-    ]
-    recommended = rank_cases(cases, inputs.target)
+    cases, recommended = rank_cases(
+        [
+            case_result(inputs, o, m, s, names, demand, urm_design)
+            for o, m, s in zip(options, models, summaries, strict=True)
+        ],
+        inputs.target,
+    )
     report("sensitivity", 0, 1)
-    focus = next((i for i, c in enumerate(cases) if c.get("rank") == 1), 0)
+    focus = next((i for i, c in enumerate(cases) if c.rank == 1), 0)
     # the same cache, its own counts: RunStats reports the assessment's IDAs
     sens_runner = IdaRunner(records, inputs, runner.cache, jobs=jobs, cancel=cancel)
-    conventions = {
-        "case": cases[focus]["name"],
-        "rows": [
-            asdict(row)
+    conventions = Sensitivity(
+        case=cases[focus].name,
+        rows=tuple(
+            SensitivityRow(**asdict(row))
             for row in sensitivity(sens_runner, models[focus], demand, inputs.ida.max_multiplier)
-        ],
-    }
+        ),
+    )
     report("sensitivity", 1, 1)
 
     design: list[DesignResult] | None = None
@@ -194,14 +202,14 @@ def run_assessment(
 
 def governing_histories(
     inputs: AssessmentInputs,
-    cases: list[dict[str, Any]],
+    cases: Sequence[CaseResult],
     records: list,
     all_results: list,
     recommended: str | None,
-) -> dict[str, Any] | None:
+) -> Governing | None:
     """θ/α(t) and bar strain of the recommended option (else the unreinforced wall) under the
     record that fails first, at the collapse multiplier and just below it."""
-    idx = next((i for i, c in enumerate(cases) if c["name"] == recommended), 0)
+    idx = next((i for i, c in enumerate(cases) if c.name == recommended), 0)
     res = all_results[idx]
     failing = [(r.collapse_multiplier, k) for k, r in enumerate(res) if r.collapse_multiplier]
     if not failing:
@@ -210,23 +218,23 @@ def governing_histories(
     model = inputs.model_for(None if idx == 0 else inputs.options[idx - 1])
     rec = floor_record(records[k], inputs.building)  # the motion the IDA ran
     below = below_collapse(c, res[k].survivor_multiplier, inputs.ida.tolerance)
-    runs = [
-        history_dict("collapse", c, model.run(rec.acc, rec.dt, c, history=True), model.wall.alpha),
-        history_dict(
+    runs = (
+        history_run("collapse", c, model.run(rec.acc, rec.dt, c, history=True), model.wall.alpha),
+        history_run(
             "just below", below, model.run(rec.acc, rec.dt, below, history=True), model.wall.alpha
         ),
-    ]
+    )
     bars = model.rebars
-    return {
-        "case": cases[idx]["name"],
-        "record": rec.name,
-        "runs": runs,
-        "rupture_strain": None if bars is None else bars.rupture_strain,
-    }
+    return Governing(
+        case=cases[idx].name,
+        record=rec.name,
+        runs=runs,
+        rupture_strain=None if bars is None else bars.rupture_strain,
+    )
 
 
 def write_outputs(
-    results: dict[str, Any], seismic: SeismicInput, out_dir: Path, *, pdf: bool
+    results: AssessmentResult, seismic: SeismicInput, out_dir: Path, *, pdf: bool
 ) -> None:
     """Write the output set — results.json, results.csv, spectra.csv, records/*.AT2 and (if
     ``pdf`` and available) report.pdf — as one set (:mod:`frp_assess.output_set`).
@@ -249,7 +257,7 @@ def write_outputs(
             write_at2(rec, staging / "records" / f"{rec.name}.AT2", f"{rec.name}: {rec.source}")
         atomic_write_text(staging / "spectra.csv", spectra_csv(results))
         atomic_write_text(staging / "results.csv", results_csv(results))
-        atomic_write_text(staging / "results.json", results_json(results))
+        atomic_write_text(staging / "results.json", to_json(results))
         if pdf:
             build_pdf(results, staging / "report.pdf")
 
@@ -266,7 +274,7 @@ def _is_plain_file_name(name: str) -> bool:
     )
 
 
-def build_pdf(results: dict[str, Any], path: Path) -> bool:
+def build_pdf(results: AssessmentResult, path: Path) -> bool:
     """Build the PDF report if the report package is installed; returns whether it did."""
     try:
         from frp_assess.report.document import build_report

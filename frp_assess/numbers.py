@@ -1,4 +1,5 @@
-"""Number formats and result sentences shared by the CLI, the TUI and the PDF report.
+"""Number formats and result sentences shared by the CLI, the TUI and the PDF report
+(they read the typed results, :mod:`frp_assess.results.model`).
 
 :func:`fmt_against` shows a ratio next to a verdict on it (capacity/demand against the target)
 with enough digits that the number shown agrees with the verdict: 0.997 against a target of 1
@@ -8,8 +9,8 @@ is "0.997", never "1.00 … meets: no".
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
-from typing import Any
+
+from frp_assess.results.model import AssessmentResult
 
 #: most decimals :func:`fmt_against` shows before giving up on separating value and threshold
 MAX_DECIMALS = 6
@@ -31,25 +32,25 @@ def fmt_against(value: float, threshold: float, meets: bool | None, decimals: in
     return text
 
 
-def numerical_check_text(results: Mapping[str, Any]) -> str | None:
+def numerical_check_text(results: AssessmentResult) -> str | None:
     """The verification run in one sentence, or None when it was not asked for."""
-    nc = results.get("numerical_check")
-    if not nc:
+    nc = results.numerical_check
+    if nc is None:
         return None
     head = (
         f"Numerical check: every IDA was repeated at a 10× tighter integration tolerance "
-        f"({nc['check_tolerance']:g} instead of {nc['tolerance']:g}). "
+        f"({nc.check_tolerance:g} instead of {nc.tolerance:g}). "
     )
-    if nc["fate_changed"]:
+    if nc.fate_changed or nc.max_change is None:
         return head + (
-            f"For {nc['case']} under {nc['record']} a record collapsed in one run and not in "
+            f"For {nc.case} under {nc.record} a record collapsed in one run and not in "
             f"the other: that result is ill-conditioned (sensitive to the integrator's "
-            f"round-off); {nc['changed_pairs']} of {nc['pairs']} multipliers moved by more "
+            f"round-off); {nc.changed_pairs} of {nc.pairs} multipliers moved by more "
             "than the IDA tolerance."
         )
     return head + (
-        f"The largest change of a collapse multiplier was {nc['max_change']:.2%} "
-        f"({nc['case']}, {nc['record']}); {nc['changed_pairs']} of {nc['pairs']} "
+        f"The largest change of a collapse multiplier was {nc.max_change:.2%} "
+        f"({nc.case}, {nc.record}); {nc.changed_pairs} of {nc.pairs} "
         "multipliers moved by more than the IDA tolerance."
     )
 
@@ -58,24 +59,49 @@ def numerical_check_text(results: Mapping[str, Any]) -> str | None:
 SCATTER_ALERT = 0.10
 
 
-def no_retrofit_caveats(results: Mapping[str, Any]) -> list[str]:
+def no_retrofit_caveats(results: AssessmentResult) -> list[str]:
     """What a "no retrofit needed" verdict must say alongside (issue 15 §3): the code's
     kinematic check of the same wall failing, or a margin within the scatter of the records
     (fitted P(collapse) at the demand ≥ 10 %, or capacity/demand − 1 below the records' CoV)."""
     out = []
-    cc = results.get("code_check")
-    if cc is not None and not cc.get("passed", True):
+    if not results.code_check.passed:
         out.append("the linear kinematic check of Circolare 2019 §C8.7.1 is NOT satisfied")
-    urm = results["cases"][0]
-    sc = urm.get("scatter") or {}
-    fr = sc.get("fragility") or {}
-    p = fr.get("p_collapse_at_demand")
-    target = float(results.get("model", {}).get("target", 1.0))
-    margin = urm.get("capacity_demand", math.inf) / target - 1.0
+    urm = results.cases[0]
+    sc = urm.scatter
+    p = None if sc.fragility is None else sc.fragility.p_collapse_at_demand
+    margin = urm.capacity_demand / results.model.target - 1.0
     if p is not None and p >= SCATTER_ALERT:
         out.append(f"the fitted probability of collapse at the demand is {p:.0%}")
-    elif "cov" in sc and margin < sc["cov"]:
+    elif margin < sc.cov:
         out.append(
-            f"the margin ({margin:.0%}) is within the scatter of the records (CoV {sc['cov']:.0%})"
+            f"the margin ({margin:.0%}) is within the scatter of the records (CoV {sc.cov:.0%})"
         )
     return out
+
+
+#: said in place of "recommended" when the record set fails the code's compatibility checks
+NOT_COMPLIANT = "input not code-compliant"
+
+
+def recommendation_label(results: AssessmentResult) -> str:
+    """The label of the rank-1 option: "Recommended", or "Best ranked (input not
+    code-compliant)" when the record set fails the code's spectrum-compatibility checks."""
+    if results.input_code_compliant:
+        return "Recommended"
+    return f"Best ranked ({NOT_COMPLIANT})"
+
+
+def recommendation_text(results: AssessmentResult) -> str:
+    """One line saying what to do: the recommended option, or that no retrofit is needed.
+
+    ``recommended`` is the cheapest option meeting the target even when the unreinforced wall
+    already meets it; this says so instead of presenting that option as required.
+    """
+    rec = results.recommended
+    if results.cases[0].meets_target:
+        text = "no retrofit needed: the unreinforced wall already meets the target"
+        caveats = no_retrofit_caveats(results)
+        if caveats:
+            text += " (but " + "; ".join(caveats) + ")"
+        return text + (f" (cheapest option for extra margin: {rec})" if rec else "")
+    return rec or "none of the options meets the target"

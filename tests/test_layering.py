@@ -21,7 +21,8 @@ PACKAGE = Path(frp_assess.__file__).parent
 #: package -> the frp_assess packages it may import ("" is frp_assess itself, for __version__)
 INTERNAL: dict[str, set[str]] = {
     "errors": set(),
-    "numbers": set(),
+    "results": {"errors"},  # the typed results (stdlib dataclasses): no numerics, no files
+    "numbers": {"results"},
     "text_safety": set(),
     "io_utils": {"errors"},
     "output_set": {"errors", "io_utils"},
@@ -34,18 +35,20 @@ INTERNAL: dict[str, set[str]] = {
         "results",
     },  # fmt: skip
     "report": {"errors", "io_utils", "numbers", "text_safety", "results"},
-    "study": {"", "errors", "io_utils", "dynamics", "motions", "config", "assess", "report"},
+    "study": {
+        "", "errors", "io_utils", "dynamics", "motions", "config", "assess", "report", "results",
+    },  # fmt: skip
     "api": {
         "", "errors", "io_utils", "output_set", "text_safety", "dynamics", "motions", "config",
-        "assess", "report", "study",
+        "assess", "report", "study", "results",
     },  # fmt: skip
     "tui": {
         "", "errors", "io_utils", "numbers", "text_safety", "dynamics", "motions", "config",
-        "assess", "api",
+        "assess", "api", "results",
     },  # fmt: skip
     "cli": {
         "", "errors", "io_utils", "numbers", "text_safety", "output_set", "dynamics", "motions",
-        "config", "assess", "report", "study", "api", "tui",
+        "config", "assess", "report", "study", "api", "tui", "results",
     },  # fmt: skip
     "__main__": {"cli"},
     "__init__": set(),

@@ -15,13 +15,18 @@ from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, T
 from frp_assess.api import default_out_dir, prepare_records, run_assessment
 from frp_assess.assess.from_project import load_inputs
 from frp_assess.assess.inputs import AssessmentInputs
-from frp_assess.assess.results import recommendation_label, recommendation_text
 from frp_assess.cli.output import Column, make_console, print_table, user
 from frp_assess.cli.wall_args import TOLERANCE
 from frp_assess.errors import Cancelled, InputError
 from frp_assess.motions import ComplianceReport
-from frp_assess.numbers import fmt_against, numerical_check_text
+from frp_assess.numbers import (
+    fmt_against,
+    numerical_check_text,
+    recommendation_label,
+    recommendation_text,
+)
 from frp_assess.output_set import FolderLock, check_out_dir
+from frp_assess.results.model import AssessmentResult
 from frp_assess.text_safety import plain
 
 
@@ -84,11 +89,10 @@ def print_compliance(con: Console, rep: ComplianceReport) -> None:
     )
 
 
-def ranking_columns(results: dict[str, Any]) -> list[Column]:
+def ranking_columns(results: AssessmentResult) -> list[Column]:
     """Columns of the ranking table, every header with its unit."""
-    cur = results["costs"]["currency"]
-    design = results["model"].get("design_value") or "design value"
-    statistic = "mean" if str(design).startswith("mean") else "design"
+    cur = results.costs.currency
+    statistic = "mean" if results.design_is_mean else "design"
     return [
         Column("rank"),
         Column("option", text=True),
@@ -102,31 +106,31 @@ def ranking_columns(results: dict[str, Any]) -> list[Column]:
     ]
 
 
-def ranking_rows(results: dict[str, Any]) -> list[list[str]]:
+def ranking_rows(results: AssessmentResult) -> list[list[str]]:
     """One row per case (unreinforced wall and options), by rank (plain text)."""
-    target = float(results["model"]["target"])
-    ordered = sorted(results["cases"], key=lambda c: (c["rank"] is not None, c["rank"] or 0))
+    target = float(results.model.target)
+    ordered = sorted(results.cases, key=lambda c: (c.rank is not None, c.rank or 0))
     return [
         [
-            "—" if c["rank"] is None else str(c["rank"]),
-            c["name"],
-            f"{c['frp_mass']:.1f}",
-            f"{c['frp_cost']:.0f}",
-            f"{c['design_a_dyn']:.3f}",
-            f"{c['mean_q']:.2f}",
-            f"{c['improvement']:.2f}",
-            fmt_against(c["capacity_demand"], target, c["meets_target"]),
-            "yes" if c["meets_target"] else "no",
+            "—" if c.rank is None else str(c.rank),
+            c.name,
+            f"{c.frp_mass:.1f}",
+            f"{c.frp_cost:.0f}",
+            f"{c.design_a_dyn:.3f}",
+            f"{c.mean_q:.2f}",
+            f"{c.improvement:.2f}",
+            fmt_against(c.capacity_demand, target, c.meets_target),
+            "yes" if c.meets_target else "no",
         ]
         for c in ordered
     ]
 
 
-def print_ranking(con: Console, results: dict[str, Any]) -> None:
+def print_ranking(con: Console, results: AssessmentResult) -> None:
     print_table(
         con,
-        f"Retrofit options (demand a_g·S = {results['demand']['pga']:.3f} g, "
-        f"target capacity/demand ≥ {results['model']['target']:g})",
+        f"Retrofit options (demand a_g·S = {results.demand.pga:.3f} g, "
+        f"target capacity/demand ≥ {results.model.target:g})",
         ranking_columns(results),
         ranking_rows(results),
     )
@@ -192,34 +196,34 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
         except KeyboardInterrupt:
             cancel.set()
             raise Cancelled("interrupted") from None
-    w = results["wall"]
-    urm = results["cases"][0]
-    target = float(results["model"]["target"])
+    w = results.wall
+    urm = results.urm
+    target = float(results.model.target)
     console.print(
-        f"wall B = {w['thickness']:g} m, H = {w['height']:g} m, α = {w['alpha_deg']:.2f}°, "
-        f"a_RM = {w['a_rm']:.3f} g, {user(w['mechanism'])}; unreinforced: design a_dyn = "
-        f"{urm['design_a_dyn']:.3f} g, capacity/demand = "
-        f"{fmt_against(urm['capacity_demand'], target, urm['meets_target'])} "
-        f"({'meets' if urm['meets_target'] else 'does NOT meet'} the target)"
+        f"wall B = {w.thickness:g} m, H = {w.height:g} m, α = {w.alpha_deg:.2f}°, "
+        f"a_RM = {w.a_rm:.3f} g, {user(w.mechanism)}; unreinforced: design a_dyn = "
+        f"{urm.design_a_dyn:.3f} g, capacity/demand = "
+        f"{fmt_against(urm.capacity_demand, target, urm.meets_target)} "
+        f"({'meets' if urm.meets_target else 'does NOT meet'} the target)"
     )
-    cc = results["code_check"]
+    cc = results.code_check
     console.print(
-        f"code kinematic check (Circolare 2019 §C8.7.1, q = {cc['behaviour_factor']:g}, "
-        f"FC = {cc['FC']:g}): a0* = {cc['a0_star']:.3f} g vs a_g·S/q = {cc['demand']:.3f} g "
-        f"-> {'satisfied' if cc['passed'] else 'NOT satisfied'}. {user(cc['note'])}"
+        f"code kinematic check (Circolare 2019 §C8.7.1, q = {cc.behaviour_factor:g}, "
+        f"FC = {cc.FC:g}): a0* = {cc.a0_star:.3f} g vs a_g·S/q = {cc.demand:.3f} g "
+        f"-> {'satisfied' if cc.passed else 'NOT satisfied'}. {user(cc.note)}"
     )
-    if len(results["cases"]) > 1:
+    if len(results.cases) > 1:
         print_ranking(console, results)
-        console.print(f"Ranking rule: {user(results['ranking_rule'])}")
+        console.print(f"Ranking rule: {user(results.ranking_rule)}")
         console.print(f"{recommendation_label(results)}: " + user(recommendation_text(results)))
-    if not results["input_code_compliant"]:
+    if not results.input_code_compliant:
         console.print(
             "[bold red]INPUT NOT CODE-COMPLIANT[/]: the records fail the code's "
             "spectrum-compatibility checks (table above); the results are not a basis for a "
             "signed verdict and no option is recommended."
         )
-    for d in results["design"] or []:
-        console.print(f"design {user(d['material'])} {user(d['position'])}: {user(d['message'])}")
+    for d in results.design or ():
+        console.print(f"design {user(d.material)} {user(d.position)}: {user(d.message)}")
     check = numerical_check_text(results)
     if check is not None:
         console.print(user(check))

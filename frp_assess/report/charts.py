@@ -1,4 +1,4 @@
-"""Vector charts (reportlab ``Drawing`` flowables) as pure functions of the results dict.
+"""Vector charts (reportlab ``Drawing`` flowables) as pure functions of the typed results.
 
 A small axes helper (:class:`Axes`) maps data to drawing coordinates on linear or log scales,
 draws the frame, grid, ticks and axis labels; the chart functions only add the data.
@@ -17,9 +17,10 @@ from reportlab.pdfbase.pdfmetrics import stringWidth
 
 from frp_assess.report import styles as st
 from frp_assess.report.tables import fmt_permille, is_lower_bound, urm_case
+from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.text_safety import pdf_plain
 
-Results = Mapping[str, Any]
+Results = AssessmentResult
 FS = st.CHART_FONT_SIZE
 #: longest chart label [characters] (user names in legends)
 LABEL_MAX_CHARS = 120
@@ -309,11 +310,11 @@ def spectra_chart(
     results: Results, *, width: float = st.FRAME_WIDTH, height: float = 230, log_x: bool = True
 ) -> Drawing:
     """Target spectrum, every record's 5 % spectrum and their mean, Sa [g] against T [s]."""
-    s = results["seismic"]
-    periods = [float(t) for t in s["periods"]]
-    target = [float(v) for v in s["target_sa"]]
-    mean = [float(v) for v in s["mean_sa"]]
-    rec_sa = [[float(v) for v in r["sa"]] for r in results["records"] if r.get("sa")]
+    s = results.seismic
+    periods = [float(t) for t in s.periods]
+    target = [float(v) for v in s.target_sa]
+    mean = [float(v) for v in s.mean_sa]
+    rec_sa = [[float(v) for v in r.sa] for r in results.records if r.sa]
     d = new_drawing(width, height)
     x0, y0 = 46.0, 34.0
     w, h = width - x0 - 150, height - y0 - 10
@@ -363,22 +364,22 @@ def spectra_chart(
 SERIES_KEYS = ("material", "position")
 
 
-def option_series(results: Results) -> dict[tuple[str, str], list[Mapping[str, Any]]]:
+def option_series(results: Results) -> dict[tuple[str, str], list[CaseResult]]:
     """Options grouped by (material, position), each sorted by FRP mass."""
-    groups: dict[tuple[str, str], list[Mapping[str, Any]]] = {}
-    for c in results["cases"]:
-        if c.get("material") is None:
+    groups: dict[tuple[str, str], list[CaseResult]] = {}
+    for c in results.cases:
+        if c.material is None or c.position is None:
             continue
-        groups.setdefault((c["material"], c["position"]), []).append(c)
+        groups.setdefault((c.material, c.position), []).append(c)
     for v in groups.values():
-        v.sort(key=lambda c: (c["frp_mass"], c["ratio"]))
+        v.sort(key=lambda c: (c.frp_mass, c.ratio))
     return dict(sorted(groups.items()))
 
 
-def ratio_note(groups: Mapping[tuple[str, str], Sequence[Mapping[str, Any]]]) -> str:
+def ratio_note(groups: Mapping[tuple[str, str], Sequence[CaseResult]]) -> str:
     """The legend note on the ratios ρ [‰] plotted along the lines of the options chart:
     the list when every line has the same ratios, else their range."""
-    per_line = [sorted({float(c["ratio"]) for c in cs}) for cs in groups.values()]
+    per_line = [sorted({float(c.ratio) for c in cs}) for cs in groups.values()]
     every = sorted({r for line in per_line for r in line})
     if not every:
         return ""
@@ -403,7 +404,10 @@ def _series_style(key: tuple[str, str], i: int) -> dict[str, Any]:
 def options_chart(
     results: Results, quantity: str, *, width: float = st.FRAME_WIDTH, height: float = 215
 ) -> Drawing:
-    """``quantity`` ('improvement' or 'capacity_demand') against the FRP mass of the wall [kg]."""
+    """``quantity`` ('improvement' or 'capacity_demand', a field of
+    :class:`~frp_assess.results.model.CaseResult`) against the FRP mass of the wall [kg]."""
+    if quantity not in ("improvement", "capacity_demand"):
+        raise ValueError(f"cannot chart {quantity!r}")
     labels = {
         "improvement": "level of seismic improvement I [–]",
         "capacity_demand": "capacity / demand [–]",
@@ -414,9 +418,9 @@ def options_chart(
     x0, y0 = 46.0, 34.0
     w, h = width - x0 - 150, height - y0 - 10
     cases = [c for v in groups.values() for c in v] + [urm]
-    xs = [float(c["frp_mass"]) for c in cases]
-    ys = [float(c[quantity]) for c in cases]
-    target = float(results["model"]["target"])
+    xs = [float(c.frp_mass) for c in cases]
+    ys = [float(getattr(c, quantity)) for c in cases]
+    target = float(results.model.target)
     if quantity == "capacity_demand":
         ys.append(target)
     xlo, xhi, xticks = nice_range(0.0, max(xs) * 1.03 or 1.0)
@@ -432,8 +436,8 @@ def options_chart(
     for i, (key, cs) in enumerate(groups.items()):
         sty = _series_style(key, i)
         ax.line(
-            [c["frp_mass"] for c in cs],
-            [c[quantity] for c in cs],
+            [c.frp_mass for c in cs],
+            [getattr(c, quantity) for c in cs],
             sty["color"],
             sty["width"],
             sty["dash"],
@@ -441,19 +445,19 @@ def options_chart(
         for c in cs:
             lb = is_lower_bound(c)
             any_bound |= lb
-            ax.marker(c["frp_mass"], c[quantity], sty["color"], shape=sty["marker"], hollow=lb)
+            ax.marker(
+                c.frp_mass, getattr(c, quantity), sty["color"], shape=sty["marker"], hollow=lb
+            )
         items.append((f"{key[0]} {key[1]}", sty))
-    ax.marker(urm["frp_mass"], urm[quantity], st.INK, shape="^")
+    ax.marker(urm.frp_mass, getattr(urm, quantity), st.INK, shape="^")
     items.append(("unreinforced wall", {"color": st.INK, "width": 0, "marker": "^"}))
-    rec = next((c for c in results["cases"] if c["name"] == results.get("recommended")), None)
+    rec = next((c for c in results.cases if c.name == results.recommended), None)
     if rec is not None:
-        px, py = ax.tx(rec["frp_mass"]), ax.ty(rec[quantity])
+        px, py = ax.tx(rec.frp_mass), ax.ty(getattr(rec, quantity))
         d.add(Circle(px, py, 6.5, fillColor=None, strokeColor=st.INK, strokeWidth=0.9))
         items.append(
             (
-                "recommended (ringed)"
-                if results.get("input_code_compliant", True)
-                else "best ranked (ringed)",
+                "recommended (ringed)" if results.input_code_compliant else "best ranked (ringed)",
                 {"color": st.INK, "width": 0, "marker": "o", "hollow": True},
             )
         )
@@ -495,22 +499,22 @@ def history_chart(
     results: Results, *, width: float = st.FRAME_WIDTH, height: float = 400
 ) -> Drawing | None:
     """θ/α(t) and bar strain ε(t) [‰] of the governing case, at collapse and just below."""
-    gov = results.get("governing")
-    if not gov or not gov.get("runs"):
+    gov = results.governing
+    if not gov or not gov.runs:
         return None
-    runs = gov["runs"]
-    rupture = gov.get("rupture_strain")
-    has_strain = rupture is not None or any(any(r.get("strain") or []) for r in runs)
+    runs = gov.runs
+    rupture = gov.rupture_strain
+    has_strain = rupture is not None or any(any(r.strain or []) for r in runs)
     d = new_drawing(width, height)
     x0 = 46.0
     w = width - x0 - 150
     panel_h = (height - 2 * 40) / 2 if has_strain else height - 44
-    t_end = max(max(r["time"]) for r in runs if r.get("time"))
+    t_end = max(max(r.time) for r in runs if r.time)
     xlo, xhi, xticks = nice_range(0.0, t_end)
-    below = [r for r in runs if not r.get("collapsed")]
-    peak_below = max((max(abs(v) for v in r["theta_over_alpha"]) for r in below), default=1.0)
+    below = [r for r in runs if not r.collapsed]
+    peak_below = max((max(abs(v) for v in r.theta_over_alpha) for r in below), default=1.0)
     ymax_theta = max(1.5, math.ceil(peak_below * 1.4 * 2) / 2)
-    ymin_theta = min(0.0, min(min(r["theta_over_alpha"]) for r in runs))
+    ymin_theta = min(0.0, min(min(r.theta_over_alpha) for r in runs))
     ymin_theta = max(ymin_theta, -ymax_theta)
     ylo, yhi, yticks = nice_range(ymin_theta, ymax_theta)
     y_theta = 40.0 + (panel_h + 40 if has_strain else 0)
@@ -522,18 +526,14 @@ def history_chart(
     items = []
     notes = []
     for run in runs:
-        color = st.COLLAPSE_RUN if run.get("collapsed") else st.BELOW_RUN
-        t, th, _ = _thin(
-            run["time"], run["theta_over_alpha"], run.get("strain") or [0.0] * len(run["time"])
-        )
+        color = st.COLLAPSE_RUN if run.collapsed else st.BELOW_RUN
+        t, th, _ = _thin(run.time, run.theta_over_alpha, run.strain or [0.0] * len(run.time))
         xs, ys, cut = _clip_series(t, [max(v, ylo) for v in th], yhi)
         ax.line(xs, ys, color, 0.8)
         if cut is not None:
             ax.marker(cut, yhi, color, shape="^", size=3)
             notes.append((color, f"leaves the plot at t = {cut:.2f} s"))
-        items.append(
-            (f"{run['label']}, C = {run['multiplier']:.3f}", {"color": color, "width": 1.4})
-        )
+        items.append((f"{run.label}, C = {run.multiplier:.3f}", {"color": color, "width": 1.4}))
     legend(d, x0 + w + 14, y_theta + panel_h - FS, items)
     ny = y_theta + panel_h - FS - (len(items) + 0.5) * FS * 1.55
     for color, text in notes:
@@ -541,7 +541,7 @@ def history_chart(
         d.add(_text(x0 + w + 14, ny - FS * 1.3, "(overturns)", color=color))
         ny -= FS * 3
     if has_strain:
-        strains = [1e3 * abs(v) for r in runs for v in (r.get("strain") or [0.0])]
+        strains = [1e3 * abs(v) for r in runs for v in (r.strain or [0.0])]
         top = max([*strains, 1e3 * (rupture or 0.0)])
         slo, shi, sticks = nice_range(0.0, top * 1.1 or 1.0)
         ax2 = Axes(d, x0, 40.0, w, panel_h, (xlo, xhi), (slo, shi))
@@ -549,8 +549,8 @@ def history_chart(
         if rupture is not None:
             ax2.hline(1e3 * rupture, st.TARGET, label=f"rupture ε_max = {1e3 * rupture:.2f} ‰")
         for run in runs:
-            color = st.COLLAPSE_RUN if run.get("collapsed") else st.BELOW_RUN
-            t, sn = _thin(run["time"], run.get("strain") or [0.0] * len(run["time"]))
+            color = st.COLLAPSE_RUN if run.collapsed else st.BELOW_RUN
+            t, sn = _thin(run.time, run.strain or [0.0] * len(run.time))
             ax2.line(t, [1e3 * abs(v) for v in sn], color, 0.8)
         legend(d, x0 + w + 14, 40.0 + panel_h - FS, items)
     return d

@@ -1,4 +1,5 @@
-"""The PDF assessment report: a pure function of the results dict (docs/results-json.md).
+"""The PDF assessment report: a pure function of the typed results
+(:class:`~frp_assess.results.model.AssessmentResult`, docs/results-json.md).
 
 Public API: :func:`load_results`, :func:`build_story`, :func:`build_report`.
 """
@@ -6,8 +7,6 @@ Public API: :func:`load_results`, :func:`build_story`, :func:`build_report`.
 from __future__ import annotations
 
 import datetime as _dt
-import json
-from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
@@ -20,38 +19,20 @@ from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_path
 from frp_assess.report import sections
 from frp_assess.report import styles as st
+from frp_assess.results.json_io import from_json
+from frp_assess.results.model import AssessmentResult
 from frp_assess.text_safety import pdf_plain, plain
-
-#: top-level keys the report reads
-REQUIRED_KEYS = (
-    "project",
-    "wall",
-    "model",
-    "materials",
-    "costs",
-    "seismic",
-    "demand",
-    "records",
-    "compliance",
-    "code_check",
-    "cases",
-)
-
 
 #: largest results.json read [bytes] (a run with time histories writes well under 10 MB)
 MAX_RESULTS_BYTES = 64 * 1024 * 1024
-#: top-level keys that hold a JSON object / a JSON array
-OBJECT_KEYS = ("project", "wall", "model", "materials", "costs", "seismic", "demand")
-ARRAY_KEYS = ("records", "cases")
 
 
-def load_results(results_dir: str | Path) -> dict[str, Any]:
-    """Read ``results_dir/results.json``; anything missing or malformed is an InputError.
+def load_results(results_dir: str | Path) -> AssessmentResult:
+    """Read ``results_dir/results.json`` (:func:`frp_assess.results.json_io.from_json`);
+    anything missing or malformed is an InputError naming the file and the key.
 
     Checked here: size, JSON syntax (NaN and Infinity are not JSON), nesting depth, the
-    schema version, the presence and JSON type of the top-level keys the report reads.
-    A value deeper in that does not follow the contract shows when the report is built
-    (``frp-assess report`` turns it into one line, see :func:`contract_error`).
+    schema version, and every key and type of the contract (docs/results-json.md).
     """
     d = Path(results_dir)
     if not d.is_dir():
@@ -59,10 +40,6 @@ def load_results(results_dir: str | Path) -> dict[str, Any]:
     path = d / "results.json"
     if not path.is_file():
         raise InputError("no results.json here; run `frp-assess run` first", file=str(d))
-
-    def no_constant(name: str) -> None:
-        raise ValueError(f"{name} is not a JSON number")
-
     try:
         if path.stat().st_size > MAX_RESULTS_BYTES:
             raise InputError(
@@ -70,44 +47,19 @@ def load_results(results_dir: str | Path) -> dict[str, Any]:
                 "file can have",
                 file=str(path),
             )
-        results = json.loads(path.read_text(encoding="utf-8"), parse_constant=no_constant)
-    except json.JSONDecodeError as exc:
-        raise InputError(f"invalid JSON: {exc.msg}", file=str(path), line=exc.lineno) from None
-    except RecursionError:
-        raise InputError("invalid JSON: nested too deeply", file=str(path)) from None
-    except ValueError as exc:  # NaN / Infinity
-        raise InputError(f"invalid JSON: {exc}", file=str(path)) from None
+        text = path.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:
         raise InputError(f"cannot read: {exc}", file=str(path)) from None
-    if not isinstance(results, dict):
-        raise InputError("expected a JSON object", file=str(path))
-    if results.get("schema_version") != 1:
-        raise InputError(
-            f"unsupported schema_version {results.get('schema_version')!r} (expected 1)",
-            file=str(path),
-            key="schema_version",
-        )
-    for key in REQUIRED_KEYS:
-        if key not in results:
-            raise InputError("missing", file=str(path), key=key)
-    for key in OBJECT_KEYS:
-        if not isinstance(results[key], dict):
-            raise InputError(
-                f"expected an object, found {_json_type(results[key])}", file=str(path), key=key
-            )
-    for key in ARRAY_KEYS:
-        if not isinstance(results[key], list):
-            raise InputError(
-                f"expected an array, found {_json_type(results[key])}", file=str(path), key=key
-            )
-    if not results["cases"]:
+    results = from_json(text, file=str(path))
+    if not results.cases:
         raise InputError("no cases", file=str(path), key="cases")
     return results
 
 
 def contract_error(exc: Exception, path: Path | str) -> InputError:
-    """The one line said when a results file passed :func:`load_results` but a value deeper
-    in does not follow the contract (docs/results-json.md): a key missing, a wrong type."""
+    """The one line said when a results file passed :func:`load_results` (every key and type
+    is checked there) but a value breaks the report (docs/results-json.md): out of range,
+    an empty list where one is needed."""
     if isinstance(exc, KeyError):
         what = f"missing key {exc.args[0]!r}" if exc.args else "a key is missing"
     else:
@@ -117,17 +69,11 @@ def contract_error(exc: Exception, path: Path | str) -> InputError:
     )
 
 
-#: what reading a results dict that does not follow the contract raises
+#: what building the report from results that break the contract (a value out of range) raises
 CONTRACT_ERRORS = (KeyError, TypeError, ValueError, AttributeError, IndexError, ZeroDivisionError)
 
 
-def _json_type(value: object) -> str:
-    return {dict: "an object", list: "an array", str: "a string", bool: "true/false"}.get(
-        type(value), "null" if value is None else "a number"
-    )
-
-
-def build_story(results: Mapping[str, Any]) -> list[Flowable]:
+def build_story(results: AssessmentResult) -> list[Flowable]:
     """The flowables of the seven sections, in order."""
     st.register_fonts()
     story: list[Flowable] = []
@@ -205,8 +151,8 @@ class NumberedCanvas(Canvas):
 class ReportTemplate(BaseDocTemplate):
     """A4 portrait, one frame, header and footer, PDF outline from the section headings."""
 
-    def __init__(self, filename: str, results: Mapping[str, Any]) -> None:
-        p = results.get("project", {})
+    def __init__(self, filename: str, results: AssessmentResult) -> None:
+        p = results.project
         super().__init__(
             filename,
             pagesize=st.PAGE_SIZE,
@@ -214,10 +160,10 @@ class ReportTemplate(BaseDocTemplate):
             rightMargin=st.MARGIN_X,
             topMargin=st.MARGIN_TOP,
             bottomMargin=st.MARGIN_BOTTOM,
-            title=pdf_plain(f"Seismic assessment – {p.get('name') or 'wall'}"),
-            author=pdf_plain(p.get("engineer") or ""),
+            title=pdf_plain(f"Seismic assessment – {p.name or 'wall'}"),
+            author=pdf_plain(p.engineer or ""),
             subject="Rocking masonry wall retrofitted with vertical FRP rebars",
-            creator=pdf_plain(f"frp-assess {results.get('software', {}).get('version', '')}"),
+            creator=pdf_plain(f"frp-assess {results.software.version}"),
             invariant=1,
             initialFontName=st.FONT,
             initialFontSize=st.BODY_SIZE,
@@ -239,7 +185,7 @@ class ReportTemplate(BaseDocTemplate):
 
     def _decorate(self, canv: Canvas, doc: BaseDocTemplate) -> None:
         r = self.results
-        p = r.get("project", {})
+        p = r.project
         w, h = st.PAGE_SIZE
         canv.saveState()
         canv.setStrokeColor(st.RULE)
@@ -251,7 +197,7 @@ class ReportTemplate(BaseDocTemplate):
         right = "Seismic assessment · vertical FRP rebars"
         right_w = stringWidth(right, st.FONT, 8)
         name = _fit(
-            str(p.get("name") or "Unnamed project"), st.FONT_BOLD, 8, st.FRAME_WIDTH - right_w - 12
+            str(p.name or "Unnamed project"), st.FONT_BOLD, 8, st.FRAME_WIDTH - right_w - 12
         )
         canv.drawString(st.MARGIN_X, top, name)
         canv.setFont(st.FONT, 8)
@@ -259,11 +205,8 @@ class ReportTemplate(BaseDocTemplate):
         canv.drawRightString(w - st.MARGIN_X, top, right)
         canv.line(st.MARGIN_X, 13.5 * mm, w - st.MARGIN_X, 13.5 * mm)
         canv.setFont(st.FONT, 7.5)
-        sw = r.get("software", {})
-        foot = (
-            f"{sw.get('name', 'frp-assess')} {sw.get('version', '')} · results of "
-            f"{r.get('created', '?')} · {r.get('input_file') or ''}"
-        )
+        sw = r.software
+        foot = f"{sw.name} {sw.version} · results of {r.created} · {r.input_file or ''}"
         canv.drawString(st.MARGIN_X, 10 * mm, _fit(foot, st.FONT, 7.5, st.FRAME_WIDTH - 80))
         canv.restoreState()
 
@@ -277,7 +220,7 @@ class ReportTemplate(BaseDocTemplate):
 
 
 def build_report(
-    results: Mapping[str, Any], out_path: Path | str, *, story: list[Flowable] | None = None
+    results: AssessmentResult, out_path: Path | str, *, story: list[Flowable] | None = None
 ) -> None:
     """Write the PDF to ``out_path`` atomically (temp file in the same directory, then rename).
 
@@ -289,7 +232,7 @@ def build_report(
     out_path.parent.mkdir(parents=True, exist_ok=True)
     if story is None:
         story = build_story(results)
-    date = pdf_date(results.get("created"))
+    date = pdf_date(results.created)
 
     def canvas(*args: Any, **kwargs: Any) -> NumberedCanvas:
         c = NumberedCanvas(*args, **kwargs)

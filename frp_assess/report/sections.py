@@ -1,9 +1,6 @@
-"""The seven sections of the report, each a list of flowables built from the results dict."""
+"""The seven sections of the report, each a list of flowables built from the typed results."""
 
 from __future__ import annotations
-
-from collections.abc import Mapping
-from typing import Any
 
 from reportlab.lib.units import mm
 from reportlab.platypus import CondPageBreak, Flowable, KeepTogether, PageBreak
@@ -12,8 +9,9 @@ from frp_assess.numbers import no_retrofit_caveats, numerical_check_text
 from frp_assess.report import charts
 from frp_assess.report import tables as tb
 from frp_assess.report.flow import esc, gap, grid, key_value, markup, para
+from frp_assess.results.model import AssessmentResult, CaseResult
 
-Results = Mapping[str, Any]
+Results = AssessmentResult
 MECHANISM_TEXT = {
     "one-sided": "one-sided rocking (the wall leans against transverse walls or floors on one "
     "side, so it can only rotate outwards and rebounds at each impact)",
@@ -41,16 +39,16 @@ def _verdict(ok: bool, text: str) -> Flowable:
     return markup(text, "verdict_ok" if ok else "verdict_bad")
 
 
-def _option_sentence(results: Results, c: Mapping[str, Any]) -> str:
-    cur = results["costs"]["currency"]
+def _option_sentence(results: Results, c: CaseResult) -> str:
+    cur = results.costs.currency
     lb = tb.is_lower_bound(c)
     return (
-        f"<b>{esc(c['name'])}</b>: {tb.fmt_mass(c['frp_mass'])} kg of {esc(c['material'])} "
-        f"({tb.fmt_mass(c['frp_mass_per_m'])} kg per metre of wall), indicative cost "
-        f"{tb.fmt_cost(c['frp_cost'])} {esc(cur)}; capacity/demand "
-        f"{esc(tb.bound(tb.fmt_capacity(c, results['model']['target']), lb))}, improvement "
-        f"{esc(tb.bound(tb.fmt_ratio(c['improvement']), lb))} × the unreinforced wall"
-        + ("" if c["meets_target"] else " (does <b>not</b> reach the target)")
+        f"<b>{esc(c.name)}</b>: {tb.fmt_mass(c.frp_mass)} kg of {esc(c.material)} "
+        f"({tb.fmt_mass(c.frp_mass_per_m)} kg per metre of wall), indicative cost "
+        f"{tb.fmt_cost(c.frp_cost)} {esc(cur)}; capacity/demand "
+        f"{esc(tb.bound(tb.fmt_capacity(c, results.model.target), lb))}, improvement "
+        f"{esc(tb.bound(tb.fmt_ratio(c.improvement), lb))} × the unreinforced wall"
+        + ("" if c.meets_target else " (does <b>not</b> reach the target)")
         + "."
     )
 
@@ -59,52 +57,52 @@ def _option_sentence(results: Results, c: Mapping[str, Any]) -> str:
 
 
 def summary(results: Results) -> list[Flowable]:
-    p = results.get("project", {})
-    w = results["wall"]
-    s = results["seismic"]
+    p = results.project
+    w = results.wall
+    s = results.seismic
     urm = tb.urm_case(results)
-    target = results["model"]["target"]
-    demand = results["demand"]["pga"]
-    n_rec = len(results["records"])
+    target = results.model.target
+    demand = results.demand.pga
+    n_rec = len(results.records)
     out: list[Flowable] = [
-        para(p.get("name") or "Unnamed project", "title"),
+        para(p.name or "Unnamed project", "title"),
         markup(
             "Out-of-plane seismic assessment of a rocking masonry wall and of its retrofit with "
             "vertical FRP rebars (incremental dynamic analysis)"
             + "<br/>"
-            + esc(" · ".join(x for x in (p.get("location"), p.get("engineer")) if x))
-            + (" · " if (p.get("location") or p.get("engineer")) else "")
-            + f"results of {esc(results.get('created', ''))}",
+            + esc(" · ".join(x for x in (p.location, p.engineer) if x))
+            + (" · " if (p.location or p.engineer) else "")
+            + f"results of {esc(results.created)}",
             "subtitle",
         ),
         h1("1  Summary"),
     ]
-    mech = MECHANISM_TEXT.get(w["mechanism"], esc(w["mechanism"]))
+    mech = MECHANISM_TEXT.get(w.mechanism, esc(w.mechanism))
     out.append(
         markup(
-            f"<b>The wall.</b> {w['thickness']:.2f} m thick, {w['height']:.2f} m high and "
-            f"{w['length']:.2f} m long, "
-            f"{esc(w.get('masonry_description') or w.get('masonry') or 'masonry')} "
-            f"({w['unit_weight']:g} kN/m³), assessed for {esc(mech)}. Its slenderness is "
-            f"α = {w['alpha_deg']:.2f}° and it starts rocking at a<sub>RM</sub> = "
-            f"{tb.fmt_acc(w['a_rm'])} g."
+            f"<b>The wall.</b> {w.thickness:.2f} m thick, {w.height:.2f} m high and "
+            f"{w.length:.2f} m long, "
+            f"{esc(w.masonry_description or w.masonry or 'masonry')} "
+            f"({w.unit_weight:g} kN/m³), assessed for {esc(mech)}. Its slenderness is "
+            f"α = {w.alpha_deg:.2f}° and it starts rocking at a<sub>RM</sub> = "
+            f"{tb.fmt_acc(w.a_rm)} g."
         )
     )
-    site = esc(p.get("location") or "The site")
-    comp = results["compliance"]
+    site = esc(p.location or "The site")
+    comp = results.compliance
     out.append(
         markup(
-            f"<b>The site and the demand.</b> {site}: {esc(s['spectrum'].get('name') or '')}; "
+            f"<b>The site and the demand.</b> {site}: {esc(s.spectrum.name or '')}; "
             f"design ground acceleration a<sub>g</sub>·S = {tb.fmt_acc(demand)} g. "
-            f"{n_rec} {esc(s.get('records_kind', ''))} records, "
+            f"{n_rec} {esc(s.records_kind)} records, "
             + (
                 "compatible with the spectrum (all code checks passed)."
-                if comp["passed"]
+                if comp.passed
                 else "<b>NOT all spectrum-compatibility checks passed</b> (see section 3)."
             )
         )
     )
-    ok = bool(urm["meets_target"])
+    ok = bool(urm.meets_target)
     lb = tb.is_lower_bound(urm)
     out.append(
         markup(
@@ -128,21 +126,21 @@ def summary(results: Results) -> list[Flowable]:
             + f" target {target:g}).",
         )
     )
-    k = results["code_check"]
+    k = results.code_check
     out.append(
         markup(
             "For comparison, the linear kinematic check of NTC 2018 / Circolare 2019 §C8.7.1 "
-            f"gives a<sub>0</sub>* = {tb.fmt_acc(k['a0_star'])} g against "
-            f"{tb.fmt_acc(k['demand'])} g (ratio {tb.fmt_ratio(k['ratio'])}: "
-            + ("satisfied" if k["passed"] else "not satisfied")
+            f"gives a<sub>0</sub>* = {tb.fmt_acc(k.a0_star)} g against "
+            f"{tb.fmt_acc(k.demand)} g (ratio {tb.fmt_ratio(k.ratio)}: "
+            + ("satisfied" if k.passed else "not satisfied")
             + "). The dynamic analysis accounts for the wall's rocking capacity beyond "
             "activation, which the static check ignores.",
             "small",
         )
     )
-    rec = tb.case_by_name(results, results.get("recommended"))
+    rec = tb.case_by_name(results, results.recommended)
     ranked = tb.ranked_options(results)
-    compliant = bool(results.get("input_code_compliant", True))
+    compliant = bool(results.input_code_compliant)
     if not compliant:
         out.append(
             _verdict(
@@ -156,8 +154,7 @@ def summary(results: Results) -> list[Flowable]:
         out.append(markup("<b>Best ranked retrofit.</b> " + _option_sentence(results, rec)))
         out.append(
             markup(
-                "It ranks first under the ranking rule: "
-                f"{esc(results.get('ranking_rule', ''))}",
+                f"It ranks first under the ranking rule: {esc(results.ranking_rule)}",
                 "small",
             )
         )
@@ -176,7 +173,7 @@ def summary(results: Results) -> list[Flowable]:
         out.append(
             markup(
                 "It is the cheapest option that meets the target (ranking rule: "
-                f"{esc(results.get('ranking_rule', ''))})",
+                f"{esc(results.ranking_rule)})",
                 "small",
             )
         )
@@ -207,7 +204,7 @@ def summary(results: Results) -> list[Flowable]:
     )
     out.append(
         para(
-            f"All accelerations in g; costs are indicative ({results['costs']['currency']}, "
+            f"All accelerations in g; costs are indicative ({results.costs.currency}, "
             "material at the stated price per kg plus installation per metre of wall and layer "
             "of bars) and must be confirmed by quotes. Full list of options: section 5.",
             "caption",
@@ -221,12 +218,12 @@ def summary(results: Results) -> list[Flowable]:
 
 
 def inputs(results: Results) -> list[Flowable]:
-    w = results["wall"]
+    w = results.wall
     out: list[Flowable] = [h1("2  Inputs"), h2("2.1  Project and software")]
     out.append(key_value(tb.software_rows(results)))
     out.append(h2("2.2  Wall, masonry and mechanism"))
     rows = tb.wall_rows(results)
-    rows[-1] = ["mechanism", MECHANISM_TEXT.get(w["mechanism"], w["mechanism"])]
+    rows[-1] = ["mechanism", MECHANISM_TEXT.get(w.mechanism, w.mechanism)]
     out.append(key_value(rows))
     out.append(h2("2.3  FRP materials"))
     data = tb.materials_table(results)
@@ -235,7 +232,7 @@ def inputs(results: Results) -> list[Flowable]:
         para(
             "Prices are indicative defaults or user inputs, not quotes. ε_u is the ultimate "
             "tensile strain of the bar; the design rupture strain is ε_max = c·ε_u "
-            f"with c = {results['model']['strain_factor']:g}.",
+            f"with c = {results.model.strain_factor:g}.",
             "caption",
         )
     )
@@ -259,7 +256,7 @@ def seismic(results: Results) -> list[Flowable]:
             numeric_from=2,
         )
     )
-    for warning in results.get("input_warnings") or []:
+    for warning in results.input_warnings or []:
         out.append(para("Warning: " + str(warning), "small"))
     out.append(gap(6))
     out.append(
@@ -274,7 +271,7 @@ def seismic(results: Results) -> list[Flowable]:
             ]
         )
     )
-    comp = results["compliance"]
+    comp = results.compliance
     out.append(CondPageBreak(60 * mm))
     out.append(h2("3.3  Code compliance of the record set"))
     out.append(
@@ -286,9 +283,7 @@ def seismic(results: Results) -> list[Flowable]:
         )
     )
     out.append(
-        _verdict(
-            bool(comp["passed"]), "All checks passed." if comp["passed"] else "Some checks FAILED."
-        )
+        _verdict(bool(comp.passed), "All checks passed." if comp.passed else "Some checks FAILED.")
     )
     return out
 
@@ -321,7 +316,7 @@ def unreinforced(results: Results) -> list[Flowable]:
     )
     out.append(gap(6))
     out.append(key_value(tb.code_check_rows(results), sub_values=True))
-    note = results["code_check"].get("note")
+    note = results.code_check.note
     if note:
         out.append(para(note, "caption"))
     return out
@@ -332,9 +327,9 @@ def unreinforced(results: Results) -> list[Flowable]:
 
 def options(results: Results) -> list[Flowable]:
     out: list[Flowable] = [PageBreak(), h1("5  Retrofit options"), h2("5.1  Ranking")]
-    out.append(para("Ranking rule: " + results.get("ranking_rule", ""), "small"))
+    out.append(para("Ranking rule: " + results.ranking_rule, "small"))
     data = tb.ranking_table(results)
-    rec_name = results.get("recommended")
+    rec_name = results.recommended
     hl = [i for i, r in enumerate(data.rows) if r[1] == rec_name]
     widths = [9, 26, 11, 14, 8, 12, 12, 11, 15, 13, 16, 16, 11]
     out.append(
@@ -357,7 +352,7 @@ def options(results: Results) -> list[Flowable]:
             "did not overturn up to C_max. Highlighted: the "
             + (
                 "recommended option."
-                if results.get("input_code_compliant", True)
+                if results.input_code_compliant
                 else "best ranked option (input not code-compliant: nothing is recommended)."
             ),
             "caption",
@@ -391,7 +386,7 @@ def options(results: Results) -> list[Flowable]:
     )
     out.append(CondPageBreak(50 * mm))
     out.append(h2("5.3  Design mode: the smallest ratio that meets the target"))
-    if results.get("design"):
+    if results.design:
         out.append(
             grid(
                 tb.design_table(results),
@@ -432,13 +427,13 @@ def options(results: Results) -> list[Flowable]:
         )
     )
     sens = tb.sensitivity_table(results)
-    if sens is not None:
+    if sens is not None and results.sensitivity is not None:
         out.append(CondPageBreak(60 * mm))
         out.append(h2("5.6  What the result depends on: the model conventions"))
         out.append(grid(sens, [x * mm for x in (70, 34, 26, 34)], wrap=(0,), numeric_from=1))
         out.append(
             para(
-                f"{results['sensitivity']['case']} under the conventions the paper leaves open, "
+                f"{results.sensitivity.case} under the conventions the paper leaves open, "
                 "one at a time (docs/model.md §3), and a ±10 % change of the bars' elastic "
                 "modulus; the same records, the design value of a_dyn.",
                 "caption",
@@ -452,14 +447,14 @@ def options(results: Results) -> list[Flowable]:
 
 def governing(results: Results) -> list[Flowable]:
     out: list[Flowable] = [PageBreak(), h1("6  The governing time history")]
-    gov = results.get("governing")
-    if not gov or not gov.get("runs"):
+    gov = results.governing
+    if not gov or not gov.runs:
         out.append(para("No time history is stored in the results."))
         return out
-    rs = gov.get("rupture_strain")
+    rs = gov.rupture_strain
     out.append(
         markup(
-            f"Case <b>{esc(gov['case'])}</b>, record <b>{esc(gov['record'])}</b> (the record "
+            f"Case <b>{esc(gov.case)}</b>, record <b>{esc(gov.record)}</b> (the record "
             "that overturns it at the smallest multiplier). The response at the collapse "
             "multiplier and just below it shows how the wall fails"
             + (
@@ -600,12 +595,12 @@ def method(results: Results) -> list[Flowable]:
     out.append(h2("7.3  References"))
     for r in REFERENCES:
         out.append(para(r, "reference"))
-    sw = results.get("software", {})
+    sw = results.software
     out.append(gap(6))
     out.append(
         para(
-            f"Report generated by {sw.get('name', 'frp-assess')} {sw.get('version', '')} from "
-            f"results.json of {results.get('created', '')}; every number in it is read from that "
+            f"Report generated by {sw.name} {sw.version} from "
+            f"results.json of {results.created}; every number in it is read from that "
             "file.",
             "small",
         )

@@ -1,4 +1,4 @@
-"""Table contents as pure functions of the results dict (docs/results-json.md).
+"""Table contents as pure functions of the typed results (docs/results-json.md).
 
 Every function returns plain text (not markup): :mod:`frp_assess.report.flow` escapes it for
 the PDF (:func:`frp_assess.text_safety.pdf`).  Header cells with sub/superscripts or line
@@ -13,14 +13,15 @@ Number formats, used everywhere in the report:
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
 from frp_assess.numbers import fmt_against
+from frp_assess.results.model import AssessmentResult, CaseResult, HistoryRun
 from frp_assess.text_safety import Markup, pdf
 
-Results = Mapping[str, Any]
+Results = AssessmentResult
 DASH = "—"
 NO_COLLAPSE = "no collapse ≤ C_max"
 
@@ -52,10 +53,10 @@ def fmt_ratio(x: float | None) -> str:
 fmt_q = fmt_ratio
 
 
-def fmt_capacity(case: Mapping[str, Any], target: float) -> str:
+def fmt_capacity(case: CaseResult, target: float) -> str:
     """capacity/demand of a case with enough decimals to agree with its verdict against
     ``target`` (0.997 → '0.997', not '1.00', when it does not meet 1)."""
-    return fmt_against(case["capacity_demand"], target, case.get("meets_target"))
+    return fmt_against(case.capacity_demand, target, case.meets_target)
 
 
 def fmt_mult(x: float | None) -> str:
@@ -101,36 +102,35 @@ def pass_fail(x: bool | None) -> str:
 # --- helpers on the results ---------------------------------------------------------------
 
 
-def urm_case(results: Results) -> Mapping[str, Any]:
+def urm_case(results: Results) -> CaseResult:
     """The unreinforced wall: the case without material (the first by contract)."""
-    for c in results["cases"]:
-        if c.get("material") is None:
+    for c in results.cases:
+        if c.material is None:
             return c
-    return results["cases"][0]
+    return results.cases[0]
 
 
-def ranked_options(results: Results) -> list[Mapping[str, Any]]:
+def ranked_options(results: Results) -> list[CaseResult]:
     """Retrofit options by rank (1 first); unranked options last, in file order."""
-    opts = [c for c in results["cases"] if c.get("material") is not None]
-    return sorted(opts, key=lambda c: (c.get("rank") is None, c.get("rank") or 0))
+    opts = [c for c in results.cases if c.material is not None]
+    return sorted(opts, key=lambda c: (c.rank is None, c.rank or 0))
 
 
-def is_lower_bound(case: Mapping[str, Any]) -> bool:
+def is_lower_bound(case: CaseResult) -> bool:
     """Some record did not collapse up to C_max: the case's means are lower bounds."""
-    if case.get("lower_bound"):
+    if case.lower_bound:
         return True
-    return any(r.get("collapse_multiplier") is None for r in case.get("records", []))
+    return any(r.collapse_multiplier is None for r in case.records)
 
 
-def design_a_dyn(case: Mapping[str, Any]) -> float:
-    """The design value of a_dyn: ``design_a_dyn`` if stored, else the mean."""
-    value = case.get("design_a_dyn")
-    return float(case["mean_a_dyn"] if value is None else value)
+def design_a_dyn(case: CaseResult) -> float:
+    """The design value of a_dyn [g]."""
+    return float(case.design_a_dyn)
 
 
 def uses_mean(results: Results) -> bool:
-    value = results.get("model", {}).get("design_value")
-    return value is None or str(value).startswith("mean")
+    """The design a_dyn is the mean over the records (else the least favourable one)."""
+    return results.design_is_mean
 
 
 def a_dyn_label(results: Results) -> str:
@@ -142,9 +142,9 @@ def bound(text: str, lower: bool) -> str:
     return f"≥ {text}" if lower and text != DASH else text
 
 
-def case_by_name(results: Results, name: str | None) -> Mapping[str, Any] | None:
-    for c in results["cases"]:
-        if c["name"] == name:
+def case_by_name(results: Results, name: str | None) -> CaseResult | None:
+    for c in results.cases:
+        if c.name == name:
             return c
     return None
 
@@ -172,32 +172,32 @@ RANKING_HEADER = [
 ]
 
 
-def ranking_row(case: Mapping[str, Any], target: float) -> list[str]:
+def ranking_row(case: CaseResult, target: float) -> list[str]:
     lb = is_lower_bound(case)
     return [
-        DASH if case.get("rank") is None else str(case["rank"]),
-        case["name"],
-        case.get("material") or "none",
-        position_text(case.get("position")),
-        fmt_permille(case.get("ratio")),
-        fmt_mass(case["frp_mass_per_m"]),
-        fmt_mass(case["frp_mass"]),
-        fmt_cost(case["frp_cost"]),
+        DASH if case.rank is None else str(case.rank),
+        case.name,
+        case.material or "none",
+        position_text(case.position),
+        fmt_permille(case.ratio),
+        fmt_mass(case.frp_mass_per_m),
+        fmt_mass(case.frp_mass),
+        fmt_cost(case.frp_cost),
         bound(fmt_acc(design_a_dyn(case)), lb),
-        bound(fmt_q(case["mean_q"]), lb),
-        bound(fmt_ratio(case["improvement"]), lb),
+        bound(fmt_q(case.mean_q), lb),
+        bound(fmt_ratio(case.improvement), lb),
         bound(fmt_capacity(case, target), lb),
-        yes_no(case["meets_target"]),
+        yes_no(case.meets_target),
     ]
 
 
 def ranking_table(results: Results) -> TableData:
     """Unreinforced wall first, then every option by rank."""
-    cur = results["costs"]["currency"]
+    cur = results.costs.currency
     header: list[str] = [
         a_dyn_label(results) if h == "{a_dyn}" else head(h, cur=cur) for h in RANKING_HEADER
     ]
-    target = float(results["model"]["target"])
+    target = float(results.model.target)
     cases = [urm_case(results), *ranked_options(results)]
     rows = [ranking_row(c, target) for c in cases]
     return TableData(header, rows)
@@ -211,20 +211,20 @@ def _probability(p: float | None) -> str:
 
 def sensitivity_table(results: Results) -> TableData | None:
     """The assessed case under every model-convention variant, or None when not recorded."""
-    sens = results.get("sensitivity")
-    if not sens or not sens.get("rows"):
+    sens = results.sensitivity
+    if not sens or not sens.rows:
         return None
-    base = sens["rows"][0]["design_a_dyn"]
+    base = sens.rows[0].design_a_dyn
     header = ["variant", a_dyn_label(results), "change [%]", "capacity/demand [–]"]
     rows = []
-    for r in sens["rows"]:
-        ge = "≥ " if r["lower_bound"] else ""
+    for r in sens.rows:
+        ge = "≥ " if r.lower_bound else ""
         rows.append(
             [
-                r["variant"],
-                ge + fmt_acc(r["design_a_dyn"]),
-                f"{100.0 * (r['design_a_dyn'] / base - 1.0):+.1f}",
-                ge + f"{r['capacity_demand']:.2f}",
+                r.variant,
+                ge + fmt_acc(r.design_a_dyn),
+                f"{100.0 * (r.design_a_dyn / base - 1.0):+.1f}",
+                ge + f"{r.capacity_demand:.2f}",
             ]
         )
     return TableData(header, rows)
@@ -232,7 +232,7 @@ def sensitivity_table(results: Results) -> TableData | None:
 
 def scatter_table(results: Results) -> TableData:
     """Record-to-record scatter of a_dyn and the lognormal fragility of every case (unreinforced
-    first, then by rank); rows of results written before the scatter was recorded show dashes."""
+    first, then by rank); the fragility columns show dashes where no lognormal was fitted."""
     header = [
         "option",
         "mean a_dyn [g]",
@@ -245,20 +245,18 @@ def scatter_table(results: Results) -> TableData:
     ]
     rows = []
     for c in [urm_case(results), *ranked_options(results)]:
-        sc = c.get("scatter") or {}
-        fr = sc.get("fragility") or {}
+        sc = c.scatter
+        fr = sc.fragility
         rows.append(
             [
-                c["name"],
-                fmt_acc(c["mean_a_dyn"]),
-                fmt_acc(sc.get("median_a_dyn")),
-                DASH if "cov" not in sc else f"{sc['cov']:.2f}",
-                DASH
-                if "least_favourable_record" not in sc
-                else f"{fmt_acc(c['min_a_dyn'])} ({sc['least_favourable_record']})",
-                fmt_acc(fr.get("median")),
-                DASH if "beta" not in fr else f"{fr['beta']:.2f}",
-                _probability(fr.get("p_collapse_at_demand")),
+                c.name,
+                fmt_acc(c.mean_a_dyn),
+                fmt_acc(sc.median_a_dyn),
+                f"{sc.cov:.2f}",
+                f"{fmt_acc(c.min_a_dyn)} ({sc.least_favourable_record})",
+                fmt_acc(None if fr is None else fr.median),
+                DASH if fr is None else f"{fr.beta:.2f}",
+                _probability(None if fr is None else fr.p_collapse_at_demand),
             ]
         )
     return TableData(header, rows)
@@ -266,7 +264,7 @@ def scatter_table(results: Results) -> TableData:
 
 def summary_table(results: Results, n_alternatives: int = 3) -> TableData:
     """The unreinforced wall, the recommended option and the best alternatives."""
-    cur = results["costs"]["currency"]
+    cur = results.costs.currency
     header = [
         "",
         "option",
@@ -278,11 +276,11 @@ def summary_table(results: Results, n_alternatives: int = 3) -> TableData:
         Markup("meets<br/>target"),
     ]
     ranked = ranked_options(results)
-    chosen: list[tuple[str, Mapping[str, Any]]] = [("existing", urm_case(results))]
-    rec = case_by_name(results, results.get("recommended"))
+    chosen: list[tuple[str, CaseResult]] = [("existing", urm_case(results))]
+    rec = case_by_name(results, results.recommended)
     if rec is not None:
-        urm_ok = bool(urm_case(results)["meets_target"])
-        if not results.get("input_code_compliant", True):
+        urm_ok = bool(urm_case(results).meets_target)
+        if not results.input_code_compliant:
             label = "best ranked"
         else:
             label = "cheapest (optional)" if urm_ok else "recommended"
@@ -295,43 +293,43 @@ def summary_table(results: Results, n_alternatives: int = 3) -> TableData:
         rows.append(
             [
                 role,
-                c["name"],
-                fmt_mass(c["frp_mass"]),
-                fmt_cost(c["frp_cost"]),
+                c.name,
+                fmt_mass(c.frp_mass),
+                fmt_cost(c.frp_cost),
                 bound(fmt_acc(design_a_dyn(c)), lb),
-                bound(fmt_ratio(c["improvement"]), lb),
-                bound(fmt_capacity(c, float(results["model"]["target"])), lb),
-                yes_no(c["meets_target"]),
+                bound(fmt_ratio(c.improvement), lb),
+                bound(fmt_capacity(c, float(results.model.target)), lb),
+                yes_no(c.meets_target),
             ]
         )
     return TableData(header, rows)
 
 
 def wall_rows(results: Results) -> list[list[str]]:
-    w = results["wall"]
+    w = results.wall
     return [
-        ["thickness B", f"{w['thickness']:.3f} m"],
-        ["height H", f"{w['height']:.3f} m"],
-        ["length L", f"{w['length']:.3f} m"],
-        ["masonry", w.get("masonry_description") or w.get("masonry") or DASH],
-        ["unit weight w", f"{w['unit_weight']:g} kN/m³"],
-        ["mechanism", w["mechanism"]],
+        ["thickness B", f"{w.thickness:.3f} m"],
+        ["height H", f"{w.height:.3f} m"],
+        ["length L", f"{w.length:.3f} m"],
+        ["masonry", w.masonry_description or w.masonry or DASH],
+        ["unit weight w", f"{w.unit_weight:g} kN/m³"],
+        ["mechanism", w.mechanism],
     ]
 
 
 def wall_property_rows(results: Results) -> list[list[str]]:
-    w = results["wall"]
+    w = results.wall
     return [
-        ["slenderness α (tan α = B/H)", f"{w['alpha']:.4f} rad = {w['alpha_deg']:.2f}°"],
-        ["half diagonal R", f"{w['R']:.3f} m"],
-        ["frequency parameter p", f"{w['p']:.3f} rad/s"],
-        ["mass per metre m", f"{w['mass']:.1f} kg/m"],
-        ["rocking activation a_RM = g·tan α", f"{fmt_acc(w['a_rm'])} g"],
+        ["slenderness α (tan α = B/H)", f"{w.alpha:.4f} rad = {w.alpha_deg:.2f}°"],
+        ["half diagonal R", f"{w.R:.3f} m"],
+        ["frequency parameter p", f"{w.p:.3f} rad/s"],
+        ["mass per metre m", f"{w.mass:.1f} kg/m"],
+        ["rocking activation a_RM = g·tan α", f"{fmt_acc(w.a_rm)} g"],
     ]
 
 
 def materials_table(results: Results) -> TableData:
-    cur = results["costs"]["currency"]
+    cur = results.costs.currency
     header = [
         "material",
         "E [GPa]",
@@ -343,13 +341,13 @@ def materials_table(results: Results) -> TableData:
     rows = [
         [
             name,
-            f"{m['elastic_modulus']:g}",
-            f"{m['ultimate_strain']:g}",
-            f"{m['density']:g}",
-            f"{m['price']:.2f}",
-            m.get("source") or DASH,
+            f"{m.elastic_modulus:g}",
+            f"{m.ultimate_strain:g}",
+            f"{m.density:g}",
+            f"{m.price:.2f}",
+            m.source or DASH,
         ]
-        for name, m in sorted(results["materials"].items())
+        for name, m in sorted(results.materials.items())
     ]
     return TableData(header, rows)
 
@@ -364,37 +362,37 @@ COLLAPSE_WORDS = {
 
 
 def model_rows(results: Results) -> list[list[str]]:
-    m = results["model"]
-    ida = m["ida"]
-    cur = results["costs"]["currency"]
+    m = results.model
+    ida = m.ida
+    cur = results.costs.currency
     rows = [
         [
             "restitution at impact",
-            f"{m['restitution']} (velocity ratio applied {m['restitution_ratio']:.3f})",
+            f"{m.restitution} (velocity ratio applied {m.restitution_ratio:.3f})",
         ],
-        ["rupture rule", m["rupture"]],
-        ["collapse criterion", COLLAPSE_WORDS.get(m["collapse"], m["collapse"])],
-        ["cyclic strain factor c (ε_max = c·ε_u)", f"{m['strain_factor']:g}"],
-        ["free-vibration tail", f"{m['free_vibration_tail']:g} s"],
-        ["target capacity/demand", f"≥ {m['target']:g}"],
+        ["rupture rule", m.rupture],
+        ["collapse criterion", COLLAPSE_WORDS.get(m.collapse, m.collapse)],
+        ["cyclic strain factor c (ε_max = c·ε_u)", f"{m.strain_factor:g}"],
+        ["free-vibration tail", f"{m.free_vibration_tail:g} s"],
+        ["target capacity/demand", f"≥ {m.target:g}"],
     ]
-    integ = m.get("integration")
+    integ = m.integration
     if integ:
         rows.append(
             [
                 "time integration",
-                f"Dormand–Prince 5(4), local error tolerance {integ['tolerance']:g}",
+                f"Dormand–Prince 5(4), local error tolerance {integ.tolerance:g}",
             ]
         )
-    if m.get("design_value"):
-        rows.append(["design value of a_dyn", str(m["design_value"])])
+    if m.design_value:
+        rows.append(["design value of a_dyn", str(m.design_value)])
     rows += [
-        ["IDA step ratio s", f"{ida['step_ratio']:g}"],
-        ["IDA bisection tolerance", f"{ida['tolerance']:g} (relative)"],
-        ["IDA largest multiplier C_max", f"{ida['max_multiplier']:g} × C₀"],
+        ["IDA step ratio s", f"{ida.step_ratio:g}"],
+        ["IDA bisection tolerance", f"{ida.tolerance:g} (relative)"],
+        ["IDA largest multiplier C_max", f"{ida.max_multiplier:g} × C₀"],
         [
             "installation cost",
-            f"{fmt_cost(results['costs']['installation_per_metre'])} {cur} per metre of wall "
+            f"{fmt_cost(results.costs.installation_per_metre)} {cur} per metre of wall "
             "and layer of bars (indicative)",
         ],
     ]
@@ -402,46 +400,50 @@ def model_rows(results: Results) -> list[list[str]]:
 
 
 def software_rows(results: Results) -> list[list[str]]:
-    p = results.get("project", {})
-    sw = results.get("software", {})
+    p = results.project
+    sw = results.software
     return [
-        ["project", p.get("name") or DASH],
-        ["location", p.get("location") or DASH],
-        ["engineer", p.get("engineer") or DASH],
-        ["notes", p.get("notes") or DASH],
-        ["project file", results.get("input_file") or DASH],
-        ["date of the run", results.get("created") or DASH],
-        ["software", f"{sw.get('name', 'frp-assess')} {sw.get('version', '?')}"],
-        ["results schema", str(results.get("schema_version", DASH))],
+        ["project", p.name or DASH],
+        ["location", p.location or DASH],
+        ["engineer", p.engineer or DASH],
+        ["notes", p.notes or DASH],
+        ["project file", results.input_file or DASH],
+        ["date of the run", results.created or DASH],
+        ["software", f"{sw.name} {sw.version}"],
+        ["results schema", str(results.schema_version)],
     ]
 
 
 def spectrum_rows(results: Results) -> list[list[str]]:
-    s = results["seismic"]
-    sp = s["spectrum"]
-    params = ", ".join(f"{k} = {fmt_num(v, 4)}" for k, v in (sp.get("parameters") or {}).items())
+    s = results.seismic
+    sp = s.spectrum
+    params = ", ".join(f"{k} = {fmt_num(v, 4)}" for k, v in (sp.parameters or {}).items())
     rows = [
-        ["spectrum", sp.get("name") or sp.get("type") or DASH],
-        ["description", sp.get("description") or DASH],
+        ["spectrum", sp.name or sp.type or DASH],
+        ["description", sp.description or DASH],
         ["parameters", params or DASH],
-        ["zero-period acceleration a_g·S", f"{fmt_acc(sp['ag_S'])} g"],
+        ["zero-period acceleration a_g·S", f"{fmt_acc(sp.ag_S)} g"],
     ]
-    corners = [f"{k} = {sp[k]:.3f} s" for k in ("T_B", "T_C", "T_D") if sp.get(k) is not None]
+    corners = [
+        f"{k} = {v:.3f} s"
+        for k, v in (("T_B", sp.T_B), ("T_C", sp.T_C), ("T_D", sp.T_D))
+        if v is not None
+    ]
     if corners:
         rows.append(["corner periods", ", ".join(corners)])
-    rows.append(["demand a_g·S used for capacity/demand", f"{fmt_acc(results['demand']['pga'])} g"])
-    rows.append(["reference period T1 of the checks", f"{s['t1']:g} s"])
-    gen = s.get("generator")
-    if s.get("records_kind") == "artificial" and gen:
+    rows.append(["demand a_g·S used for capacity/demand", f"{fmt_acc(results.demand.pga)} g"])
+    rows.append(["reference period T1 of the checks", f"{s.t1:g} s"])
+    gen = s.generator
+    if s.records_kind == "artificial" and gen:
         rows.append(
             [
                 "records",
-                f"{gen['count']} artificial ({gen['method']}), seed {gen['seed']}, "
-                f"duration {gen['duration']:g} s, dt {gen['dt']:g} s",
+                f"{gen.count} artificial ({gen.method}), seed {gen.seed}, "
+                f"duration {gen.duration:g} s, dt {gen.dt:g} s",
             ]
         )
     else:
-        rows.append(["records", f"{len(results['records'])} recorded accelerograms"])
+        rows.append(["records", f"{len(results.records)} recorded accelerograms"])
     return rows
 
 
@@ -449,14 +451,14 @@ def records_table(results: Results) -> TableData:
     header = ["record", "source / seed", "PGA [g]", "duration [s]", "dt [s]", "scale factor"]
     rows = [
         [
-            r["name"],
-            r.get("source") or DASH,
-            fmt_acc(r["pga"]),
-            f"{r['duration']:.2f}",
-            f"{r['dt']:g}",
-            f"{r.get('scale_factor', 1.0):.3f}",
+            r.name,
+            r.source or DASH,
+            fmt_acc(r.pga),
+            f"{r.duration:.2f}",
+            f"{r.dt:g}",
+            f"{r.scale_factor:.3f}",
         ]
-        for r in results["records"]
+        for r in results.records
     ]
     return TableData(header, rows)
 
@@ -473,19 +475,19 @@ def compliance_table(results: Results) -> TableData:
     header = ["code", "clause", "requirement", "found", "margin", "result"]
     rows = [
         [
-            c["code"],
-            c["clause"],
-            c["requirement"],
-            c["found"],
-            fmt_margin(c.get("margin"), c.get("unit")),
-            pass_fail(c["passed"]),
+            c.code,
+            c.clause,
+            c.requirement,
+            c.found,
+            fmt_margin(c.margin, c.unit),
+            pass_fail(c.passed),
         ]
-        for c in results["compliance"]["checks"]
+        for c in results.compliance.checks
     ]
     return TableData(header, rows)
 
 
-def case_records_table(case: Mapping[str, Any]) -> TableData:
+def case_records_table(case: CaseResult) -> TableData:
     header = [
         "record",
         "PGA [g]",
@@ -495,84 +497,84 @@ def case_records_table(case: Mapping[str, Any]) -> TableData:
     ]
     rows = [
         [
-            r["record"],
-            fmt_acc(r["pga"]),
-            fmt_mult(r["collapse_multiplier"]),
-            fmt_acc(r["a_dyn"]),
-            fmt_q(r["q"]),
+            r.record,
+            fmt_acc(r.pga),
+            fmt_mult(r.collapse_multiplier),
+            fmt_acc(r.a_dyn),
+            fmt_q(r.q),
         ]
-        for r in case["records"]
+        for r in case.records
     ]
     return TableData(header, rows)
 
 
-def case_summary_rows(results: Results, case: Mapping[str, Any]) -> list[list[str]]:
+def case_summary_rows(results: Results, case: CaseResult) -> list[list[str]]:
     lb = is_lower_bound(case)
     rows = [
-        ["mean a_dyn over the records", bound(f"{fmt_acc(case['mean_a_dyn'])} g", lb)],
-        ["least favourable a_dyn", f"{fmt_acc(case['min_a_dyn'])} g"],
-        ["mean q = a_dyn / a_RM", bound(fmt_q(case["mean_q"]), lb)],
+        ["mean a_dyn over the records", bound(f"{fmt_acc(case.mean_a_dyn)} g", lb)],
+        ["least favourable a_dyn", f"{fmt_acc(case.min_a_dyn)} g"],
+        ["mean q = a_dyn / a_RM", bound(fmt_q(case.mean_q), lb)],
         [
             "capacity/demand = a_dyn / a_g·S",
-            bound(fmt_capacity(case, float(results["model"]["target"])), lb)
-            + f" (demand {fmt_acc(results['demand']['pga'])} g)",
+            bound(fmt_capacity(case, float(results.model.target)), lb)
+            + f" (demand {fmt_acc(results.demand.pga)} g)",
         ],
         [
-            f"meets the target (≥ {results['model']['target']:g})",
-            yes_no(case["meets_target"]),
+            f"meets the target (≥ {results.model.target:g})",
+            yes_no(case.meets_target),
         ],
     ]
-    if case.get("design_a_dyn") is not None and not uses_mean(results):
-        design = f"{fmt_acc(case['design_a_dyn'])} g"
+    if case.design_a_dyn is not None and not uses_mean(results):
+        design = f"{fmt_acc(case.design_a_dyn)} g"
         rows.insert(2, ["design a_dyn (fewer than 7 records)", design])
     return rows
 
 
 def code_check_rows(results: Results) -> list[list[str]]:
-    k = results["code_check"]
+    k = results.code_check
     return [
-        ["α₀ (load multiplier activating the mechanism)", f"{k['alpha0']:.4f}"],
-        ["e* (participating mass fraction)", f"{k['e_star']:.3f}"],
-        ["M* (participating mass)", f"{k['M_star']:.1f} kg/m"],
+        ["α₀ (load multiplier activating the mechanism)", f"{k.alpha0:.4f}"],
+        ["e* (participating mass fraction)", f"{k.e_star:.3f}"],
+        ["M* (participating mass)", f"{k.M_star:.1f} kg/m"],
         [
             "confidence factor FC",
-            f"{k['FC']:g} ({k.get('confidence_factor_level') or DASH})",
+            f"{k.FC:g} ({k.confidence_factor_level or DASH})",
         ],
-        ["behaviour factor q", f"{k['behaviour_factor']:g}"],
-        ["a₀* = α₀·g / (e*·FC)", f"{fmt_acc(k['a0_star'])} g"],
-        ["demand a_g·S / q", f"{fmt_acc(k['demand'])} g"],
-        ["ratio a₀* / demand", fmt_ratio(k["ratio"])],
-        ["verdict", "satisfied" if k["passed"] else "NOT satisfied"],
+        ["behaviour factor q", f"{k.behaviour_factor:g}"],
+        ["a₀* = α₀·g / (e*·FC)", f"{fmt_acc(k.a0_star)} g"],
+        ["demand a_g·S / q", f"{fmt_acc(k.demand)} g"],
+        ["ratio a₀* / demand", fmt_ratio(k.ratio)],
+        ["verdict", "satisfied" if k.passed else "NOT satisfied"],
     ]
 
 
 def comparison_table(results: Results) -> TableData:
     """The IDA verdict of the unreinforced wall next to the code linear kinematic check."""
     urm = urm_case(results)
-    k = results["code_check"]
+    k = results.code_check
     lb = is_lower_bound(urm)
     header = ["assessment", "capacity [g]", "demand [g]", "capacity / demand", "verdict"]
     rows = [
         [
             "IDA, rocking dynamics (this report)",
             bound(fmt_acc(design_a_dyn(urm)), lb),
-            fmt_acc(results["demand"]["pga"]),
-            bound(fmt_capacity(urm, float(results["model"]["target"])), lb),
-            "satisfied" if urm["meets_target"] else "NOT satisfied",
+            fmt_acc(results.demand.pga),
+            bound(fmt_capacity(urm, float(results.model.target)), lb),
+            "satisfied" if urm.meets_target else "NOT satisfied",
         ],
         [
             "NTC 2018 / Circ. 2019 §C8.7.1 linear kinematic",
-            fmt_acc(k["a0_star"]),
-            fmt_acc(k["demand"]),
-            fmt_ratio(k["ratio"]),
-            "satisfied" if k["passed"] else "NOT satisfied",
+            fmt_acc(k.a0_star),
+            fmt_acc(k.demand),
+            fmt_ratio(k.ratio),
+            "satisfied" if k.passed else "NOT satisfied",
         ],
     ]
     return TableData(header, rows)
 
 
 def design_table(results: Results) -> TableData:
-    cur = results["costs"]["currency"]
+    cur = results.costs.currency
     header = [
         "material",
         "position",
@@ -584,44 +586,43 @@ def design_table(results: Results) -> TableData:
     ]
     rows = [
         [
-            d["material"],
-            d["position"],
-            "none in range" if d.get("ratio") is None else fmt_permille(d["ratio"]),
-            fmt_ratio(d.get("capacity_demand")),
-            fmt_mass(d.get("frp_mass")),
-            fmt_cost(d.get("frp_cost")),
-            d.get("message") or "",
+            d.material,
+            d.position,
+            "none in range" if d.ratio is None else fmt_permille(d.ratio),
+            fmt_ratio(d.capacity_demand),
+            fmt_mass(d.frp_mass),
+            fmt_cost(d.frp_cost),
+            d.message or "",
         ]
-        for d in results.get("design") or []
+        for d in results.design or []
     ]
     return TableData(header, rows)
 
 
 def a_dyn_matrix(results: Results) -> TableData:
     """a_dyn [g] of every case and record, unreinforced wall first then by rank."""
-    names = [r["name"] for r in results["records"]]
+    names = [r.name for r in results.records]
     header = ["option"] + names
-    cases: Sequence[Mapping[str, Any]] = [urm_case(results)] + ranked_options(results)
+    cases: Sequence[CaseResult] = [urm_case(results)] + ranked_options(results)
     rows = []
     for c in cases:
-        by_rec = {r["record"]: r for r in c["records"]}
+        by_rec = {r.record: r for r in c.records}
         cells = []
         for n in names:
             r = by_rec.get(n)
             if r is None:
                 cells.append(DASH)
             else:
-                cells.append("n.c." if r["a_dyn"] is None else fmt_acc(r["a_dyn"]))
-        rows.append([c["name"], *cells])
+                cells.append("n.c." if r.a_dyn is None else fmt_acc(r.a_dyn))
+        rows.append([c.name, *cells])
     return TableData(header, rows)
 
 
-def _fate(run: Mapping[str, Any]) -> str:
-    """A time history's fate and when it was decided (results written before the fate was
-    recorded show collapsed yes/no)."""
-    if "fate" not in run:
-        return yes_no(run["collapsed"])
-    return f"{run['fate']} ({run['decided_time']:.2f} s)"
+def _fate(run: HistoryRun) -> str:
+    """A time history's fate and when it was decided."""
+    if run.decided_time is None:
+        return run.fate
+    return f"{run.fate} ({run.decided_time:.2f} s)"
 
 
 def governing_runs_table(results: Results) -> TableData:
@@ -633,24 +634,24 @@ def governing_runs_table(results: Results) -> TableData:
         "peak θ/α [–]",
         "peak ε [‰]",
     ]
-    gov = results.get("governing") or {}
+    gov = results.governing
+    if gov is None:
+        return TableData(header, [])
     pga = None
-    for r in results["records"]:
-        if r["name"] == gov.get("record"):
-            pga = r["pga"]
+    for r in results.records:
+        if r.name == gov.record:
+            pga = r.pga
     rows = []
-    for run in gov.get("runs", []):
-        th = run.get("theta_over_alpha") or [0.0]
-        st = run.get("strain") or [0.0]
+    for run in gov.runs:
         rows.append(
             [
-                run["label"],
-                fmt_mult(run["multiplier"]),
-                DASH if pga is None else fmt_acc(run["multiplier"] * pga),
+                run.label,
+                fmt_mult(run.multiplier),
+                DASH if pga is None else fmt_acc(run.multiplier * pga),
                 _fate(run),
-                f"{run.get('peak_rotation_ratio', max(abs(x) for x in th)):.2f}",
-                f"{1e3 * run.get('peak_strain', max(abs(x) for x in st)):.2f}"
-                + (f", broke at {run['ruptures'][0]['time']:.2f} s" if run.get("ruptures") else ""),
+                f"{run.peak_rotation_ratio:.2f}",
+                f"{1e3 * run.peak_strain:.2f}"
+                + (f", broke at {run.ruptures[0].time:.2f} s" if run.ruptures else ""),
             ]
         )
     return TableData(header, rows)

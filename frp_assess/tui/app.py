@@ -23,10 +23,9 @@ from textual.widgets import Button, Input, Select, TabbedContent, TabPane
 
 from frp_assess.api import default_out_dir
 from frp_assess.assess.inputs import UNREINFORCED
-from frp_assess.assess.results import recommendation_text
 from frp_assess.config import Project
 from frp_assess.errors import InputError
-from frp_assess.numbers import numerical_check_text
+from frp_assess.numbers import numerical_check_text, recommendation_text
 from frp_assess.tui.analysis_pane import AnalysisPane
 from frp_assess.tui.core.model import Problem
 from frp_assess.tui.core.opening import opening_data
@@ -212,7 +211,7 @@ class FrpAssessApp(App[None]):
             )
             return
         panel.log_line(
-            f"results of the run of {o.results.get('created')} shown (rebuilt from the cache in "
+            f"results of the run of {o.results.created} shown (rebuilt from the cache in "
             f"{out_dir}/); recommended: {recommendation_text(o.results)}"
         )
         self.show_outcome(o)

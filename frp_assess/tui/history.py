@@ -7,7 +7,7 @@ keys ``c``/``b``/``1`` outside the multiplier field) set it at collapse, just be
 
 from __future__ import annotations
 
-from typing import Any, ClassVar
+from typing import ClassVar
 
 from rich.text import Text
 from textual import on, work
@@ -18,6 +18,7 @@ from textual.message import Message
 from textual.widgets import Button, Input, Label, Select, Static
 
 from frp_assess.assess.results import below_collapse
+from frp_assess.results.model import AssessmentResult, RecordResult
 from frp_assess.tui.core.session import HistoryData, RunOutcome, case_history
 from frp_assess.tui.core.text import printable
 from frp_assess.tui.fields import OrderedInput
@@ -61,7 +62,7 @@ class HistoryPane(Vertical):
 
     def on_mount(self) -> None:
         self.outcome: RunOutcome | None = None
-        self.results: dict[str, Any] | None = None
+        self.results: AssessmentResult | None = None
         self.tolerance = 0.005
         self._needs_update = False
 
@@ -86,22 +87,22 @@ class HistoryPane(Vertical):
         self.outcome = outcome
         self.show_results(outcome.results)
 
-    def show_results(self, results: dict[str, Any]) -> None:
+    def show_results(self, results: AssessmentResult) -> None:
         """Offer the cases and records of ``results`` (of :attr:`outcome`)."""
         self.results = results
-        self.tolerance = float(results["model"]["ida"]["tolerance"])
+        self.tolerance = float(results.model.ida.tolerance)
         cases = self.query_one("#hist-case", Select)
         records = self.query_one("#hist-record", Select)
         with self.app.prevent(Select.Changed):
-            cases.set_options([(literal(c["name"]), i) for i, c in enumerate(results["cases"])])
-            records.set_options([(literal(r["name"]), i) for i, r in enumerate(results["records"])])
-        gov = results.get("governing")
+            cases.set_options([(literal(c.name), i) for i, c in enumerate(results.cases)])
+            records.set_options([(literal(r.name), i) for i, r in enumerate(results.records)])
+        gov = results.governing
         case, rec = 0, 0
         if gov:
-            names = [c["name"] for c in results["cases"]]
-            recs = [r["name"] for r in results["records"]]
-            case = names.index(gov["case"]) if gov["case"] in names else 0
-            rec = recs.index(gov["record"]) if gov["record"] in recs else 0
+            names = [c.name for c in results.cases]
+            recs = [r.name for r in results.records]
+            case = names.index(gov.case) if gov.case in names else 0
+            rec = recs.index(gov.record) if gov.record in recs else 0
         with self.app.prevent(Select.Changed):
             cases.value = case
             records.value = rec
@@ -126,15 +127,15 @@ class HistoryPane(Vertical):
             return None
         return c, r
 
-    def _ida_of_record(self) -> dict[str, Any] | None:
+    def _ida_of_record(self) -> RecordResult | None:
         cur = self._current()
         if cur is None or self.results is None:
             return None
-        return self.results["cases"][cur[0]]["records"][cur[1]]
+        return self.results.cases[cur[0]].records[cur[1]]
 
     def collapse_multiplier(self) -> float | None:
         rec = self._ida_of_record()
-        return None if rec is None else rec["collapse_multiplier"]
+        return None if rec is None else rec.collapse_multiplier
 
     def action_preset(self, which: str, quiet: bool = False) -> None:
         """Set the multiplier (collapse, just below collapse, or 1) and compute."""
@@ -151,8 +152,9 @@ class HistoryPane(Vertical):
         elif which == "collapse":
             value = c
         else:
-            rec = self._ida_of_record() or {}
-            value = below_collapse(c, rec.get("survivor_multiplier"), self.tolerance)
+            rec = self._ida_of_record()
+            survivor = None if rec is None else rec.survivor_multiplier
+            value = below_collapse(c, survivor, self.tolerance)
         inp = self.query_one("#hist-multiplier", Input)
         with self.app.prevent(Input.Changed):
             inp.value = f"{value:.6g}"

@@ -3,7 +3,7 @@ reverse), enter shows the per-record IDA of the highlighted case."""
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import Any, ClassVar
 
 from rich.text import Text
@@ -11,6 +11,7 @@ from textual.binding import Binding, BindingType
 from textual.message import Message
 from textual.widgets import DataTable, TabbedContent
 
+from frp_assess.results.model import CaseResult
 from frp_assess.tui.core.text import printable
 from frp_assess.tui.literal import literal, safe
 
@@ -21,25 +22,25 @@ def _text(value: Any) -> Text:
 
 
 #: (header, sort key, cell) of the ranking table
-RANKING_COLUMNS: list[tuple[str, Callable[[dict[str, Any]], Any], Callable[..., Any]]] = [
-    ("rank", lambda c: (c["rank"] is None, c["rank"] or 0), lambda c: c["rank"] or "—"),
-    ("option", lambda c: c["name"], lambda c: c["name"]),
-    ("kg/m", lambda c: c["frp_mass_per_m"], lambda c: f"{c['frp_mass_per_m']:.2f}"),
-    ("FRP kg", lambda c: c["frp_mass"], lambda c: f"{c['frp_mass']:.1f}"),
-    ("cost", lambda c: c["frp_cost"], lambda c: f"{c['frp_cost']:.0f}"),
-    ("a_dyn [g]", lambda c: c["design_a_dyn"], lambda c: f"{c['design_a_dyn']:.3f}"),
-    ("q", lambda c: c["mean_q"], lambda c: f"{c['mean_q']:.2f}"),
-    ("impr.", lambda c: c["improvement"], lambda c: f"{c['improvement']:.2f}"),
-    ("C/D", lambda c: c["capacity_demand"], lambda c: f"{c['capacity_demand']:.2f}"),
+RANKING_COLUMNS: list[tuple[str, Callable[[CaseResult], Any], Callable[..., Any]]] = [
+    ("rank", lambda c: (c.rank is None, c.rank or 0), lambda c: c.rank or "—"),
+    ("option", lambda c: c.name, lambda c: c.name),
+    ("kg/m", lambda c: c.frp_mass_per_m, lambda c: f"{c.frp_mass_per_m:.2f}"),
+    ("FRP kg", lambda c: c.frp_mass, lambda c: f"{c.frp_mass:.1f}"),
+    ("cost", lambda c: c.frp_cost, lambda c: f"{c.frp_cost:.0f}"),
+    ("a_dyn [g]", lambda c: c.design_a_dyn, lambda c: f"{c.design_a_dyn:.3f}"),
+    ("q", lambda c: c.mean_q, lambda c: f"{c.mean_q:.2f}"),
+    ("impr.", lambda c: c.improvement, lambda c: f"{c.improvement:.2f}"),
+    ("C/D", lambda c: c.capacity_demand, lambda c: f"{c.capacity_demand:.2f}"),
     (
         "meets",
-        lambda c: c["meets_target"],
-        lambda c: Text("yes", "green") if c["meets_target"] else Text("no", "red"),
+        lambda c: c.meets_target,
+        lambda c: Text("yes", "green") if c.meets_target else Text("no", "red"),
     ),
 ]
 
 
-def sorted_order(cases: list[dict[str, Any]], column: int, reverse: bool) -> list[int]:
+def sorted_order(cases: Sequence[CaseResult], column: int, reverse: bool) -> list[int]:
     """Indices of the cases ordered by a ranking column (stable; ``rank`` puts the
     unreinforced wall last)."""
     key = RANKING_COLUMNS[column][1]
@@ -55,7 +56,7 @@ class RankingTable(DataTable[Any]):
     ]
 
     class CaseChosen(Message):
-        """A case was highlighted (index in results["cases"])."""
+        """A case was highlighted (index in results.cases)."""
 
         def __init__(self, index: int) -> None:
             super().__init__()
@@ -63,13 +64,13 @@ class RankingTable(DataTable[Any]):
 
     def __init__(self, **kw: Any) -> None:
         super().__init__(cursor_type="cell", zebra_stripes=True, **kw)
-        self.cases: list[dict[str, Any]] = []
+        self.cases: Sequence[CaseResult] = []
         self.order: list[int] = []
         self.sort_column = 0
         self.sort_reverse = False
         self.currency = ""
 
-    def show(self, cases: list[dict[str, Any]], currency: str) -> None:
+    def show(self, cases: Sequence[CaseResult], currency: str) -> None:
         self.cases = cases
         self.currency = currency
         self._fill()

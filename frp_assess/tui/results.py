@@ -1,6 +1,6 @@
 """The Results tab: ranking (sortable), IDA per record, FRP plot, spectrum compliance.
 
-Everything is read from the results dict of the run (docs/results-json.md), as the PDF
+Everything is read from the typed results of the run (:mod:`frp_assess.results.model`), as the PDF
 report does.  The ranking (:mod:`frp_assess.tui.ranking_table`): the highlighted row is the
 case shown in "Per record" and in the History tab.
 """
@@ -17,7 +17,8 @@ from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.widgets import DataTable, Label, Select, Static, TabPane
 
-from frp_assess.assess.results import recommendation_label, recommendation_text
+from frp_assess.numbers import recommendation_label, recommendation_text
+from frp_assess.results.model import AssessmentResult, CaseResult, RecordResult
 from frp_assess.tui.core.text import printable
 from frp_assess.tui.literal import literal
 from frp_assess.tui.plots import PlotView, Rule, Series
@@ -32,14 +33,13 @@ def _num(value: Any, fmt: str) -> str:
     return "—" if value is None else format(value, fmt)
 
 
-def _resurrection(rec: dict[str, Any]) -> Text | str:
+def _resurrection(rec: RecordResult) -> Text | str:
     """The smallest multiplier above the first collapse at which the wall stood again in the
     IDA (the curve shows it; the first collapse stays the result), or "—"."""
-    first = rec.get("collapse_multiplier")
-    curve = rec.get("curve") or []
+    first = rec.collapse_multiplier
     if first is None:
         return "—"
-    again = [c for c, collapsed, _ in curve if c > first and not collapsed]
+    again = [c for c, collapsed, _ in rec.curve if c > first and not collapsed]
     return Text(f"{min(again):.4f}", "yellow") if again else "—"
 
 
@@ -85,7 +85,7 @@ class ResultsPane(Vertical):
                     yield PlotView(id="compliance-plot")
 
     def on_mount(self) -> None:
-        self.results: dict[str, Any] | None = None
+        self.results: AssessmentResult | None = None
         self.query_one("#records-table", DataTable).add_columns(
             *map(
                 Text,
@@ -103,17 +103,17 @@ class ResultsPane(Vertical):
         self.query_one("#results-tabs").display = False
 
     # ------------------------------------------------------------------------- display
-    def show(self, results: dict[str, Any], out_dir: str, stale: bool = False) -> None:
+    def show(self, results: AssessmentResult, out_dir: str, stale: bool = False) -> None:
         """Show a run's results."""
         self.results = results
         self._out_dir = out_dir
         self.mark_stale(stale)
         self.query_one("#results-tabs").display = True
         self._summary(results)
-        self.query_one(RankingTable).show(results["cases"], results["costs"]["currency"])
+        self.query_one(RankingTable).show(results.cases, results.costs.currency)
         sel = self.query_one("#case-select", Select)
         with self.app.prevent(Select.Changed):
-            sel.set_options([(literal(c["name"]), i) for i, c in enumerate(results["cases"])])
+            sel.set_options([(literal(c.name), i) for i, c in enumerate(results.cases)])
             sel.value = 0
         self.show_case(0)
         self.draw_plot()
@@ -132,21 +132,19 @@ class ResultsPane(Vertical):
             )
         )
 
-    def _summary(self, r: dict[str, Any]) -> None:
-        w, urm, cc = r["wall"], r["cases"][0], r["code_check"]
-        demand = r["demand"]["pga"]
-        rec = r.get("recommended")
+    def _summary(self, r: AssessmentResult) -> None:
+        w, urm, cc = r.wall, r.cases[0], r.code_check
+        demand = r.demand.pga
+        rec = r.recommended
         t = Text()
-        t.append(f"Demand a_g·S = {demand:.3f} g;  wall α = {w['alpha_deg']:.2f}°, ")
-        t.append(f"a_RM = {w['a_rm']:.3f} g;  unreinforced a_dyn = {urm['design_a_dyn']:.3f} g, ")
-        t.append(f"C/D = {urm['capacity_demand']:.2f}", "green" if urm["meets_target"] else "red")
-        t.append(f"\nDesign value: {r['model']['design_value']};  target C/D ≥ ")
-        t.append(f"{r['model']['target']:g};  code check (§C8.7.1): a0* = {cc['a0_star']:.3f} g ")
-        t.append(f"vs {cc['demand']:.3f} g → ")
-        t.append(
-            "satisfied" if cc["passed"] else "NOT satisfied", "green" if cc["passed"] else "red"
-        )
-        if not r.get("input_code_compliant", True):
+        t.append(f"Demand a_g·S = {demand:.3f} g;  wall α = {w.alpha_deg:.2f}°, ")
+        t.append(f"a_RM = {w.a_rm:.3f} g;  unreinforced a_dyn = {urm.design_a_dyn:.3f} g, ")
+        t.append(f"C/D = {urm.capacity_demand:.2f}", "green" if urm.meets_target else "red")
+        t.append(f"\nDesign value: {r.model.design_value};  target C/D ≥ ")
+        t.append(f"{r.model.target:g};  code check (§C8.7.1): a0* = {cc.a0_star:.3f} g ")
+        t.append(f"vs {cc.demand:.3f} g → ")
+        t.append("satisfied" if cc.passed else "NOT satisfied", "green" if cc.passed else "red")
+        if not r.input_code_compliant:
             t.append(
                 "\nINPUT NOT CODE-COMPLIANT: the records fail the code's spectrum checks "
                 "(Compliance tab); no option is recommended",
@@ -154,58 +152,58 @@ class ResultsPane(Vertical):
             )
         t.append(f"\n{recommendation_label(r)}: ", "bold")
         t.append(
-            printable(recommendation_text(r)), "bold green" if rec or urm["meets_target"] else "red"
+            printable(recommendation_text(r)), "bold green" if rec or urm.meets_target else "red"
         )
         self.query_one("#results-summary", Static).update(t)
 
     def show_case(self, index: int) -> None:
         """The IDA result per record of case ``index``."""
         r = self.results
-        if r is None or not 0 <= index < len(r["cases"]):
+        if r is None or not 0 <= index < len(r.cases):
             return
-        c = r["cases"][index]
+        c = r.cases[index]
         sel = self.query_one("#case-select", Select)
         if sel.value != index:
             with self.app.prevent(Select.Changed):
                 sel.value = index
         table = self.query_one("#records-table", DataTable)
         table.clear()
-        for rec in c["records"]:
+        for rec in c.records:
             table.add_row(
-                literal(rec["record"]),
-                f"{rec['pga']:.4f}",
-                _num(rec["collapse_multiplier"], ".4f")
-                if rec["collapse_multiplier"]
+                literal(rec.record),
+                f"{rec.pga:.4f}",
+                _num(rec.collapse_multiplier, ".4f")
+                if rec.collapse_multiplier
                 else Text("no collapse", "yellow"),
-                _num(rec["a_dyn"], ".4f"),
-                _num(rec["q"], ".3f"),
-                str(len(rec.get("curve") or [])) if rec.get("curve") else "—",
+                _num(rec.a_dyn, ".4f"),
+                _num(rec.q, ".3f"),
+                str(len(rec.curve)) if rec.curve else "—",
                 _resurrection(rec),
             )
         t = Text()
-        t.append(printable(f"{c['name']}: "), "bold")
+        t.append(printable(f"{c.name}: "), "bold")
         t.append(
-            f"mean a_dyn = {c['mean_a_dyn']:.4f} g, min = {c['min_a_dyn']:.4f} g, "
-            f"design a_dyn = {c['design_a_dyn']:.4f} g, mean q = {c['mean_q']:.2f}\n"
-            f"capacity/demand = {c['capacity_demand']:.3f}, improvement = "
-            f"{c['improvement']:.3f}, FRP {c['frp_mass']:.1f} kg ({c['frp_mass_per_m']:.2f} kg/m)"
+            f"mean a_dyn = {c.mean_a_dyn:.4f} g, min = {c.min_a_dyn:.4f} g, "
+            f"design a_dyn = {c.design_a_dyn:.4f} g, mean q = {c.mean_q:.2f}\n"
+            f"capacity/demand = {c.capacity_demand:.3f}, improvement = "
+            f"{c.improvement:.3f}, FRP {c.frp_mass:.1f} kg ({c.frp_mass_per_m:.2f} kg/m)"
         )
-        if c["lower_bound"]:
+        if c.lower_bound:
             t.append("\nsome record did not collapse up to C_max: lower bounds", "yellow")
-        sc = c.get("scatter")
+        sc = c.scatter
         if sc:
             t.append(
-                f"\nscatter over the records: median {sc['median_a_dyn']:.4f} g, CoV "
-                f"{sc['cov']:.2f}, least favourable {c['min_a_dyn']:.4f} g ("
+                f"\nscatter over the records: median {sc.median_a_dyn:.4f} g, CoV "
+                f"{sc.cov:.2f}, least favourable {c.min_a_dyn:.4f} g ("
             )
-            t.append(printable(sc["least_favourable_record"]))
+            t.append(printable(sc.least_favourable_record))
             t.append(")")
-            fr = sc.get("fragility")
+            fr = sc.fragility
             if fr:
-                p = fr["p_collapse_at_demand"]
+                p = fr.p_collapse_at_demand
                 shown = "< 0.1 %" if p < 1e-3 else f"{p:.1%}"
                 t.append(
-                    f"\nfragility (lognormal): median {fr['median']:.4f} g, β = {fr['beta']:.2f}; "
+                    f"\nfragility (lognormal): median {fr.median:.4f} g, β = {fr.beta:.2f}; "
                     f"P(collapse) at a_g·S = {shown}",
                     "yellow" if p >= 0.1 else "",
                 )
@@ -237,16 +235,16 @@ class ResultsPane(Vertical):
         by_cost = metric == "capacity_demand_cost"
         field = "capacity_demand" if by_cost else str(metric)
         xkey = "frp_cost" if by_cost else "frp_mass"
-        groups: dict[tuple[str, str], list[dict[str, Any]]] = {}
-        for c in r["cases"][1:]:
-            groups.setdefault((c["material"], c["position"]), []).append(c)
+        groups: dict[tuple[str, str], list[CaseResult]] = {}
+        for c in r.cases[1:]:
+            groups.setdefault((c.material or "", c.position or ""), []).append(c)
         materials = list(dict.fromkeys(m for m, _ in groups))
         series: list[Series] = []
         for (mat, pos), cases in groups.items():
-            cases = sorted(cases, key=lambda c: c[xkey])
+            cases = sorted(cases, key=lambda c: getattr(c, xkey))
             style = MATERIAL_STYLES[materials.index(mat) % len(MATERIAL_STYLES)]
-            xs = [c[xkey] for c in cases]
-            ys = [c[field] for c in cases]
+            xs = [getattr(c, xkey) for c in cases]
+            ys = [getattr(c, field) for c in cases]
             if len(cases) > 1:
                 series.append(Series(xs, ys, style=style))
             series.append(
@@ -259,19 +257,24 @@ class ResultsPane(Vertical):
                     marker=POSITION_MARKERS.get(pos, "■"),
                 )
             )
-        urm = r["cases"][0]
+        urm = r.cases[0]
         series.append(
             Series(
-                [0.0], [urm[field]], style="white", kind="points", label="unreinforced", marker="○"
+                [0.0],
+                [getattr(urm, field)],
+                style="white",
+                kind="points",
+                label="unreinforced",
+                marker="○",
             )
         )
         rules = []
         if field == "capacity_demand":
-            rules.append(Rule(r["model"]["target"], "y", "red", "target"))
+            rules.append(Rule(r.model.target, "y", "red", "target"))
         ys_all = [y for s in series for y in s.y if y is not None]
         top = max([*ys_all, *(x.value for x in rules)]) if ys_all else 1.0
         xs_all = [x for s in series for x in s.x if x is not None]
-        cur = r["costs"]["currency"]
+        cur = r.costs.currency
         plot.show(
             series,
             x_range=(0.0, max(xs_all) * 1.05 if xs_all and max(xs_all) > 0 else 1.0),
@@ -281,16 +284,16 @@ class ResultsPane(Vertical):
             y_label="capacity/demand" if field == "capacity_demand" else "improvement",
         )
 
-    def _design(self, r: dict[str, Any]) -> None:
+    def _design(self, r: AssessmentResult) -> None:
         """Design mode: the smallest ratio meeting the target per material and position."""
         out = self.query_one("#design-table", Static)
-        found = r.get("design")
+        found = r.design
         if not found:
             out.update(Text("Design mode was off for this run (Analysis tab: Design mode).", "dim"))
             return
-        cur = r["costs"]["currency"]
+        cur = r.costs.currency
         table = Table(
-            title=Text(f"Smallest ratio meeting the target C/D ≥ {r['model']['target']:g}", "bold"),
+            title=Text(f"Smallest ratio meeting the target C/D ≥ {r.model.target:g}", "bold"),
             title_justify="left",
             box=box.SIMPLE_HEAD,
             expand=True,
@@ -304,56 +307,56 @@ class ResultsPane(Vertical):
         table.add_column(Text("note"), ratio=1)
         for d in found:
             table.add_row(
-                literal(d["material"]),
-                literal(d["position"]),
-                Text(_num(d["ratio"], "g")),
-                Text(_num(d["capacity_demand"], ".2f")),
-                Text(_num(d["frp_mass"], ".1f")),
-                Text(_num(d["frp_cost"], ".0f")),
-                literal(d["message"], "dim"),
+                literal(d.material),
+                literal(d.position),
+                Text(_num(d.ratio, "g")),
+                Text(_num(d.capacity_demand, ".2f")),
+                Text(_num(d.frp_mass, ".1f")),
+                Text(_num(d.frp_cost, ".0f")),
+                literal(d.message, "dim"),
             )
         out.update(table)
 
-    def _compliance(self, r: dict[str, Any]) -> None:
-        comp = r["compliance"]
+    def _compliance(self, r: AssessmentResult) -> None:
+        comp = r.compliance
         table = Table(box=box.SIMPLE_HEAD, expand=True, padding=(0, 1))
         table.add_column("", width=1, no_wrap=True)
         table.add_column("clause", ratio=3)
         table.add_column("requirement", ratio=4)
         table.add_column("found", ratio=4)
         table.add_column("margin", justify="right", no_wrap=True)
-        for c in comp["checks"]:
-            margin = f"{c['margin']:+.1%}" if c["unit"] == "" else f"{c['margin']:+g} {c['unit']}"
-            code = "EC8" if "1998" in c["code"] else "NTC" if "NTC" in c["code"] else c["code"]
+        for c in comp.checks:
+            margin = f"{c.margin:+.1%}" if c.unit == "" else f"{c.margin:+g} {c.unit}"
+            code = "EC8" if "1998" in c.code else "NTC" if "NTC" in c.code else c.code
             table.add_row(
-                Text("✓", "green") if c["passed"] else Text("✗", "bold red"),
-                literal(f"{code} {c['clause']}"),
-                literal(c["requirement"]),
-                literal(c["found"]),
-                Text(margin, "green" if c["passed"] else "red"),
+                Text("✓", "green") if c.passed else Text("✗", "bold red"),
+                literal(f"{code} {c.clause}"),
+                literal(c.requirement),
+                literal(c.found),
+                Text(margin, "green" if c.passed else "red"),
             )
         self.query_one("#compliance-table", Static).update(table)
-        s = r["seismic"]
+        s = r.seismic
         self.query_one("#compliance-summary", Static).update(
             Text.assemble(
                 ("Spectrum compatibility of the records ", "bold"),
-                (printable(f"({s['records_kind']}, T1 = {s['t1']:g} s): "), ""),
-                ("all checks passed", "green") if comp["passed"] else ("some checks FAIL", "red"),
+                (printable(f"({s.records_kind}, T1 = {s.t1:g} s): "), ""),
+                ("all checks passed", "green") if comp.passed else ("some checks FAIL", "red"),
             )
         )
         self.query_one("#compliance-plot", PlotView).show(
             [
-                Series(s["periods"], s["target_sa"], style="white", label="target"),
-                Series(s["periods"], s["mean_sa"], style="cyan", label="mean of records"),
+                Series(s.periods, s.target_sa, style="white", label="target"),
+                Series(s.periods, s.mean_sa, style="cyan", label="mean of records"),
                 Series(
-                    s["periods"],
-                    [0.9 * v for v in s["target_sa"]],
+                    s.periods,
+                    [0.9 * v for v in s.target_sa],
                     style="grey50",
                     label="90 % target",
                 ),
             ],
-            x_range=(0.0, max(s["periods"])),
-            y_range=(0.0, 1.1 * max([*s["target_sa"], *s["mean_sa"]])),
+            x_range=(0.0, max(s.periods)),
+            y_range=(0.0, 1.1 * max([*s.target_sa, *s.mean_sa])),
             x_label="T [s]",
             y_label="Se [g]",
         )

@@ -19,6 +19,7 @@ from frp_assess.assess.inputs import (
 from frp_assess.dynamics import ida
 from frp_assess.errors import Cancelled
 from frp_assess.motions import preset_spectrum
+from frp_assess.results.json_io import from_json, to_json
 
 GFRP = Material("GFRP", 46.0, 0.015, 2000.0, 8.0, "test")
 CFRP = Material("CFRP", 150.0, 0.013, 1550.0, 35.0, "test")
@@ -56,36 +57,37 @@ def test_run_writes_consistent_results(tmp_path):
         "records",
     }
     on_disk = json.loads((tmp_path / "results.json").read_text())
-    assert on_disk == json.loads(json.dumps(results))
-    cases = results["cases"]
-    assert cases[0]["name"] == "Unreinforced" and cases[0]["rank"] is None
-    demand = results["demand"]["pga"]
+    assert on_disk == json.loads(to_json(results))
+    assert from_json((tmp_path / "results.json").read_text()) == results  # round trip
+    cases = results.cases
+    assert cases[0].name == "Unreinforced" and cases[0].rank is None
+    demand = results.demand.pga
     assert demand == pytest.approx(0.106)
     # every number traceable: recompute one IDA directly
-    rec = results["records"][1]
+    rec = results.records[1]
     from frp_assess.motions import read_record
 
-    acc = read_record(tmp_path / "records" / f"{rec['name']}.AT2")
+    acc = read_record(tmp_path / "records" / f"{rec.name}.AT2")
     direct = ida(inputs.model_for(inputs.options[0]), acc.acc, acc.dt, inputs.ida)
-    assert cases[1]["records"][1]["collapse_multiplier"] == pytest.approx(
+    assert cases[1].records[1].collapse_multiplier == pytest.approx(
         direct.collapse_multiplier, rel=1e-5
     )
     for c in cases:
-        a = [r["a_dyn"] for r in c["records"]]
-        assert c["min_a_dyn"] == pytest.approx(min(a))
-        assert c["capacity_demand"] == pytest.approx(c["design_a_dyn"] / demand)
-        assert c["improvement"] == pytest.approx(c["design_a_dyn"] / cases[0]["design_a_dyn"])
-        assert c["meets_target"] == (c["capacity_demand"] >= 3.0)
+        a = [r.a_dyn for r in c.records]
+        assert c.min_a_dyn == pytest.approx(min(a))
+        assert c.capacity_demand == pytest.approx(c.design_a_dyn / demand)
+        assert c.improvement == pytest.approx(c.design_a_dyn / cases[0].design_a_dyn)
+        assert c.meets_target == (c.capacity_demand >= 3.0)
     # fewer than 7 records: the design value is the least favourable record
-    assert cases[1]["design_a_dyn"] == pytest.approx(cases[1]["min_a_dyn"])
-    ranks = sorted(c["rank"] for c in cases[1:])
+    assert cases[1].design_a_dyn == pytest.approx(cases[1].min_a_dyn)
+    ranks = sorted(c.rank for c in cases[1:])
     assert ranks == [1, 2]
-    d = results["design"][0]
-    assert d["ratio"] is None or d["capacity_demand"] >= 3.0
+    d = results.design[0]
+    assert d.ratio is None or d.capacity_demand >= 3.0
     lines = (tmp_path / "results.csv").read_text().splitlines()
     assert len(lines) == 1 + 3 * 3
-    assert results["governing"]["runs"][0]["collapsed"] is True
-    assert results["governing"]["runs"][1]["collapsed"] is False
+    assert results.governing.runs[0].collapsed is True
+    assert results.governing.runs[1].collapsed is False
 
 
 def test_rerun_is_served_from_cache_with_same_numbers(tmp_path):

@@ -34,13 +34,13 @@ def test_variants_change_one_convention_each():
 def test_sensitivity_in_results_and_cached(tmp_path):
     inputs = small_inputs()
     results, first = run_assessment(inputs, tmp_path, jobs=2, pdf=False, write=False)
-    sens = results["sensitivity"]
-    case = next(c for c in results["cases"] if c["name"] == sens["case"])
-    assert case["rank"] == 1 or results["recommended"] is None
-    row0 = sens["rows"][0]
-    assert row0["variant"] == "as assessed"
-    assert row0["design_a_dyn"] == case["design_a_dyn"]
-    assert row0["capacity_demand"] == case["capacity_demand"]
-    assert len(sens["rows"]) == len(convention_variants(inputs.case_models()[1]))
+    sens = results.sensitivity
+    case = next(c for c in results.cases if c.name == sens.case)
+    assert case.rank == 1 or results.recommended is None
+    row0 = sens.rows[0]
+    assert row0.variant == "as assessed"
+    assert row0.design_a_dyn == case.design_a_dyn
+    assert row0.capacity_demand == case.capacity_demand
+    assert len(sens.rows) == len(convention_variants(inputs.case_models()[1]))
     _, again = run_assessment(inputs, tmp_path, jobs=2, pdf=False, write=False)
     assert again.computed == 0

@@ -7,12 +7,18 @@ overturning of a monolithic wall.
 
 from __future__ import annotations
 
+from dataclasses import replace
+from pathlib import Path
+
 import pytest
 
 from frp_assess.assess.code_check import simple_overturning_check
 from frp_assess.assess.inputs import Costs, Material
 from frp_assess.assess.quantities import frp_quantity
 from frp_assess.assess.ranking import Rankable, rank_options
+from frp_assess.numbers import recommendation_text
+from frp_assess.results.json_io import from_json
+from frp_assess.results.model import AssessmentResult, Fragility
 
 GFRP = Material("GFRP", 46.0, 0.015, 2000.0, 8.0)
 
@@ -48,13 +54,20 @@ def test_kinematic_check_by_hand():
         simple_overturning_check(0.4, 3.0, 0.3, "LC4")
 
 
+def _fixture_results() -> AssessmentResult:
+    """The report's results fixture (typed), to vary one field at a time."""
+    data = Path(__file__).resolve().parents[1] / "report" / "data" / "results.json"
+    return from_json(data.read_text(encoding="utf-8"))
+
+
 def test_recommendation_says_when_no_retrofit_is_needed():
     """The printed recommendation does not present an option as required when the unreinforced
     wall (case 0) already meets the target; it names the option only as extra margin."""
-    from frp_assess.assess.results import recommendation_text
+    base = _fixture_results()
 
-    def results(urm_ok: bool, rec: str | None) -> dict:
-        return {"recommended": rec, "cases": [{"meets_target": urm_ok}]}
+    def results(urm_ok: bool, rec: str | None) -> AssessmentResult:
+        urm = replace(base.cases[0], meets_target=urm_ok)
+        return replace(base, recommended=rec, cases=(urm, *base.cases[1:]))
 
     assert recommendation_text(results(False, "GFRP external 1‰")) == "GFRP external 1‰"
     assert recommendation_text(results(False, None)) == "none of the options meets the target"
@@ -66,17 +79,24 @@ def test_recommendation_says_when_no_retrofit_is_needed():
 def test_no_retrofit_needed_says_what_contradicts_it():
     """Issue 15 §3: never "no retrofit needed" while the code check of the same wall fails or
     the margin is within the scatter of the records, without saying so."""
-    from frp_assess.assess.results import recommendation_text
+    base = _fixture_results()
 
-    def results(passed: bool, cd: float, cov: float, p: float | None) -> dict:
-        scatter = {"cov": cov, "fragility": None if p is None else {"p_collapse_at_demand": p}}
-        urm = {"meets_target": True, "capacity_demand": cd, "scatter": scatter}
-        return {
-            "recommended": None,
-            "cases": [urm],
-            "code_check": {"passed": passed},
-            "model": {"target": 1.0},
-        }
+    def results(passed: bool, cd: float, cov: float, p: float | None) -> AssessmentResult:
+        sc = base.cases[0].scatter
+        fragility = None if p is None else Fragility(0.3, 0.2, "mle", p)
+        urm = replace(
+            base.cases[0],
+            meets_target=True,
+            capacity_demand=cd,
+            scatter=replace(sc, cov=cov, fragility=fragility),
+        )
+        return replace(
+            base,
+            recommended=None,
+            cases=(urm, *base.cases[1:]),
+            code_check=replace(base.code_check, passed=passed),
+            model=replace(base.model, target=1.0),
+        )
 
     assert recommendation_text(results(True, 2.0, 0.1, 1e-6)).endswith("meets the target")
     failing = recommendation_text(results(False, 2.0, 0.1, 1e-6))

@@ -14,6 +14,8 @@ import pytest
 from frp_assess.cli.output import Column, make_console, print_table, user
 from frp_assess.cli.run import print_ranking, ranking_rows
 from frp_assess.numbers import fmt_against
+from frp_assess.results.json_io import from_data
+from frp_assess.results.model import AssessmentResult
 from frp_assess.text_safety import PLACEHOLDER, plain
 
 DATA = Path(__file__).resolve().parents[1] / "report" / "data" / "results.json"
@@ -21,7 +23,14 @@ DATA = Path(__file__).resolve().parents[1] / "report" / "data" / "results.json"
 
 @pytest.fixture
 def results() -> dict[str, Any]:
+    """The report's fixture as plain JSON values (tests edit a copy and read it typed)."""
     return json.loads(DATA.read_text(encoding="utf-8"))
+
+
+def typed(data: dict[str, Any]) -> AssessmentResult:
+    result = from_data(AssessmentResult, data)
+    assert isinstance(result, AssessmentResult)
+    return result
 
 
 def printed(width: int, fn: Any, *args: Any) -> str:
@@ -32,11 +41,11 @@ def printed(width: int, fn: Any, *args: Any) -> str:
 
 @pytest.mark.parametrize("width", [60, 80, 120])
 def test_ranking_never_cuts_a_number(results: dict[str, Any], width: int) -> None:
-    out = printed(width, print_ranking, results)
+    out = printed(width, print_ranking, typed(results))
     assert "…" not in out
     assert max(len(line) for line in out.splitlines()) <= width
     tokens = set(out.split())
-    for row in ranking_rows(results):
+    for row in ranking_rows(typed(results)):
         for cell in row[2:8]:
             assert cell in tokens, (cell, width)
     # headers carry units
@@ -50,7 +59,7 @@ def test_hostile_names_print_literally(results: dict[str, Any], width: int) -> N
     r["costs"]["currency"] = "[/x]"
     r["cases"][1]["name"] = "[b]G[/x]\x1b[2J"
     r["cases"][2]["name"] = ":smile:\x1b]0;\x07"
-    out = printed(width, print_ranking, r)
+    out = printed(width, print_ranking, typed(r))
     assert "\x1b" not in out and "\x07" not in out
     tokens = out.split()
     assert f"[b]G[/x]{PLACEHOLDER}[2J" in tokens

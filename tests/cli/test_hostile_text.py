@@ -6,13 +6,13 @@ shows a placeholder (tests/report/test_escaping.py)."""
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 
 import pytest
 
 from frp_assess.cli import main
 from frp_assess.report import build_story
+from frp_assess.results.json_io import from_json
 from tests.report.test_report import story_text
 
 HOSTILE = r"""
@@ -47,7 +47,7 @@ def test_hostile_project_runs_and_shows_text_as_typed(
     assert "[/x] opt <b>" in cap.out and "<b>EUR [/x]" in cap.out
     pdf = (out / "report.pdf").read_bytes()
     assert b"/XObject" not in pdf and b"/URI" not in pdf and b"/Annot" not in pdf
-    results = json.loads((out / "results.json").read_text(encoding="utf-8"))
+    results = from_json((out / "results.json").read_text(encoding="utf-8"))
     text = story_text(build_story(results))
     for typed in ("Hostile <b>wall [/x]", '<a href="x">here</a>', "[/x] opt <b>", "<b>EUR [/x]"):
         assert typed in text

@@ -11,9 +11,10 @@ import pytest
 
 from frp_assess.assess.from_project import load_inputs
 from frp_assess.assess.inputs import ArtificialRecords, RecordFile
-from frp_assess.assess.results import recommendation_label, recommendation_text
 from frp_assess.cli import main
 from frp_assess.config import FRP_MATERIALS
+from frp_assess.numbers import recommendation_label, recommendation_text
+from frp_assess.results.json_io import from_json
 
 ROOT = Path(__file__).resolve().parents[2]
 BROKEN = ROOT / "tests" / "config" / "broken"
@@ -56,7 +57,8 @@ def test_small_project_end_to_end_and_instant_rerun(tmp_path, capsys):
     out = capsys.readouterr().out
     assert "Spectrum compatibility" in out
     said = " ".join(out.split())
-    assert f"{recommendation_label(first)}: {recommendation_text(first)}" in said
+    typed = from_json((out_dir / "results.json").read_text(encoding="utf-8"))
+    assert f"{recommendation_label(typed)}: {recommendation_text(typed)}" in said
     # this small set (3 short records) fails the code's checks: nothing is "recommended"
     assert first["input_code_compliant"] is first["compliance"]["passed"] is False
     assert "Best ranked (input not code-compliant): " in said and "Recommended:" not in said
@@ -170,9 +172,11 @@ def test_paper_case_just_below_history_survives(tmp_path):
 
     inputs = load_inputs(ROOT / "projects" / "paper-case.yaml")
     results, _ = run_assessment(inputs, tmp_path, pdf=False)
-    gov = results["governing"]
-    case = next(c for c in results["cases"] if c["name"] == gov["case"])
-    ida = next(r for r in case["records"] if r["record"] == gov["record"])
-    at, below = gov["runs"]
-    assert at["collapsed"] is True and below["collapsed"] is False
-    assert below["multiplier"] == ida["survivor_multiplier"] < at["multiplier"]
+    gov = results.governing
+    assert gov is not None
+    case = results.case(gov.case)
+    assert case is not None
+    ida = next(r for r in case.records if r.record == gov.record)
+    at, below = gov.runs
+    assert at.collapsed is True and below.collapsed is False
+    assert below.multiplier == ida.survivor_multiplier < at.multiplier

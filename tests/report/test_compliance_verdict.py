@@ -4,26 +4,20 @@
 from __future__ import annotations
 
 import copy
-import json
-from typing import Any
 
-from frp_assess.assess.results import recommendation_label
+from frp_assess.numbers import recommendation_label
 from frp_assess.report import build_story
-from tests.report.test_report import DATA, story_text
+from tests.report.test_report import raw, story_text, typed
 
-
-def load() -> dict[str, Any]:
-    return json.loads(DATA.read_text(encoding="utf-8"))
+load = raw
 
 
 def test_label_follows_the_compliance_of_the_records():
     r = load()
     r["input_code_compliant"] = True
-    assert recommendation_label(r) == "Recommended"
+    assert recommendation_label(typed(r)) == "Recommended"
     r["input_code_compliant"] = False
-    assert recommendation_label(r) == "Best ranked (input not code-compliant)"
-    del r["input_code_compliant"]  # results written before the flag existed
-    assert recommendation_label(r) == "Recommended"
+    assert recommendation_label(typed(r)) == "Best ranked (input not code-compliant)"
 
 
 def test_report_on_non_compliant_input_recommends_nothing():
@@ -33,8 +27,8 @@ def test_report_on_non_compliant_input_recommends_nothing():
     failing["input_code_compliant"] = False
     failing["compliance"]["passed"] = False
     assert compliant["recommended"] is not None
-    ok_text = story_text(build_story(compliant))
-    bad_text = story_text(build_story(failing))
+    ok_text = story_text(build_story(typed(compliant)))
+    bad_text = story_text(build_story(typed(failing)))
     assert "Input not code-compliant" not in ok_text
     assert "Recommended retrofit." in ok_text or "No retrofit is needed" in ok_text
     assert "Input not code-compliant" in bad_text

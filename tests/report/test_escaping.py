@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 import copy
-import json
 import re
 from pathlib import Path
+from types import SimpleNamespace
 from typing import Any
 
 import pytest
@@ -16,14 +16,19 @@ from frp_assess.report.charts import ratio_note
 from frp_assess.report.document import pdf_date
 from frp_assess.report.flow import PARAGRAPH_MAX_CHARS
 from frp_assess.text_safety import PDF_MAX_CHARS, PDF_MAX_WORD, PLACEHOLDER
-from tests.report.test_report import DATA, story_text
+from tests.report.test_report import raw, story_text, typed
 
 HOSTILE = ['<img src="/etc/passwd"/>', "<b>EUR", '<a href="x">', "&amp; <br/> ]]>"]
 
 
 @pytest.fixture(scope="module")
 def results() -> dict[str, Any]:
-    return json.loads(DATA.read_text(encoding="utf-8"))
+    """The fixture as plain JSON values: each test edits a copy and reads it typed."""
+    return raw()
+
+
+def _first_option(r: dict[str, Any]) -> dict[str, Any]:
+    return min((c for c in r["cases"] if c["rank"] is not None), key=lambda c: c["rank"])
 
 
 @pytest.mark.parametrize("text", HOSTILE)
@@ -39,7 +44,7 @@ def test_markup_in_any_user_field_prints_literally(
     elif field == "notes":
         r["project"]["notes"] = text
     elif field == "material":
-        option = tb.ranked_options(r)[0]
+        option = _first_option(r)
         option["material"] = text
     else:  # a record name, in the records table and in the a_dyn matrix header
         old = r["records"][0]["name"]
@@ -49,25 +54,25 @@ def test_markup_in_any_user_field_prints_literally(
                 if rec["record"] == old:
                     rec["record"] = text
     out = tmp_path / "report.pdf"
-    build_report(r, out)
+    build_report(typed(r), out)
     data = out.read_bytes()
     assert data.startswith(b"%PDF")
     assert b"/XObject" not in data and b"/URI" not in data and b"/Annot" not in data
-    assert text in story_text(build_story(r))
+    assert text in story_text(build_story(typed(r)))
 
 
 def test_currency_in_headers_is_text(results: dict[str, Any]) -> None:
     r = copy.deepcopy(results)
     r["costs"]["currency"] = "<b>EUR"
-    text = story_text(build_story(r))
+    text = story_text(build_story(typed(r)))
     assert "cost[<b>EUR]" in text.replace("\n", "").replace(" ", "") or "cost [<b>EUR]" in text
 
 
 def test_control_characters_never_reach_the_pdf(results: dict[str, Any], tmp_path: Path) -> None:
     r = copy.deepcopy(results)
     r["project"]["name"] = "wall\x1b[31m red\x00\x07\x9b"
-    build_report(r, tmp_path / "report.pdf")
-    text = story_text(build_story(r))
+    build_report(typed(r), tmp_path / "report.pdf")
+    text = story_text(build_story(typed(r)))
     assert "\x1b" not in text and "\x00" not in text and "\x9b" not in text
     assert f"wall{PLACEHOLDER}[31m red" in text
 
@@ -82,8 +87,8 @@ def test_a_20000_character_word_is_capped_and_broken(
     r["project"]["name"] = "W" * 20_000
     r["project"]["notes"] = "N" * 20_000
     r["cases"][1]["name"] = "O" * 20_000
-    build_report(r, tmp_path / "report.pdf")
-    text = story_text(build_story(r))
+    build_report(typed(r), tmp_path / "report.pdf")
+    text = story_text(build_story(typed(r)))
     longest = max(len(w) for w in re.split(r"\s+", text))
     assert longest <= PDF_MAX_WORD
     assert all(part.count("W") <= PARAGRAPH_MAX_CHARS for part in text.split("\n"))
@@ -94,19 +99,19 @@ def test_a_20000_character_word_is_capped_and_broken(
 def test_creation_date_is_the_results_date(results: dict[str, Any], tmp_path: Path) -> None:
     r = copy.deepcopy(results)
     r["created"] = "2031-05-17"
-    build_report(r, tmp_path / "a.pdf")
+    build_report(typed(r), tmp_path / "a.pdf")
     data = (tmp_path / "a.pdf").read_bytes()
     assert b"/CreationDate (D:20310517000000+00'00')" in data
     assert b"/ModDate (D:20310517000000+00'00')" in data
-    build_report(r, tmp_path / "b.pdf")
+    build_report(typed(r), tmp_path / "b.pdf")
     assert (tmp_path / "b.pdf").read_bytes() == data
     assert pdf_date("not a date") == "D:20000101000000+00'00'"
     assert pdf_date("2031-05-17T10:20:30+02:00") == "D:20310517082030+00'00'"
 
 
 def test_chart_note_names_the_ratios_plotted() -> None:
-    def opt(r: float) -> dict[str, Any]:
-        return {"ratio": r}
+    def opt(r: float) -> Any:
+        return SimpleNamespace(ratio=r)  # ratio_note reads nothing else of a case
 
     same = {("GFRP", "external"): [opt(0.5), opt(1.5)], ("CFRP", "centred"): [opt(1.5), opt(0.5)]}
     assert ratio_note(same) == "ρ = 0.5, 1.5 ‰ along each line"
@@ -118,13 +123,13 @@ def test_chart_note_names_the_ratios_plotted() -> None:
 def test_capacity_shown_agrees_with_the_verdict(results: dict[str, Any]) -> None:
     r = copy.deepcopy(results)
     target = float(r["model"]["target"])
-    case = tb.ranked_options(r)[0]
+    case = _first_option(r)
     case["capacity_demand"] = target * 0.997
     case["meets_target"] = False
     case["lower_bound"] = False
     for rec in case["records"]:
         rec["collapse_multiplier"] = rec["collapse_multiplier"] or 1.0
-    row = next(row for row in tb.ranking_table(r).rows if row[1] == case["name"])
+    row = next(row for row in tb.ranking_table(typed(r)).rows if row[1] == case["name"])
     assert float(row[11]) < target and row[12] == "no"
 
 
@@ -151,26 +156,29 @@ def test_names_and_codes_wrap_inside_their_cells(results: dict[str, Any]) -> Non
                 return t
         raise AssertionError(header)
 
-    ranking = table_with(sections.options(results), "position")
+    ranking = table_with(sections.options(typed(results)), "position")
     for row in ranking._cellvalues[1:]:
         assert isinstance(row[2], Paragraph) and isinstance(row[3], Paragraph)
-    compliance = table_with(sections.seismic(results), "clause")
+    compliance = table_with(sections.seismic(typed(results)), "clause")
     for row in compliance._cellvalues[1:]:
         assert isinstance(row[0], Paragraph) and isinstance(row[1], Paragraph)
 
 
 @pytest.mark.parametrize(
-    ("rule", "said"),
+    ("n_records", "rule", "said"),
     [
-        ("mean of the records", "the mean over the records"),
-        ("least favourable record (fewer than 7 records)", "the least favourable record"),
+        (7, "mean of the records", "the mean over the records"),
+        (3, "least favourable record (fewer than 7 records)", "the least favourable record"),
     ],
 )
 def test_summary_names_the_statistic_it_shows(
-    results: dict[str, Any], rule: str, said: str
+    results: dict[str, Any], n_records: int, rule: str, said: str
 ) -> None:
+    """The design statistic follows from the number of records (EC8 §4.3.3.4.3: the mean
+    with 7 or more), not from the prose of model.design_value."""
     r = copy.deepcopy(results)
+    r["records"] = r["records"][:n_records]
     r["model"]["design_value"] = rule
-    text = " ".join(story_text(build_story(r)).split())
+    text = " ".join(story_text(build_story(typed(r))).split())
     sentence = next(s for s in text.split("The wall as it is.")[1:])[:300]
     assert said in sentence and "mean ground acceleration" not in sentence

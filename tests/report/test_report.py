@@ -17,14 +17,28 @@ from frp_assess.cli import main
 from frp_assess.errors import InputError
 from frp_assess.report import build_report, build_story, load_results
 from frp_assess.report import tables as tb
+from frp_assess.results.json_io import from_data, from_json
+from frp_assess.results.model import AssessmentResult
 
 DATA = Path(__file__).with_name("data") / "results.json"
 REPORT_PKG = Path(tb.__file__).parent
 
 
-@pytest.fixture(scope="module")
-def results() -> dict[str, Any]:
+def raw() -> dict[str, Any]:
+    """The fixture as plain JSON values, to edit before :func:`typed`."""
     return json.loads(DATA.read_text(encoding="utf-8"))
+
+
+def typed(data: dict[str, Any]) -> AssessmentResult:
+    """Plain JSON values (an edited fixture) as the typed results."""
+    result = from_data(AssessmentResult, data)
+    assert isinstance(result, AssessmentResult)
+    return result
+
+
+@pytest.fixture(scope="module")
+def results() -> AssessmentResult:
+    return from_json(DATA.read_text(encoding="utf-8"), file=str(DATA))
 
 
 @pytest.fixture
@@ -36,7 +50,7 @@ def results_dir(tmp_path: Path) -> Path:
 
 
 @pytest.fixture(scope="module")
-def built_pdf(results: dict[str, Any], tmp_path_factory: pytest.TempPathFactory) -> Path:
+def built_pdf(results: AssessmentResult, tmp_path_factory: pytest.TempPathFactory) -> Path:
     out = tmp_path_factory.mktemp("pdf") / "report.pdf"
     build_report(results, out)
     return out
@@ -68,11 +82,11 @@ def story_text(story: list[Any]) -> str:
     return "\n".join(parts)
 
 
-def test_fixture_is_the_contract_shape(results: dict[str, Any]) -> None:
-    assert results["schema_version"] == 1
-    assert len(results["cases"]) == 19
-    assert results["cases"][0]["material"] is None
-    assert {c["rank"] for c in results["cases"][1:]} == set(range(1, 19))
+def test_fixture_is_the_contract_shape(results: AssessmentResult) -> None:
+    assert results.schema_version == 1
+    assert len(results.cases) == 19
+    assert results.cases[0].material is None
+    assert {c.rank for c in results.cases[1:]} == set(range(1, 19))
 
 
 def test_pdf_builds_with_embedded_dejavu(built_pdf: Path) -> None:
@@ -83,46 +97,46 @@ def test_pdf_builds_with_embedded_dejavu(built_pdf: Path) -> None:
     assert not list(built_pdf.parent.glob(".*.tmp"))  # the temp file was renamed
 
 
-def test_two_builds_are_byte_identical(results: dict[str, Any], tmp_path: Path) -> None:
+def test_two_builds_are_byte_identical(results: AssessmentResult, tmp_path: Path) -> None:
     a, b = tmp_path / "a" / "report.pdf", tmp_path / "b" / "report.pdf"
     build_report(results, a)
     build_report(copy.deepcopy(results), b)
     assert a.read_bytes() == b.read_bytes()
 
 
-def test_build_replaces_existing_file(results: dict[str, Any], tmp_path: Path) -> None:
+def test_build_replaces_existing_file(results: AssessmentResult, tmp_path: Path) -> None:
     out = tmp_path / "report.pdf"
     out.write_bytes(b"old")
     build_report(results, out)
     assert out.read_bytes().startswith(b"%PDF")
 
 
-def test_ranking_rows_equal_results(results: dict[str, Any]) -> None:
+def test_ranking_rows_equal_results(results: AssessmentResult) -> None:
     data = tb.ranking_table(results)
     assert len(data.header) == 13 and len(data.rows) == 19
     assert data.rows[0][1] == "Unreinforced" and data.rows[0][0] == "—"
-    by_name = {c["name"]: c for c in results["cases"]}
+    by_name = {c.name: c for c in results.cases}
     ranks = [int(r[0]) for r in data.rows[1:]]
     assert ranks == sorted(ranks) == list(range(1, 19))
     for row in data.rows:
         c = by_name[row[1]]
-        lb = "≥ " if c.get("lower_bound") else ""
-        assert row[5] == f"{c['frp_mass_per_m']:.1f}"
-        assert row[6] == f"{c['frp_mass']:.1f}"
-        assert row[7] == f"{c['frp_cost']:,.0f}"
-        assert row[8] == lb + f"{c['mean_a_dyn']:.3f}"
-        assert row[9] == lb + f"{c['mean_q']:.2f}"
-        assert row[10] == lb + f"{c['improvement']:.2f}"
-        assert row[11] == lb + f"{c['capacity_demand']:.2f}"
-        assert row[12] == ("yes" if c["meets_target"] else "no")
+        lb = "≥ " if c.lower_bound else ""
+        assert row[5] == f"{c.frp_mass_per_m:.1f}"
+        assert row[6] == f"{c.frp_mass:.1f}"
+        assert row[7] == f"{c.frp_cost:,.0f}"
+        assert row[8] == lb + f"{c.mean_a_dyn:.3f}"
+        assert row[9] == lb + f"{c.mean_q:.2f}"
+        assert row[10] == lb + f"{c.improvement:.2f}"
+        assert row[11] == lb + f"{c.capacity_demand:.2f}"
+        assert row[12] == ("yes" if c.meets_target else "no")
     assert any(r[8].startswith("≥ ") for r in data.rows)  # the fixture has a lower bound
 
 
-def test_story_shows_user_text_as_typed(results: dict[str, Any]) -> None:
+def test_story_shows_user_text_as_typed(results: AssessmentResult) -> None:
     text = story_text(build_story(results))
-    assert results["project"]["name"] in text
-    assert results["project"]["notes"] in text
-    assert results["project"]["engineer"] in text
+    assert results.project.name in text
+    assert results.project.notes in text
+    assert results.project.engineer in text
     assert "&lt;" not in text and "&amp;" not in text
     for row in tb.ranking_table(results).rows:
         for cell in row:
@@ -131,7 +145,7 @@ def test_story_shows_user_text_as_typed(results: dict[str, Any]) -> None:
 
 @pytest.mark.skipif(shutil.which("pdftotext") is None, reason="poppler-utils not installed")
 def test_pdf_text_contains_name_and_ranking_numbers(
-    results: dict[str, Any], built_pdf: Path
+    results: AssessmentResult, built_pdf: Path
 ) -> None:
     text = subprocess.run(
         ["pdftotext", "-enc", "UTF-8", str(built_pdf), "-"],
@@ -139,7 +153,7 @@ def test_pdf_text_contains_name_and_ranking_numbers(
         check=True,
         text=True,
     ).stdout
-    assert results["project"]["name"] in text
+    assert results.project.name in text
     assert "page 1 of " in text
     for sym in ("θ", "α", "ρ", "ε", "‰", "²", "³"):
         assert sym in text
@@ -149,14 +163,14 @@ def test_pdf_text_contains_name_and_ranking_numbers(
             assert cell.removeprefix("≥ ") in words, cell
 
 
-def test_null_multiplier_is_no_collapse(results: dict[str, Any]) -> None:
-    case = next(c for c in results["cases"] if c.get("lower_bound"))
+def test_null_multiplier_is_no_collapse(results: AssessmentResult) -> None:
+    case = next(c for c in results.cases if c.lower_bound)
     rows = tb.case_records_table(case).rows
     nc = [r for r in rows if r[2] == "no collapse ≤ C_max"]
     assert len(nc) == 1 and nc[0][3] == "—" and nc[0][4] == "—"
 
 
-def test_summary_table_recommended_and_alternatives(results: dict[str, Any]) -> None:
+def test_summary_table_recommended_and_alternatives(results: AssessmentResult) -> None:
     rows = tb.summary_table(results).rows
     assert [r[0] for r in rows] == [
         "existing",
@@ -165,20 +179,20 @@ def test_summary_table_recommended_and_alternatives(results: dict[str, Any]) -> 
         "alternative 2",
         "alternative 3",
     ]
-    assert rows[1][1] == results["recommended"]
+    assert rows[1][1] == results.recommended
 
 
-def test_summary_table_when_no_retrofit_is_needed(results: dict[str, Any]) -> None:
+def test_summary_table_when_no_retrofit_is_needed(results: AssessmentResult) -> None:
     """If the unreinforced wall meets the target, the cheapest option is not called
     'recommended' (the summary says no retrofit is needed)."""
-    r = copy.deepcopy(results)
+    r = raw()
     r["cases"][0]["meets_target"] = True
-    rows = tb.summary_table(r).rows
+    rows = tb.summary_table(typed(r)).rows
     assert rows[1][0] == "cheapest (optional)" and rows[1][1] == r["recommended"]
 
 
-def _variant(results: dict[str, Any], kind: str) -> dict[str, Any]:
-    r = copy.deepcopy(results)
+def _variant(kind: str) -> AssessmentResult:
+    r = raw()
     if kind == "no-recommendation":
         r["recommended"] = None
         for c in r["cases"]:
@@ -202,7 +216,7 @@ def _variant(results: dict[str, Any], kind: str) -> dict[str, Any]:
     elif kind == "linear-few-records":
         r["model"]["design_value"] = "least favourable record (fewer than 7 records)"
         r["records"] = r["records"][:3]
-    return r
+    return typed(r)
 
 
 @pytest.mark.parametrize(
@@ -215,8 +229,8 @@ def _variant(results: dict[str, Any], kind: str) -> dict[str, Any]:
         "linear-few-records",
     ],
 )
-def test_variants_build(results: dict[str, Any], tmp_path: Path, kind: str) -> None:
-    r = _variant(results, kind)
+def test_variants_build(tmp_path: Path, kind: str) -> None:
+    r = _variant(kind)
     build_report(r, tmp_path / "report.pdf")
     assert (tmp_path / "report.pdf").read_bytes().startswith(b"%PDF")
     if kind == "markup-in-names":
@@ -225,7 +239,7 @@ def test_variants_build(results: dict[str, Any], tmp_path: Path, kind: str) -> N
         assert "site <A&B> T_B" in text
 
 
-def test_load_results_roundtrip(results_dir: Path, results: dict[str, Any]) -> None:
+def test_load_results_roundtrip(results_dir: Path, results: AssessmentResult) -> None:
     assert load_results(results_dir) == results
 
 

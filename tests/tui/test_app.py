@@ -13,6 +13,7 @@ from textual.widgets import DataTable, Input, Select, Static, TabbedContent, Tab
 from frp_assess.api import CACHE_DIR, default_out_dir, run_assessment, template_text
 from frp_assess.assess.from_project import inputs_from_project
 from frp_assess.config import load_project, load_project_text
+from frp_assess.results.json_io import from_json
 from frp_assess.tui.app import FrpAssessApp
 from frp_assess.tui.help import HelpScreen
 from frp_assess.tui.interventions import InterventionsEditor
@@ -176,8 +177,8 @@ def test_run_to_the_end_matches_batch_mode(small_project: Path, tmp_path: Path):
             await pilot.press("f9")
             await settle(pilot, lambda: app.focused is table)
             await pilot.press("right", "right", "right", "s")  # by FRP mass
-            assert [app.outcome.results["cases"][i]["frp_mass"] for i in table.order] == sorted(
-                c["frp_mass"] for c in app.outcome.results["cases"]
+            assert [app.outcome.results.cases[i].frp_mass for i in table.order] == sorted(
+                c.frp_mass for c in app.outcome.results.cases
             )
             await pilot.press("enter")
             results_tabs = app.query_one("#results-tabs", TabbedContent)
@@ -186,8 +187,8 @@ def test_run_to_the_end_matches_batch_mode(small_project: Path, tmp_path: Path):
             shown = plain(app.query_one("#case-summary", Static))
             assert "scatter over the records: median" in shown and "fragility" in shown
             records = app.query_one("#records-table", DataTable)
-            case = app.outcome.results["cases"][table.order[table.cursor_row]]
-            assert str(records.get_row_at(0)[5]) == str(len(case["records"][0]["curve"]))
+            case = app.outcome.results.cases[table.order[table.cursor_row]]
+            assert str(records.get_row_at(0)[5]) == str(len(case.records[0].curve))
             await pilot.press("f10")
             await after_workers(pilot, lambda: history_shown(app))
             assert "under art-" in plain(app.query_one("#hist-info", Static))
@@ -198,16 +199,12 @@ def test_run_to_the_end_matches_batch_mode(small_project: Path, tmp_path: Path):
     inputs = inputs_from_project(loaded.project, loaded.base_dir, small_project.name)
     batch, _ = run_assessment(inputs, tmp_path / "batch", pdf=False, jobs=1)
     tui = got["results"]
-    assert set(got["names"]) == {c["name"] for c in batch["cases"]}
-    assert got["names"][0] == batch["recommended"]
-    for a, b in zip(tui["cases"], batch["cases"], strict=True):
-        assert a["name"] == b["name"]
-        assert a["records"] == b["records"]
-        for key in ("design_a_dyn", "capacity_demand", "improvement", "frp_mass", "rank"):
-            assert a[key] == b[key]
+    assert set(got["names"]) == {c.name for c in batch.cases}
+    assert got["names"][0] == batch.recommended
+    assert tui.cases == batch.cases
     out = default_out_dir(small_project)
     on_disk = json.loads((out / "results.json").read_text())
-    assert on_disk["cases"] == json.loads(json.dumps(tui["cases"]))
+    assert from_json((out / "results.json").read_text()).cases == tui.cases
     # the assessment's 9 IDAs and those of the model-convention variants of the best option
     variants = len(on_disk["sensitivity"]["rows"]) - 1  # the first row is a cached case
     assert len(list((out / CACHE_DIR).glob("*.json"))) == 9 + variants * len(on_disk["records"])
@@ -407,7 +404,8 @@ def test_opening_a_project_shows_its_last_run(small_project: Path):
         async with app.run_test(size=SIZE) as pilot:
             await after_workers(pilot, lambda: app.outcome is not None)
             assert app.outcome.stats.computed == 0 and not app.running
-            assert app.outcome.results["cases"] == json.loads(json.dumps(stored["cases"]))
+            assert app.outcome.results.cases == stored.cases
+            assert app.outcome.results.created == "2026-01-02"
             assert app.query_one(RankingTable).row_count == 3
             await pilot.press("f10")
             await after_workers(pilot, lambda: history_shown(app))

@@ -7,12 +7,10 @@ be tested without a terminal.  Everything goes through the application API
 
 from __future__ import annotations
 
-import json
 import threading
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 
@@ -31,6 +29,8 @@ from frp_assess.config import Project, dump_project, load_project_text
 from frp_assess.config.yaml_update import update_project_text
 from frp_assess.errors import Cancelled, InputError
 from frp_assess.io_utils import atomic_write_text
+from frp_assess.results.json_io import from_json
+from frp_assess.results.model import AssessmentResult
 from frp_assess.tui.core.progress import CaseCount, CaseProgress
 
 
@@ -59,7 +59,7 @@ Emit = Callable[[RunEvent], None]
 class RunOutcome:
     """A finished run: what the results, the plots and the history viewer need."""
 
-    results: dict[str, Any]
+    results: AssessmentResult
     seismic: SeismicInput
     inputs: AssessmentInputs
     out_dir: Path
@@ -138,8 +138,8 @@ def load_previous(
     """
     stored = Path(out_dir) / "results.json"
     try:
-        created = json.loads(stored.read_text(encoding="utf-8")).get("created")
-    except (OSError, ValueError, AttributeError):
+        created = from_json(stored.read_text(encoding="utf-8"), file=str(stored)).created
+    except (OSError, UnicodeDecodeError, InputError):  # none, or not readable as this version
         return None
     inputs = inputs_from_project(project, base_dir, input_file)
     seismic = prepare_records(inputs)
@@ -245,7 +245,7 @@ def case_history(
     n = h.computed
     bars = model.rebars
     return HistoryData(
-        case=outcome.results["cases"][case_index]["name"],
+        case=outcome.results.cases[case_index].name,
         record=rec.name,
         multiplier=float(multiplier),
         time=h.time[:n],

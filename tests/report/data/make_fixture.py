@@ -4,8 +4,10 @@ The numbers are plausible (a 0.40 × 3.0 × 6.0 m one-sided solid-brick wall, NT
 7 artificial records, the unreinforced wall and 18 retrofit options) and internally consistent
 (q = a_dyn / a_RM, capacity/demand = mean a_dyn / a_g·S, improvement, masses and costs follow
 the formulas of the tool), but they are NOT the output of an analysis: nothing here was
-integrated. Regenerate with ``python tests/report/data/make_fixture.py``; the file is committed
-so that the tests need neither this script nor the dynamics.
+integrated. Regenerate with ``PYTHONPATH=. python3 tests/report/data/make_fixture.py`` (from
+the repository root); it is written through the typed model (:mod:`frp_assess.results`), and
+``tests/report/test_fixture.py`` fails when the committed file and this script (or the model)
+disagree.
 """
 
 from __future__ import annotations
@@ -15,6 +17,9 @@ import math
 from pathlib import Path
 
 import numpy as np
+
+from frp_assess.results.json_io import from_data, to_json
+from frp_assess.results.model import AssessmentResult
 
 G = 9.80665
 B, H, L = 0.40, 3.0, 6.0
@@ -72,7 +77,8 @@ def ntc_spectrum(T: np.ndarray, ag: float, F0: float, tc_star: float) -> tuple:
     return se, a, tb, tc, td
 
 
-def main() -> None:
+def fixture_text() -> str:
+    """The fixture's JSON text, written by :func:`frp_assess.results.json_io.to_json`."""
     rng = np.random.default_rng(20261122)
     alpha = math.atan(B / H)
     R = 0.5 * math.hypot(B, H)
@@ -106,6 +112,26 @@ def main() -> None:
     z = (z - z.mean()) / z.std()
     urm_a = 0.194 * (1 + 0.12 * z)
 
+    def scatter(values: list[float], censored: list[bool]) -> dict:
+        """Record statistics and a lognormal fitted to the collapse values (moments of ln)."""
+        v = np.asarray(values)
+        exact = np.log([x for x, c in zip(values, censored, strict=True) if not c])
+        median, beta = float(np.exp(exact.mean())), float(exact.std(ddof=1))
+        p = 0.5 * math.erfc(-math.log(demand / median) / (beta * math.sqrt(2)))
+        return {
+            "median_a_dyn": float(np.median(v)),
+            "std_a_dyn": float(v.std(ddof=1)),
+            "cov": float(v.std(ddof=1) / v.mean()),
+            "least_favourable_record": records[int(np.argmin(v))]["name"],
+            "records_without_collapse": sum(censored),
+            "fragility": {
+                "median": median,
+                "beta": beta,
+                "method": "censored-mle" if any(censored) else "mle",
+                "p_collapse_at_demand": p,
+            },
+        }
+
     def case(name, mat, pos, ratio, a_dyn, K, theta_max, nocollapse=()):
         recs = []
         bound = []
@@ -117,20 +143,25 @@ def main() -> None:
                         "record": r["name"],
                         "pga": r["pga"],
                         "collapse_multiplier": None,
+                        "survivor_multiplier": MAX_MULT * c0,
                         "a_dyn": None,
                         "q": None,
+                        "curve": [[c0, False, 0.4], [MAX_MULT * c0, False, 0.9]],
                     }
                 )
                 bound.append(MAX_MULT * c0 * r["pga"])
             else:
                 a = float(a_dyn[j])
+                c = a / r["pga"]
                 recs.append(
                     {
                         "record": r["name"],
                         "pga": r["pga"],
-                        "collapse_multiplier": a / r["pga"],
+                        "collapse_multiplier": c,
+                        "survivor_multiplier": c / 1.005,
                         "a_dyn": a,
                         "q": a / a_rm,
+                        "curve": [[c / 1.005, False, 0.8], [c, True, math.pi / 2 / alpha]],
                     }
                 )
                 bound.append(a)
@@ -160,6 +191,7 @@ def main() -> None:
             "lower_bound": bool(nocollapse),
             "capacity_demand": mean / demand,
             "improvement": 1.0,
+            "scatter": scatter(bound, [j in nocollapse for j in range(len(records))]),
             "frp_mass_per_m": m_m,
             "frp_mass": m,
             "frp_cost": cost,
@@ -222,10 +254,17 @@ def main() -> None:
             broken[k:] = True
         strain = np.where(broken, 0.0, B * np.sin(th / 2) / H)
         mult = gov_rec["collapse_multiplier"]
+        ruptures = [{"time": float(t[k]), "side": 1}] if collapse else []
         return {
             "label": "collapse" if collapse else "just below",
             "multiplier": mult if collapse else mult / 1.005,
             "collapsed": collapse,
+            "fate": "fell" if collapse else "at rest",
+            "decided_time": float(t[-1]),
+            "peak_rotation_ratio": float(np.max(th) / alpha),
+            "peak_strain": float(np.max(strain)),
+            "ruptures": ruptures,
+            "impacts": 31 if collapse else 40,
             "time": [round(float(x), 6) for x in t],
             "theta_over_alpha": [round(float(x), 8) for x in th / alpha],
             "strain": [round(float(x), 10) for x in strain],
@@ -291,6 +330,11 @@ def main() -> None:
             "collapse": "end-of-record",
             "strain_factor": 0.5,
             "free_vibration_tail": 0.0,
+            "integration": {
+                "method": "Dormand-Prince 5(4), local error control",
+                "tolerance": 1e-8,
+                "verify": False,
+            },
             "ida": {"step_ratio": 1.10, "tolerance": 0.005, "max_multiplier": MAX_MULT},
             "target": 1.0,
             "design_value": "mean of the records",
@@ -398,6 +442,7 @@ def main() -> None:
         "ranking_rule": "Options meeting the target (capacity/demand >= 1) first, cheapest first "
         "(then lightest); then the others by capacity/demand, highest first.",
         "recommended": recommended,
+        "retrofit_required": not cases[0]["meets_target"],
         "design": design,
         "governing": {
             "case": best["name"],
@@ -405,10 +450,35 @@ def main() -> None:
             "runs": [history(True), history(False)],
             "rupture_strain": eps_max,
         },
+        "numerical_check": None,
+        "input_warnings": [],
+        "input_code_compliant": True,
+        "sensitivity": {
+            "case": best["name"],
+            "rows": [
+                {
+                    "variant": v,
+                    "design_a_dyn": best["design_a_dyn"] * f,
+                    "capacity_demand": best["capacity_demand"] * f,
+                    "lower_bound": False,
+                }
+                for v, f in (
+                    ("as assessed", 1.0),
+                    ("restitution: velocity", 0.93),
+                    ("E -10% (41.4 GPa)", 0.97),
+                    ("E +10% (50.6 GPa)", 1.02),
+                )
+            ],
+        },
     }
+    # through the typed model: a field the model lacks or requires fails here
+    return to_json(from_data(AssessmentResult, json.loads(json.dumps(results))))
+
+
+def main() -> None:
     out = Path(__file__).with_name("results.json")
-    out.write_text(json.dumps(results, indent=1, ensure_ascii=False) + "\n", encoding="utf-8")
-    print(f"wrote {out} ({out.stat().st_size / 1e3:.0f} kB); recommended: {recommended}")
+    out.write_text(fixture_text(), encoding="utf-8")
+    print(f"wrote {out} ({out.stat().st_size / 1e3:.0f} kB)")
 
 
 if __name__ == "__main__":

@@ -1,0 +1,165 @@
+"""results.json to and from :class:`~frp_assess.results.model.AssessmentResult`.
+
+One generic pair driven by the dataclasses' type hints: a new dataclass or field in
+:mod:`frp_assess.results.model` needs no change here.  Supported annotations: dataclasses,
+``tuple[X, ...]``, fixed ``tuple[X, Y]``, ``list[X]``, ``dict[str, X]``, unions (``X | None``,
+``str | float``: the first alternative that fits),
+``float``/``int``/``str``/``bool`` and ``object`` (any JSON value, kept as read).  A field
+with a default may be missing from the file; an unknown key or a value of the wrong type is
+an :class:`~frp_assess.errors.InputError` naming the file and the key path.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import json
+import types
+import typing
+from typing import Any
+
+from frp_assess.errors import InputError
+from frp_assess.results.model import SCHEMA_VERSION, AssessmentResult
+
+
+def to_json(obj: object) -> str:
+    """``obj`` (a results dataclass) as JSON text: keys in field order, one-space indent,
+    UTF-8 text kept, NaN/inf refused, a final newline."""
+    return json.dumps(to_data(obj), indent=1, ensure_ascii=False, allow_nan=False) + "\n"
+
+
+def to_data(obj: object) -> Any:
+    """``obj`` as plain JSON values (dicts, lists, numbers, text, None)."""
+    if dataclasses.is_dataclass(obj) and not isinstance(obj, type):
+        return {f.name: to_data(getattr(obj, f.name)) for f in dataclasses.fields(obj)}
+    if isinstance(obj, (tuple, list)):
+        return [to_data(x) for x in obj]
+    if isinstance(obj, dict):
+        return {str(k): to_data(v) for k, v in obj.items()}
+    return obj
+
+
+def from_json(text: str, *, file: str | None = None) -> AssessmentResult:
+    """Read results.json text; ``file`` names it in errors.  A ``schema_version`` other than
+    :data:`~frp_assess.results.model.SCHEMA_VERSION` is refused (written by another version
+    of frp-assess: run the project again)."""
+    try:
+        data = json.loads(text, parse_constant=_no_constant)
+    except json.JSONDecodeError as exc:
+        raise InputError(f"invalid JSON: {exc.msg}", file=file, line=exc.lineno) from None
+    except RecursionError:
+        raise InputError("invalid JSON: nested too deeply", file=file) from None
+    except ValueError as exc:  # NaN, Infinity
+        raise InputError(f"invalid JSON: {exc}", file=file) from None
+    if not isinstance(data, dict):
+        raise InputError("not a results object", file=file)
+    version = data.get("schema_version")
+    if version != SCHEMA_VERSION:
+        raise InputError(
+            f"unsupported schema_version {version!r} (this frp-assess reads "
+            f"{SCHEMA_VERSION}); run the project again to rewrite it",
+            file=file,
+            key="schema_version",
+        )
+    result = from_data(AssessmentResult, data, file=file)
+    assert isinstance(result, AssessmentResult)
+    return result
+
+
+def from_data(tp: Any, value: Any, *, file: str | None = None, key: str = "") -> Any:
+    """``value`` (plain JSON) as the type ``tp``; raises InputError at ``key``."""
+    return _convert(tp, value, file, key)
+
+
+@functools.cache
+def _hints(cls: type) -> dict[str, Any]:
+    return typing.get_type_hints(cls)
+
+
+def _fail(file: str | None, key: str, message: str) -> InputError:
+    return InputError(message, file=file, key=key or None)
+
+
+def _convert(tp: Any, value: Any, file: str | None, key: str) -> Any:
+    origin = typing.get_origin(tp)
+    args = typing.get_args(tp)
+    if tp is object or tp is Any:
+        return value
+    if origin in (types.UnionType, typing.Union):
+        if value is None and type(None) in args:
+            return None
+        inner = [a for a in args if a is not type(None)]
+        for alternative in inner[:-1]:
+            try:
+                return _convert(alternative, value, file, key)
+            except InputError:
+                continue
+        return _convert(inner[-1], value, file, key)
+    if dataclasses.is_dataclass(tp):
+        return _dataclass(tp, value, file, key)
+    if origin is tuple or origin is list:
+        if not isinstance(value, list):
+            raise _fail(file, key, f"expected an array, found {_kind(value)}")
+        if origin is tuple and not (len(args) == 2 and args[1] is Ellipsis):
+            if len(value) != len(args):
+                raise _fail(file, key, f"expected {len(args)} items, found {len(value)}")
+            return tuple(
+                _convert(a, v, file, f"{key}[{i}]")
+                for i, (a, v) in enumerate(zip(args, value, strict=True))
+            )
+        items = [_convert(args[0], v, file, f"{key}[{i}]") for i, v in enumerate(value)]
+        return tuple(items) if origin is tuple else items
+    if origin is dict:
+        if not isinstance(value, dict):
+            raise _fail(file, key, f"expected an object, found {_kind(value)}")
+        return {k: _convert(args[1], v, file, _join(key, k)) for k, v in value.items()}
+    return _scalar(tp, value, file, key)
+
+
+def _dataclass(cls: Any, value: Any, file: str | None, key: str) -> Any:
+    if not isinstance(value, dict):
+        raise _fail(file, key, f"expected an object, found {_kind(value)}")
+    hints = _hints(cls)
+    fields = {f.name: f for f in dataclasses.fields(cls)}
+    unknown = [k for k in value if k not in fields]
+    if unknown:
+        raise _fail(file, _join(key, unknown[0]), "unknown key")
+    kwargs = {}
+    for name, f in fields.items():
+        if name in value:
+            kwargs[name] = _convert(hints[name], value[name], file, _join(key, name))
+        elif f.default is dataclasses.MISSING and f.default_factory is dataclasses.MISSING:
+            raise _fail(file, _join(key, name), "missing")
+    return cls(**kwargs)
+
+
+def _scalar(tp: Any, value: Any, file: str | None, key: str) -> Any:
+    if tp is bool:
+        ok = isinstance(value, bool)
+    elif tp is int:
+        ok = isinstance(value, int) and not isinstance(value, bool)
+    elif tp is float:
+        ok = isinstance(value, (int, float)) and not isinstance(value, bool)
+    elif tp is str:
+        ok = isinstance(value, str)
+    else:
+        raise TypeError(f"unsupported annotation {tp!r}")
+    if not ok:
+        raise _fail(file, key, f"expected {tp.__name__}, found {_kind(value)}")
+    return value
+
+
+def _no_constant(name: str) -> None:
+    raise ValueError(f"{name} is not a JSON number")
+
+
+def _join(key: str, name: str) -> str:
+    return f"{key}.{name}" if key else name
+
+
+def _kind(value: Any) -> str:
+    if value is None:
+        return "null"
+    return {dict: "an object", list: "an array", str: "text", bool: "true/false"}.get(
+        type(value), "a number"
+    )

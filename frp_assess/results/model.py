@@ -1,0 +1,452 @@
+"""The results of an assessment as frozen dataclasses: the definition of results.json.
+
+One class per JSON object of docs/results-json.md; field names equal the JSON keys and are
+declared in the order they are written, so :func:`frp_assess.results.json_io.to_json` of an
+:class:`AssessmentResult` *is* results.json.  Sequences are tuples.  Units (as in the JSON):
+lengths m, angles rad (unless ``_deg``), accelerations g, masses kg, times s, strains [-],
+costs in ``costs.currency``.  A field with a default may be missing from a file (it was added
+later); :data:`SCHEMA_VERSION` changes only when a file of the old version cannot be read
+as this one.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+#: version of the contract written as ``schema_version``; another is refused on reading
+SCHEMA_VERSION = 1
+#: with this many records or more the design a_dyn is their mean, with fewer the least
+#: favourable one (EN 1998-1 §4.3.3.4.3, NTC 2018 §7.3.5)
+MEAN_OF_RECORDS_FROM = 7
+#: the name of the unreinforced wall's case
+UNREINFORCED = "Unreinforced"
+
+
+@dataclass(frozen=True)
+class Software:
+    """The program that wrote the file."""
+
+    name: str
+    version: str
+
+
+@dataclass(frozen=True)
+class ProjectInfo:
+    """Who and where, as typed in the project file (free text)."""
+
+    name: str = ""
+    location: str = ""
+    engineer: str = ""
+    notes: str = ""
+
+
+@dataclass(frozen=True)
+class WallResult:
+    """The wall: thickness, height, length [m]; unit_weight [kN/m³]; alpha [rad] with
+    tan(alpha) = B/H, alpha_deg [°]; R half diagonal [m]; p frequency parameter [rad/s];
+    mass per metre of wall [kg/m]; a_rm = g·tan(alpha) [g]."""
+
+    thickness: float
+    height: float
+    length: float
+    masonry: str | None  #: library key, or None when typed in
+    masonry_description: str | None
+    unit_weight: float
+    mechanism: str  #: one-sided | two-sided
+    alpha: float
+    alpha_deg: float
+    R: float
+    p: float
+    mass: float
+    a_rm: float
+
+
+@dataclass(frozen=True)
+class Integration:
+    """The integrator: local error tolerance [-] (docs/model.md §4.2); ``verify``: the
+    numerical check was computed."""
+
+    method: str
+    tolerance: float
+    verify: bool
+
+
+@dataclass(frozen=True)
+class IdaSettings:
+    """The IDA search: step ratio of the multiplier [-], relative tolerance on the collapse
+    multiplier [-], largest multiplier C_max [-]."""
+
+    step_ratio: float
+    tolerance: float
+    max_multiplier: float
+
+
+@dataclass(frozen=True)
+class ModelSettings:
+    """The model conventions of the run; restitution_ratio is the velocity ratio applied at
+    an impact [-], strain_factor c of eps_max = c·eps_u [-], free_vibration_tail [s], target
+    capacity/demand [-]; design_value says how design_a_dyn is taken (prose)."""
+
+    restitution: str | float  #: energy | velocity, or the coefficient itself [-]
+    restitution_ratio: float
+    rupture: str
+    collapse: str  #: overturning | end-of-record | first-exceedance
+    strain_factor: float
+    free_vibration_tail: float
+    integration: Integration
+    ida: IdaSettings
+    target: float
+    design_value: str
+
+
+@dataclass(frozen=True)
+class MaterialResult:
+    """A bar material used by some case: E [GPa], ultimate strain [-], density [kg/m³],
+    price [currency/kg]."""
+
+    elastic_modulus: float
+    ultimate_strain: float
+    density: float
+    price: float
+    source: str
+
+
+@dataclass(frozen=True)
+class Costs:
+    """Currency of every cost, installation cost per metre of bar [currency/m]."""
+
+    currency: str
+    installation_per_metre: float
+
+
+@dataclass(frozen=True)
+class SpectrumResult:
+    """The elastic spectrum: ag_S = a_g·S [g]; corner periods [s] (None for tables);
+    ``parameters`` as given and derived (numbers, text or lists, by spectrum type)."""
+
+    type: str
+    name: str
+    description: str
+    parameters: dict[str, object]
+    ag_S: float
+    T_B: float | None
+    T_C: float | None
+    T_D: float | None
+
+
+@dataclass(frozen=True)
+class Generator:
+    """How artificial records were generated: duration [s], time step dt [s]."""
+
+    method: str
+    count: int
+    seed: int
+    duration: float
+    dt: float
+
+
+@dataclass(frozen=True)
+class SeismicResult:
+    """The seismic input: t1 reference period of the compliance checks [s]; periods [s];
+    target_sa and mean_sa (mean 5 % spectrum of the records) at ``periods`` [g]."""
+
+    spectrum: SpectrumResult
+    t1: float
+    records_kind: str  #: artificial | recorded
+    generator: Generator | None  #: None for recorded motions
+    scale_factor: float  #: common factor applied to record files (1 for artificial) [-]
+    periods: tuple[float, ...]
+    target_sa: tuple[float, ...]
+    mean_sa: tuple[float, ...]
+
+
+@dataclass(frozen=True)
+class Demand:
+    """The seismic demand: pga = a_g·S [g]."""
+
+    pga: float
+
+
+@dataclass(frozen=True)
+class RecordInfo:
+    """One ground motion: pga [g], duration [s], dt [s], 5 % spectrum ``sa`` at
+    ``seismic.periods`` [g]."""
+
+    name: str
+    source: str
+    pga: float
+    duration: float
+    dt: float
+    scale_factor: float
+    sa: tuple[float, ...]
+
+
+@dataclass(frozen=True)
+class ComplianceCheck:
+    """One spectrum-compatibility check; ``margin`` in ``unit`` ("" = a ratio)."""
+
+    code: str
+    clause: str
+    requirement: str
+    found: str
+    passed: bool
+    margin: float
+    unit: str
+
+
+@dataclass(frozen=True)
+class Compliance:
+    """The record set against the code's spectrum-compatibility checks."""
+
+    passed: bool
+    checks: tuple[ComplianceCheck, ...]
+
+
+@dataclass(frozen=True)
+class CodeCheck:
+    """NTC 2018 / Circolare 2019 §C8.7.1 linear kinematic check of the unreinforced wall:
+    alpha0 load multiplier [-], e_star [-], M_star [kg/m], FC [-], behaviour factor [-],
+    a0_star and demand = a_g·S/q [g], ratio a0_star/demand [-]."""
+
+    alpha0: float
+    e_star: float
+    M_star: float
+    FC: float
+    confidence_factor_level: str
+    behaviour_factor: float
+    a0_star: float
+    demand: float
+    ratio: float
+    passed: bool
+    note: str
+
+
+#: one point of an IDA curve: (multiplier C [-], collapsed, peak |theta|/alpha [-])
+CurvePoint = tuple[float, bool, float]
+
+
+@dataclass(frozen=True)
+class RecordResult:
+    """The IDA of one case under one record: pga [g]; collapse multiplier C [-]; largest
+    multiplier run without collapse [-]; a_dyn = C·pga [g]; q = a_dyn/a_rm [-] (multiplier,
+    a_dyn and q None: no collapse up to C_max); ``curve``: every C the search ran, sorted."""
+
+    record: str
+    pga: float
+    collapse_multiplier: float | None
+    survivor_multiplier: float | None
+    a_dyn: float | None
+    q: float | None
+    curve: tuple[CurvePoint, ...]
+
+
+@dataclass(frozen=True)
+class Fragility:
+    """Lognormal fit to the collapse accelerations: median [g], beta [-], method (mle |
+    censored-mle), P(collapse) at a_g·S [-]."""
+
+    median: float
+    beta: float
+    method: str
+    p_collapse_at_demand: float
+
+
+@dataclass(frozen=True)
+class Scatter:
+    """How far a case's number can be trusted: median and standard deviation of a_dyn over
+    the records [g], CoV [-]; records without collapse enter at C_max·PGA (a lower bound);
+    ``fragility`` None with fewer than 2 distinct collapse values."""
+
+    median_a_dyn: float
+    std_a_dyn: float
+    cov: float
+    least_favourable_record: str
+    records_without_collapse: int
+    fragility: Fragility | None
+
+
+@dataclass(frozen=True)
+class CaseResult:
+    """One case (the unreinforced wall, or a retrofit option).
+
+    ratio [‰]; elastic_modulus [GPa]; ultimate_strain [-]; K restraint stiffness term of
+    Eq. 10 [-]; theta_max rupture rotation [rad]; accelerations (mean/min/design a_dyn) [g];
+    q [-]; capacity_demand = design_a_dyn / demand.pga [-]; improvement = design_a_dyn over
+    that of the unreinforced wall [-]; frp_mass_per_m [kg/m]; frp_mass [kg] and frp_cost
+    [currency] for the whole wall; rank 1 = recommended, None for the unreinforced wall.
+    """
+
+    name: str
+    material: str | None
+    position: str | None
+    ratio: float
+    elastic_modulus: float | None
+    ultimate_strain: float | None
+    K: float
+    theta_max: float | None
+    records: tuple[RecordResult, ...]
+    mean_a_dyn: float
+    min_a_dyn: float
+    mean_q: float
+    design_a_dyn: float
+    lower_bound: bool  #: some record did not collapse up to C_max: a_dyn are lower bounds
+    capacity_demand: float
+    improvement: float
+    scatter: Scatter
+    frp_mass_per_m: float
+    frp_mass: float
+    frp_cost: float
+    meets_target: bool
+    rank: int | None
+
+    @property
+    def is_unreinforced(self) -> bool:
+        """The case without bars."""
+        return self.material is None
+
+
+@dataclass(frozen=True)
+class DesignRow:
+    """Design mode, one (material, position): the smallest ratio meeting the target [‰]
+    (None: none in range), its capacity/demand [-], FRP mass [kg] and cost [currency]."""
+
+    material: str
+    position: str
+    ratio: float | None
+    capacity_demand: float | None
+    frp_mass: float | None
+    frp_cost: float | None
+    message: str
+
+
+@dataclass(frozen=True)
+class Rupture:
+    """A bar broke at ``time`` [s]; ``side`` is the sign of theta then."""
+
+    time: float
+    side: int
+
+
+@dataclass(frozen=True)
+class HistoryRun:
+    """One time history: multiplier [-]; fate fell | at rest | exceeded | standing;
+    decided_time [s]; peak |theta|/alpha [-]; peak strain of an intact acting bar [-];
+    ``time`` [s], ``theta_over_alpha`` [-] and ``strain`` [-] sampled alike."""
+
+    label: str
+    multiplier: float
+    collapsed: bool
+    fate: str
+    decided_time: float | None
+    peak_rotation_ratio: float
+    peak_strain: float
+    ruptures: tuple[Rupture, ...]
+    impacts: int
+    time: tuple[float, ...]
+    theta_over_alpha: tuple[float, ...]
+    strain: tuple[float, ...]
+
+
+@dataclass(frozen=True)
+class Governing:
+    """Time histories of one case under the record failing first, at collapse and just
+    below; rupture_strain eps_max = c·eps_u [-] (None when unreinforced)."""
+
+    case: str
+    record: str
+    runs: tuple[HistoryRun, ...]
+    rupture_strain: float | None
+
+
+@dataclass(frozen=True)
+class NumericalCheckResult:
+    """The verification run (docs/model.md §4.5): tolerances [-]; largest relative change of
+    a collapse multiplier [-] (None when a record collapsed in one run only, then
+    ``fate_changed``), where it was, and how many (case, record) pairs moved."""
+
+    tolerance: float
+    check_tolerance: float
+    max_change: float | None
+    fate_changed: bool
+    case: str
+    record: str
+    changed_pairs: int
+    pairs: int
+
+
+@dataclass(frozen=True)
+class SensitivityRow:
+    """One model convention: design a_dyn [g], capacity/demand [-]."""
+
+    variant: str
+    design_a_dyn: float
+    capacity_demand: float
+    lower_bound: bool
+
+
+@dataclass(frozen=True)
+class Sensitivity:
+    """One case under each model convention."""
+
+    case: str
+    rows: tuple[SensitivityRow, ...]
+
+
+@dataclass(frozen=True)
+class AssessmentResult:
+    """Everything ``frp-assess run`` found: the content of results.json.
+
+    ``cases[0]`` is the unreinforced wall; ``recommended`` names the cheapest option meeting
+    the target (or None); ``governing``, ``design``, ``numerical_check`` and ``sensitivity``
+    are None when not computed.
+    """
+
+    schema_version: int
+    software: Software
+    created: str  #: ISO date of the run
+    input_file: str
+    project: ProjectInfo
+    wall: WallResult
+    model: ModelSettings
+    materials: dict[str, MaterialResult]
+    costs: Costs
+    seismic: SeismicResult
+    demand: Demand
+    records: tuple[RecordInfo, ...]
+    compliance: Compliance
+    code_check: CodeCheck
+    cases: tuple[CaseResult, ...]
+    ranking_rule: str
+    recommended: str | None
+    retrofit_required: bool
+    design: tuple[DesignRow, ...] | None
+    governing: Governing | None
+    numerical_check: NumericalCheckResult | None
+    input_warnings: tuple[str, ...]
+    input_code_compliant: bool
+    sensitivity: Sensitivity | None
+
+    @property
+    def urm(self) -> CaseResult:
+        """The unreinforced wall (the first case by contract)."""
+        return self.cases[0]
+
+    @property
+    def design_is_mean(self) -> bool:
+        """design_a_dyn is the mean over the records (≥ MEAN_OF_RECORDS_FROM of them), else
+        the least favourable record."""
+        return len(self.records) >= MEAN_OF_RECORDS_FROM
+
+    def case(self, name: str | None) -> CaseResult | None:
+        """The case called ``name``, or None."""
+        return next((c for c in self.cases if c.name == name), None)
+
+    @property
+    def options(self) -> tuple[CaseResult, ...]:
+        """The retrofit options (every case but the unreinforced wall)."""
+        return tuple(c for c in self.cases if not c.is_unreinforced)
+
+    @property
+    def ranked_options(self) -> tuple[CaseResult, ...]:
+        """The options by rank (1 first); unranked ones last, in file order."""
+        return tuple(sorted(self.options, key=lambda c: (c.rank is None, c.rank or 0)))
