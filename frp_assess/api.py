@@ -46,9 +46,6 @@ from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_write_text
 from frp_assess.motions import Record, write_at2
 from frp_assess.output_set import FolderLock, staged_set
-from frp_assess.study import run as study_run
-from frp_assess.study.run import Executor, StudyStats
-from frp_assess.study.schema import StudyFile
 from frp_assess.results.csv_files import results_csv, spectra_csv
 from frp_assess.results.json_io import to_json
 from frp_assess.results.model import (
@@ -58,6 +55,9 @@ from frp_assess.results.model import (
     Sensitivity,
     SensitivityRow,
 )
+from frp_assess.study import run as study_run
+from frp_assess.study.run import Executor, StudyStats
+from frp_assess.study.schema import StudyFile
 from frp_assess.text_safety import plain
 
 #: progress(stage, done, total); stages: "records", "ida", "design", "writing"

@@ -29,7 +29,6 @@ INTERNAL: dict[str, set[str]] = {
     "dynamics": {"errors", "motions"},
     "motions": {"errors", "io_utils"},
     "config": {"errors", "io_utils", "dynamics", "motions"},
-    "results": set(),  # plain dataclasses of results.json (standard library only)
     "assess": {
         "", "errors", "io_utils", "numbers", "text_safety", "dynamics", "motions", "config",
         "results",

@@ -187,21 +187,21 @@ def test_governing_histories_and_missing_idas_use_the_floor_motion(tmp_path: Pat
     inp = inputs(TOP)
     runner = IdaRunner(RECORDS, inp, IdaCache(tmp_path / CACHE_DIR), jobs=1)
     results = runner.run(inp.case_models())
-    cases = [{"name": n} for n in inp.case_names()]
-    gov = governing_histories(inp, cases, RECORDS, results, None)
-    assert gov is not None and gov["case"] == "Unreinforced"
+    cases = [SimpleNamespace(name=n) for n in inp.case_names()]
+    gov = governing_histories(inp, cases, RECORDS, results, None)  # type: ignore[arg-type]
+    assert gov is not None and gov.case == "Unreinforced"
     k = min(range(len(RECORDS)), key=lambda i: results[0][i].collapse_multiplier or math.inf)
-    assert gov["record"] == RECORDS[k].name
-    collapse, below = gov["runs"]
+    assert gov.record == RECORDS[k].name
+    collapse, below = gov.runs
     floor = floor_acceleration(
         RECORDS[k].acc, 0.01, height_building=10.0, storeys=3, wall_base=9.0, period=0.3
     )
     model = inp.model_for(None)
     for run in (collapse, below):
-        direct = model.run(floor, 0.01, run["multiplier"])
-        assert run["collapsed"] == direct.collapsed
-        assert run["peak_rotation_ratio"] == pytest.approx(direct.max_rotation_ratio, rel=1e-12)
-    assert collapse["collapsed"] and not below["collapsed"]
+        direct = model.run(floor, 0.01, run.multiplier)
+        assert run.collapsed == direct.collapsed
+        assert run.peak_rotation_ratio == pytest.approx(direct.max_rotation_ratio, rel=1e-12)
+    assert collapse.collapsed and not below.collapsed
     seismic = SimpleNamespace(records=RECORDS)
     assert missing_idas(inp, seismic, tmp_path) == 0  # type: ignore[arg-type]
     assert missing_idas(inputs(None), seismic, tmp_path) == 4  # type: ignore[arg-type]
@@ -218,7 +218,7 @@ def test_tui_time_history_runs_on_the_floor_motion() -> None:
     outcome = SimpleNamespace(
         inputs=inp,
         seismic=SimpleNamespace(records=RECORDS),
-        results={"cases": [{"name": n} for n in inp.case_names()]},
+        results=SimpleNamespace(cases=[SimpleNamespace(name=n) for n in inp.case_names()]),
     )
     h = case_history(outcome, 1, 0, 0.3)  # type: ignore[arg-type]
     floor = floor_acceleration(
