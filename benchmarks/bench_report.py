@@ -7,12 +7,12 @@ Run: ``python benchmarks/bench_report.py [RESULTS_JSON] [--repeat N]``
 from __future__ import annotations
 
 import argparse
-import json
 import tempfile
 import time
 from pathlib import Path
 
 from frp_assess.report import build_report
+from frp_assess.results.json_io import from_json
 
 DEFAULT = Path(__file__).resolve().parents[1] / "tests" / "report" / "data" / "results.json"
 TARGET_S = 5.0
@@ -23,7 +23,7 @@ def main() -> int:
     ap.add_argument("results", nargs="?", default=str(DEFAULT), help="a results.json")
     ap.add_argument("--repeat", type=int, default=3, help="builds to time (default 3)")
     args = ap.parse_args()
-    results = json.loads(Path(args.results).read_text(encoding="utf-8"))
+    results = from_json(Path(args.results).read_text(encoding="utf-8"))
     times = []
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "report.pdf"
@@ -32,7 +32,7 @@ def main() -> int:
             build_report(results, out)
             times.append(time.perf_counter() - t0)
         size = out.stat().st_size
-    n = len(results["cases"])
+    n = len(results.cases)
     print(
         f"report of {n} cases ({n - 1} options), {size / 1e3:.0f} kB: first build "
         f"{times[0]:.2f} s (fonts registered), best {min(times):.2f} s, target ≤ {TARGET_S} s"
