@@ -5,12 +5,14 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from textual.widgets import Select
+from textual.widgets import Input, Select
 
 from frp_assess.assess.from_project import bar_settings_of
 from frp_assess.config import load_project
 from frp_assess.tui.app import FrpAssessApp
 from frp_assess.tui.core.model import without_paths
+from frp_assess.tui.interventions import InterventionsEditor
+from frp_assess.tui.materials import MaterialsEditor
 from tests.tui.conftest import SMALL, after_workers, run_async, settle
 from tests.tui.test_app import SIZE, type_into
 
@@ -113,3 +115,57 @@ def test_a_run_from_the_tui_uses_the_projects_bars(tmp_path: Path):
             assert [c.ratio for c in app.outcome.results.options] == [1.0, 2.0]
 
     run_async(body)
+
+
+def test_fields_for_pivot_strength_fc_diameter_and_design_strain(tmp_path: Path):
+    """The keys of issue 16 have fields: a file's values show in them, edits reach the project
+    and the save (every value below is away from the schema's default)."""
+    path = tmp_path / "wall.yaml"
+    path.write_text(
+        SMALL.replace("mechanism: one-sided}", "mechanism: one-sided, compressive_strength: 2.4}")
+        + "analysis: {pivot: edge}\ncode_check: {fc_in_ida: false}\n",
+        encoding="utf-8",
+    )
+
+    async def body() -> None:
+        app = FrpAssessApp(path)
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause()
+            q = app.query_one
+            assert q("#f-wall-compressive-strength-control", Input).value == "2.4"
+            assert q("#f-analysis-pivot-control", Select).value == "edge"
+            assert q("#f-code-check-fc-in-ida-control", Select).value is False
+            await type_into(pilot, "#f-wall-compressive-strength-control", "3.5")
+            q("#f-analysis-pivot-control", Select).value = "crushing"
+            q("#f-code-check-fc-in-ida-control", Select).value = True
+            await settle(
+                pilot, lambda: app.project is not None and app.project.code_check.fc_in_ida
+            )
+            # the first option's bar diameter, typed in the Retrofits form
+            editor = q(InterventionsEditor)
+            diameter = next(r for r in editor.form_rows("option") if r.spec.path == ("diameter",))
+            await type_into(pilot, f"#{diameter.control.id}", "12")
+            # GFRP's characteristic strain and fibre, in the Materials form
+            materials = q(MaterialsEditor)
+            assert materials.items[0] == "GFRP" and materials.selected == 0
+            rows = {r.spec.path: r for r in materials.form_rows("material")}
+            await type_into(pilot, f"#{rows[('characteristic_strain',)].control.id}", "0.014")
+            rows[("fibre",)].control.value = "basalt"
+            await settle(
+                pilot,
+                lambda: (
+                    app.project is not None
+                    and app.project.materials.get("GFRP") is not None
+                    and app.project.materials["GFRP"].fibre == "basalt"
+                ),
+            )
+            await pilot.press("ctrl+s")
+            await settle(pilot, lambda: not app.modified())
+
+    run_async(body)
+    saved = load_project(path).project
+    assert saved.wall.compressive_strength == 3.5
+    assert saved.analysis.pivot == "crushing" and saved.code_check.fc_in_ida is True
+    assert saved.interventions[0].diameter == 12.0  # type: ignore[union-attr]
+    gfrp = saved.materials["GFRP"]
+    assert (gfrp.characteristic_strain, gfrp.fibre) == (0.014, "basalt")
