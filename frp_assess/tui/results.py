@@ -1,4 +1,5 @@
-"""The Results tab: ranking (sortable), IDA per record, FRP plot, spectrum compliance.
+"""The Results tab: ranking (sortable), IDA per record, FRP plot, fragility curves, bars as
+built and pivot check, code checks and sensitivity, design mode, spectrum compliance.
 
 Everything is read from the typed results of the run (:mod:`frp_assess.results.model`), as the PDF
 report does.  The ranking (:mod:`frp_assess.tui.ranking_table`): the highlighted row is the
@@ -23,6 +24,15 @@ from frp_assess.tui.core.text import printable
 from frp_assess.tui.literal import literal
 from frp_assess.tui.plots import PlotView, Rule, Series
 from frp_assess.tui.ranking_table import RankingTable
+from frp_assess.tui.result_views import (
+    bars_table,
+    case_details,
+    fragility_plot,
+    fragility_table,
+    kinematic_table,
+    pivot_table,
+    sensitivity_table,
+)
 from frp_assess.tui.tabbed import Tabbed
 
 MATERIAL_STYLES = ("green", "yellow", "magenta", "cyan", "bright_blue", "red", "white")
@@ -75,6 +85,18 @@ class ResultsPane(Vertical):
                         compact=True,
                     )
                 yield PlotView(id="frp-plot")
+            with TabPane("Fragility", id="res-fragility"):
+                with VerticalScroll(id="fragility-scroll"):
+                    yield PlotView(id="fragility-plot")
+                    yield Static("", id="fragility-table")
+            with TabPane("Bars & pivot", id="res-bars"):
+                with VerticalScroll(id="bars-scroll"):
+                    yield Static("", id="bars-table")
+                    yield Static("", id="pivot-table")
+            with TabPane("Checks", id="res-checks"):
+                with VerticalScroll(id="checks-scroll"):
+                    yield Static("", id="kinematic-table")
+                    yield Static("", id="sensitivity-table")
             with TabPane("Design", id="res-design"):
                 with VerticalScroll(id="design-scroll"):
                     yield Static("", id="design-table")
@@ -119,6 +141,22 @@ class ResultsPane(Vertical):
         self.draw_plot()
         self._compliance(results)
         self._design(results)
+        self._issue_views(results)
+
+    def _issue_views(self, r: AssessmentResult) -> None:
+        """Fragility curves, bars as built, pivot check, code checks and sensitivity."""
+        q = self.query_one
+        series, options = fragility_plot(r)
+        plot = q("#fragility-plot", PlotView)
+        if series:
+            plot.show(series, **options)
+        else:
+            plot.show_message("No lognormal fit: fewer than 2 distinct collapse values.")
+        q("#fragility-table", Static).update(fragility_table(r))
+        q("#bars-table", Static).update(bars_table(r))
+        q("#pivot-table", Static).update(pivot_table(r))
+        q("#kinematic-table", Static).update(kinematic_table(r))
+        q("#sensitivity-table", Static).update(sensitivity_table(r))
 
     def mark_stale(self, stale: bool) -> None:
         """Say whether the project was edited after the run shown."""
@@ -207,6 +245,7 @@ class ResultsPane(Vertical):
                     f"P(collapse) at a_g·S = {shown}",
                     "yellow" if p >= 0.1 else "",
                 )
+        t.append_text(case_details(c))
         self.query_one("#case-summary", Static).update(t)
 
     @on(Select.Changed, "#case-select")
