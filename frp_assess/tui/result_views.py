@@ -114,6 +114,14 @@ def bars_text(built: Any) -> str:
     return f"{built.bars_per_line} × {d}"
 
 
+def design_bars(built: Any) -> Text:
+    """A design-mode answer's bars: ``2 × 9 × Ø16 at 0.28 m, ρ 1.206 ‰``."""
+    face = " /face" if built.lines > 1 else ""
+    return Text(
+        f"{bars_text(built)} at {built.spacing:.2f} m{face}, ρ {built.ratio_installed:.3f} ‰"
+    )
+
+
 def anchorage_text(built: Any) -> Text:
     """OK / FAILS of the pull-out cone, with the bond length needed at each end."""
     a = built.anchorage

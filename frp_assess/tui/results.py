@@ -27,6 +27,7 @@ from frp_assess.tui.ranking_table import RankingTable
 from frp_assess.tui.result_views import (
     bars_table,
     case_details,
+    design_bars,
     fragility_plot,
     fragility_table,
     kinematic_table,
@@ -343,8 +344,14 @@ class ResultsPane(Vertical):
         table.add_column(Text("C/D"), justify="right", no_wrap=True)
         table.add_column(Text("FRP [kg]"), justify="right", no_wrap=True)
         table.add_column(literal(f"cost [{cur}]"), justify="right", no_wrap=True)
+        built = [getattr(d, "as_built", None) for d in found]
+        if any(b is not None for b in built):
+            table.add_column(Text("bars as built"), no_wrap=True)
         table.add_column(Text("note"), ratio=1)
-        for d in found:
+        for d, b in zip(found, built, strict=True):
+            bars: list[Text] = []
+            if any(x is not None for x in built):
+                bars = [Text("—", "dim") if b is None else design_bars(b)]
             table.add_row(
                 literal(d.material),
                 literal(d.position),
@@ -352,6 +359,7 @@ class ResultsPane(Vertical):
                 Text(_num(d.capacity_demand, ".2f")),
                 Text(_num(d.frp_mass, ".1f")),
                 Text(_num(d.frp_cost, ".0f")),
+                *bars,
                 literal(d.message, "dim"),
             )
         out.update(table)

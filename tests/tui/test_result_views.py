@@ -24,7 +24,7 @@ from frp_assess.assess.from_project import inputs_from_project
 from frp_assess.assess.kinematic_checks import IdaSummary, kinematic_checks
 from frp_assess.assess.pivot import case_pivot
 from frp_assess.config import load_project_text
-from frp_assess.results.model import AssessmentResult
+from frp_assess.results.model import AssessmentResult, DesignRow
 from frp_assess.tui.app import FrpAssessApp
 from frp_assess.tui.core.fragility import lognormal_cdf, pga_axis
 from frp_assess.tui.plots import PlotView, render_plot
@@ -198,8 +198,17 @@ def test_results_views_show_bars_pivot_checks_and_sensitivity(run: Run, small_pr
             assert r.sensitivity is not None and len(r.sensitivity.rows) > 1
             for row in r.sensitivity.rows:
                 assert row.variant in sens and f"{row.design_a_dyn:.4f}" in sens
-            # the case summary of the Per record tab: its bars and its pivot
+            # design mode: the answer's bars as built
+            gfrp = r.cases[1]
+            row = DesignRow("GFRP", "external", 1.0, gfrp.capacity_demand, 1.0, 2.0, "")
             pane = q(ResultsPane)
+            pane.show(replace(r, design=(with_fields(row, as_built=gfrp.as_built),)), "out")  # type: ignore[attr-defined]
+            design = plain(q("#design-table", Static))
+            b = gfrp.as_built  # type: ignore[attr-defined]
+            assert (
+                f"{bars_text(b)} at {b.spacing:.2f} m /face, ρ {b.ratio_installed:.3f} ‰" in design
+            )
+            # the case summary of the Per record tab: its bars and its pivot
             pane.show_case(2)
             summary = plain(q("#case-summary", Static))
             c = r.cases[2]
