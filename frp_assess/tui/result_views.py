@@ -105,6 +105,27 @@ def fragility_table(r: AssessmentResult) -> Table:
     return t
 
 
+def floor_spectra_plot(r: AssessmentResult) -> tuple[list[Series], dict[str, Any]]:
+    """5 % spectra at the wall's base (``floor_spectra``, a wall above ground): the mean of
+    the records' floor motions, the code's floor spectrum and the ground target, in g.  No
+    series when the results have none."""
+    fs = getattr(r, "floor_spectra", None)
+    if fs is None or not fs.periods:
+        return [], {}
+    series = [
+        Series(fs.periods, fs.code, style="white", label="code floor spectrum"),
+        Series(fs.periods, fs.mean, style="cyan", label="mean of the records' floor motions"),
+        Series(fs.periods, fs.ground, style="grey50", label="ground target"),
+    ]
+    top = max([*fs.code, *fs.mean, *fs.ground, 0.0])
+    return series, {
+        "x_range": (0.0, max(fs.periods)),
+        "y_range": (0.0, 1.1 * top if top > 0 else 1.0),
+        "x_label": "T [s]",
+        "y_label": "Sa at the wall's base [g]",
+    }
+
+
 # ------------------------------------------------------------------------- bars and pivot
 def bars_text(built: Any) -> str:
     """``9 × Ø16`` (centred) or ``2 × 9 × Ø16`` (external: one line per face)."""

@@ -28,6 +28,7 @@ from frp_assess.tui.result_views import (
     bars_table,
     case_details,
     design_bars,
+    floor_spectra_plot,
     fragility_plot,
     fragility_table,
     kinematic_table,
@@ -106,6 +107,7 @@ class ResultsPane(Vertical):
                     yield Static("", id="compliance-summary")
                     yield Static("", id="compliance-table")
                     yield PlotView(id="compliance-plot")
+                    yield PlotView(id="floor-plot")
 
     def on_mount(self) -> None:
         self.results: AssessmentResult | None = None
@@ -143,6 +145,7 @@ class ResultsPane(Vertical):
         self._compliance(results)
         self._design(results)
         self._issue_views(results)
+        self._floor_spectra(results)
 
     def _issue_views(self, r: AssessmentResult) -> None:
         """Fragility curves, bars as built, pivot check, code checks and sensitivity."""
@@ -183,6 +186,10 @@ class ResultsPane(Vertical):
         t.append(f"{r.model.target:g};  code check (§C8.7.1): a0* = {cc.a0_star:.3f} g ")
         t.append(f"vs {cc.demand:.3f} g → ")
         t.append("satisfied" if cc.passed else "NOT satisfied", "green" if cc.passed else "red")
+        building = getattr(r, "building", None)
+        if building is not None:
+            t.append("\nShaken by: ", "bold")
+            t.append(printable(building.shaken_by))
         if not r.input_code_compliant:
             t.append(
                 "\nINPUT NOT CODE-COMPLIANT: the records fail the code's spectrum checks "
@@ -208,9 +215,10 @@ class ResultsPane(Vertical):
         table = self.query_one("#records-table", DataTable)
         table.clear()
         for rec in c.records:
+            floor = getattr(rec, "floor_pga", None)
             table.add_row(
                 literal(rec.record),
-                f"{rec.pga:.4f}",
+                f"{rec.pga:.4f}" + ("" if floor is None else f" (floor {floor:.4f})"),
                 _num(rec.collapse_multiplier, ".4f")
                 if rec.collapse_multiplier
                 else Text("no collapse", "yellow"),
@@ -227,6 +235,9 @@ class ResultsPane(Vertical):
             f"capacity/demand = {c.capacity_demand:.3f}, improvement = "
             f"{c.improvement:.3f}, FRP {c.frp_mass:.1f} kg ({c.frp_mass_per_m:.2f} kg/m)"
         )
+        fc = getattr(c, "fc", None)
+        if fc is not None and fc != 1.0:
+            t.append(f"\ncapacity/demand = design a_dyn / (FC·a_g·S) with FC = {fc:.2f}")
         if c.lower_bound:
             t.append("\nsome record did not collapse up to C_max: lower bounds", "yellow")
         sc = c.scatter
@@ -363,6 +374,14 @@ class ResultsPane(Vertical):
                 literal(d.message, "dim"),
             )
         out.update(table)
+
+    def _floor_spectra(self, r: AssessmentResult) -> None:
+        """The records' mean floor spectrum next to the code's (a wall above ground)."""
+        plot = self.query_one("#floor-plot", PlotView)
+        series, options = floor_spectra_plot(r)
+        plot.display = bool(series)
+        if series:
+            plot.show(series, **options)
 
     def _compliance(self, r: AssessmentResult) -> None:
         comp = r.compliance

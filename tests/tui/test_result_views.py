@@ -16,7 +16,7 @@ from typing import Any
 import pytest
 from rich.console import Console
 from scipy import stats
-from textual.widgets import Static, TabbedContent
+from textual.widgets import DataTable, Static, TabbedContent
 
 from frp_assess.api import prepare_records, run_assessment
 from frp_assess.assess.as_built import option_as_built
@@ -28,7 +28,8 @@ from frp_assess.results.model import AssessmentResult, DesignRow
 from frp_assess.tui.app import FrpAssessApp
 from frp_assess.tui.core.fragility import lognormal_cdf, pga_axis
 from frp_assess.tui.plots import PlotView, render_plot
-from frp_assess.tui.result_views import bars_text, fragility_plot
+from frp_assess.tui.ranking_table import RankingTable
+from frp_assess.tui.result_views import bars_text, floor_spectra_plot, fragility_plot
 from frp_assess.tui.results import ResultsPane
 from tests.tui.conftest import SMALL, run_async, settle
 from tests.tui.test_app import SIZE
@@ -247,5 +248,75 @@ def test_results_without_the_new_fields_show_nothing_of_them(run: Run, small_pro
             # no case has a lognormal fit: no curve, a line saying why
             assert fragility_plot(bare) == ([], {})
             assert "No lognormal fit" in str(q("#fragility-plot", PlotView).render())
+
+    run_async(body)
+
+
+@dataclass(frozen=True)
+class BuildingStandIn:
+    """The attribute of ``results.building`` the TUI shows (W15's BuildingResult has more)."""
+
+    shaken_by: str
+
+
+@dataclass(frozen=True)
+class FloorSpectraStandIn:
+    """``results.floor_spectra``: 5 % spectra [g] at ``periods`` [s]."""
+
+    periods: tuple[float, ...]
+    mean: tuple[float, ...]
+    code: tuple[float, ...]
+    ground: tuple[float, ...]
+
+
+def test_dropped_options_floor_motion_and_fc_are_shown(run: Run, small_project: Path):
+    """A wall above ground: the summary says what shook it, each record's floor PGA and the
+    floor spectra show; an option dropped by the pivot check is marked in the ranking; the
+    case summary states the FC dividing its capacity/demand."""
+    r = run.full
+    cases = []
+    for c in r.cases:
+        records = tuple(with_fields(rec, floor_pga=2.0 * rec.pga) for rec in c.records)
+        dropped = c.pivot.dropped  # type: ignore[attr-defined]
+        cases.append(with_fields(c, records=records, fc=1.35, rank=None if dropped else c.rank))
+    floor = FloorSpectraStandIn((0.0, 0.5, 1.0), (0.2, 0.6, 0.3), (0.25, 0.7, 0.2), (0.1, 0.3, 0.1))
+    shown = with_fields(
+        replace(r, cases=tuple(cases)),
+        building=BuildingStandIn("the wall's base at Z = 9 m of a 3-storey building"),
+        floor_spectra=floor,
+    )
+
+    async def body() -> None:
+        app = FrpAssessApp(small_project)
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause()
+            await _show(pilot, shown)
+            q = app.query_one
+            summary = plain(q("#results-summary", Static))
+            assert "Shaken by: the wall's base at Z = 9 m of a 3-storey building" in summary
+            table = q(RankingTable)
+            ranks = {str(table.get_row_at(i)[1]): str(table.get_row_at(i)[0]) for i in range(3)}
+            assert "dropped" in ranks.values()
+            for c in shown.cases[1:]:
+                assert (ranks[c.name] == "dropped") == c.pivot.dropped  # type: ignore[attr-defined]
+            pane = q(ResultsPane)
+            pane.show_case(1)
+            case = shown.cases[1]
+            assert "with FC = 1.35" in plain(q("#case-summary", Static))
+            records = q("#records-table", DataTable)
+            first = case.records[0]
+            assert str(records.get_row_at(0)[1]) == f"{first.pga:.4f} (floor {2 * first.pga:.4f})"
+            plot = q("#floor-plot", PlotView)
+            assert plot.display
+            labels = [s.label for s in floor_spectra_plot(shown)[0]]
+            assert labels == [
+                "code floor spectrum",
+                "mean of the records' floor motions",
+                "ground target",
+            ]
+            # results of a wall at ground level: no floor plot, no "Shaken by"
+            await _show(pilot, r)
+            assert not plot.display
+            assert "Shaken by" not in plain(q("#results-summary", Static))
 
     run_async(body)
