@@ -148,7 +148,7 @@ def anchorage_text(built: Any) -> Text:
     a = built.anchorage
     out = _ok(a.cone_ok) if a.cone_ok is not None else Text("not checked", "dim")
     if a.length_required is not None:
-        out.append(f", {a.length_required * 1e3:.0f} mm bond", "")
+        out.append(f", bond {a.length_required * 1e3:.0f} mm", "")
     return out
 
 
@@ -159,12 +159,18 @@ def bars_table(r: AssessmentResult) -> Table | Text:
     if not any(b is not None for _, b in rows):
         return Text("No bar layout in these results.", "dim")
     t = _table("Bars as built (whole bars over the wall length)")
-    t.add_column(Text("option"), ratio=3)
+    t.caption = (
+        "s: spacing of the bar axes; ρ: ratio installed by whole bars / asked; F: force in one "
+        "bar at the model's rupture strain; anchorage: the pull-out cone, and the bond length "
+        "needed at each end"
+    )
+    t.caption_justify = "left"
+    t.add_column(Text("option"), ratio=1)
     t.add_column(Text("bars"), no_wrap=True)
-    t.add_column(Text("spacing [m]"), justify="right", no_wrap=True)
-    t.add_column(Text("ρ installed / asked [‰]"), justify="right", no_wrap=True)
-    t.add_column(Text("F bar [kN]"), justify="right", no_wrap=True)
-    t.add_column(Text("anchorage"), ratio=2)
+    t.add_column(Text("s [m]"), justify="right", no_wrap=True)
+    t.add_column(Text("ρ inst./asked ‰"), justify="right", no_wrap=True)
+    t.add_column(Text("F [kN]"), justify="right", no_wrap=True)
+    t.add_column(Text("anchorage"), no_wrap=True)
     for c, b in rows:
         if b is None:
             t.add_row(literal(c.name), Text("cannot be built in whole bars", "yellow"))
