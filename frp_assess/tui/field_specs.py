@@ -70,6 +70,14 @@ WALL_FIELDS = (
         optional=True,
         placeholder="(masonry)",
     ),
+    num(
+        (*W, "compressive_strength"),
+        "Strength f_m",
+        "MPa (wins)",
+        WallSpec,
+        optional=True,
+        placeholder="(masonry, LC)",
+    ),
     choice((*W, "mechanism"), "Mechanism", None, WallSpec, width=14),
 )
 SPECTRUM_TYPES = (
@@ -230,6 +238,13 @@ ANALYSIS_FIELDS = (
         AnalysisSpec,
         width=22,
     ),
+    choice(
+        (*AN, "pivot"),
+        "Pivot",
+        (("crushing (x/2 in)", "crushing"), ("edge (paper)", "edge")),
+        AnalysisSpec,
+        width=22,
+    ),
     num((*AN, "strain_factor"), "Strain factor c", "-", AnalysisSpec, optional=True),
     num((*AN, "free_vibration_tail"), "Free tail", "s", AnalysisSpec, optional=True),
     num((*INTEGRATION, "tolerance"), "Integration tol.", "-", IntegrationSpec, optional=True),
@@ -254,6 +269,13 @@ CODE_FIELDS = (
         width=16,
     ),
     num(("code_check", "behaviour_factor"), "Behaviour q", "1-4", CodeCheckSpec, optional=True),
+    choice(
+        ("code_check", "fc_in_ida"),
+        "FC in the IDA",
+        (("yes: a_dyn/(FC·a_g·S)", True), ("no: a_dyn/(a_g·S)", False)),
+        CodeCheckSpec,
+        width=24,
+    ),
 )
 COST_FIELDS = (
     text(("costs", "currency"), "Currency", CostsSpec, width=8),

@@ -54,7 +54,12 @@ The line at the bottom shows the field's meaning and units.
 
 *Ranking*: ←/→ pick a column, `s` sorts by it (again: reverse), `enter` shows the IDA
 per record of the case. *FRP plot*: improvement or capacity/demand against the FRP
-mass. *Design*: the smallest ratio per material and position (design mode).
+mass. *Fragility*: P(collapse) against PGA of every case's lognormal fit, the demand
+a_g·S marked. *Bars & pivot*: per option the bars as built (count × diameter, spacing,
+ratio installed / asked, anchorage) and per case the compressed zone at the pivot (x/B,
+dropped and why). *Checks*: the code's kinematic checks (ζ_E of the linear, SLV, SLC,
+time-history and IDA checks) and the sensitivity of the best option to the model
+conventions. *Design*: the smallest ratio per material and position (design mode).
 *Compliance*: the code checks of the records and their mean spectrum.
 
 *History*: pick a case and a record; `c` at collapse, `b` just below, `1` for C = 1, or

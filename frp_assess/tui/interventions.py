@@ -44,6 +44,14 @@ class InterventionsEditor(ItemEditor):
             choice(("material",), "Material", tuple(FRP_MATERIALS), Intervention, width=22),
             choice(("position",), "Position", None, Intervention, width=14),
             num(("ratio",), "Ratio ρ", "‰, 0 < ρ ≤ 20", Intervention),
+            num(
+                ("diameter",),
+                "Bar Ø",
+                "mm, catalogue",
+                Intervention,
+                optional=True,
+                placeholder="(least ρ)",
+            ),
         ),
         "sweep": (
             items(("sweep", "material"), "Materials", SweepAxes, width=30, unit="comma-separated"),

@@ -21,7 +21,7 @@ from frp_assess.config import FRP_MATERIALS
 from frp_assess.config.messages import Loc
 from frp_assess.config.schema import MaterialSpec
 from frp_assess.tui.core.model import MISSING, format_value, get_path, set_path
-from frp_assess.tui.fields import OrderedInput, num, text
+from frp_assess.tui.fields import OrderedInput, choice, num, text
 from frp_assess.tui.item_editor import ItemEditor
 
 MATERIAL_FIELDS = tuple(MaterialSpec.model_fields)
@@ -44,6 +44,16 @@ class MaterialsEditor(ItemEditor):
             num(("density",), "Density", "kg/m³", MaterialSpec, width=20),
             num(("price",), "Price", "currency/kg", MaterialSpec, width=20),
             text(("source",), "Source", MaterialSpec, optional=True, width=40),
+            num(
+                ("characteristic_strain",),
+                "ε_fk",
+                "-, 5 % fractile",
+                MaterialSpec,
+                optional=True,
+                width=20,
+                placeholder="(from ε_u)",
+            ),
+            choice(("fibre",), "Fibre", None, MaterialSpec, optional=True, width=20),
         )
     }
 
@@ -132,8 +142,10 @@ class MaterialsEditor(ItemEditor):
         for row in self.form_rows("material"):
             inp = row.control
             if isinstance(inp, Input):
-                value = "" if lib is None else getattr(lib, str(row.spec.path[0]))
-                inp.placeholder = "" if lib is None else f"{format_value(value)} (library)"
+                value = None if lib is None else getattr(lib, str(row.spec.path[0]))
+                inp.placeholder = (
+                    row.spec.placeholder if value is None else f"{format_value(value)} (library)"
+                )
 
     def apply_field(self, index: int, path: Loc, value: Any) -> None:
         name = self.items[index]

@@ -26,6 +26,7 @@ from frp_assess.tui.core.model import (
     spectrum_preview,
     validate_edit,
     wall_derived,
+    without_paths,
 )
 from frp_assess.tui.core.tabs import tab_of
 from frp_assess.tui.field_specs import (
@@ -48,6 +49,20 @@ from frp_assess.tui.wall_pane import WallPane
 
 #: the variant groups: which fields are part of the data (spectrum type, record source...)
 VARIANT_GROUPS = ("spectrum", "records", "design", "building")
+#: the blocks of the file each variant group stands for: left out of what is carried over
+#: from the file when the variant chosen is not the file's (another spectrum type...)
+VARIANT_BLOCKS: dict[str, tuple[Loc, ...]] = {
+    "spectrum": (("seismic", "spectrum"),),
+    "records": (("seismic", "records", "artificial"), ("seismic", "records", "files")),
+    "design": (("design",),),
+    "building": (("building",),),
+}
+#: the blocks the tables edit as a whole
+TABLE_BLOCKS: tuple[Loc, ...] = (
+    ("seismic", "records", "files"),
+    ("materials",),
+    ("interventions",),
+)
 
 
 def variant_of(data: Any, group: str) -> str:
@@ -101,6 +116,10 @@ class ProjectForm:
         self.variants: dict[str, str] = {"spectrum": "ntc2018", "records": "artificial"}
         self.variants["design"] = "off"
         self.variants["building"] = "off"
+        #: the project data as opened, and its variants: what no field or table edits (the
+        #: ``bars:`` block, say) is carried from it into the data unchanged
+        self.opened_data: dict[str, Any] = {}
+        self.opened_variants: dict[str, str] = dict(self.variants)
         self.problems: list[Problem] = []
         self.project: Project | None = None
         self.saved_data: Any = None  #: the data as last opened or saved (None: never saved)
@@ -134,6 +153,8 @@ class ProjectForm:
         """Show ``data`` (the project as the YAML loader reads it) in every field."""
         data = copy.deepcopy(data)
         self.variants = {g: variant_of(data, g) for g in VARIANT_GROUPS}
+        self.opened_data = copy.deepcopy(data) if isinstance(data, dict) else {}
+        self.opened_variants = dict(self.variants)
         with self.root.prevent(Input.Changed, Select.Changed):
             for row in self.rows:
                 spec = row.spec
@@ -165,9 +186,22 @@ class ProjectForm:
             self.variants[row.spec.selects] = value
             self.apply_variants()
 
+    def carried(self) -> dict[str, Any]:
+        """What the file opened holds that no field or table edits (``bars:``, a key added
+        to the schema after the editor...): kept as it was, so that a run uses it and a save
+        writes it back.  A variant block (the spectrum, the design block...) goes when
+        another variant is chosen."""
+        owned: list[Loc] = [r.spec.path for r in self.rows if not r.spec.virtual]
+        owned += TABLE_BLOCKS
+        for group, blocks in VARIANT_BLOCKS.items():
+            if self.variants[group] != self.opened_variants.get(group):
+                owned += blocks
+        return without_paths(self.opened_data, owned)
+
     def collect(self) -> dict[str, Any]:
-        """The project data as typed (the dict the YAML loader would produce)."""
-        data: dict[str, Any] = {}
+        """The project data as typed (the dict the YAML loader would produce): the fields
+        and tables over what the file held that they do not edit (:meth:`carried`)."""
+        data = self.carried()
         for row in self.rows:
             spec = row.spec
             if spec.virtual:

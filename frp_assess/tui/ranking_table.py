@@ -21,9 +21,18 @@ def _text(value: Any) -> Text:
     return safe(value) if isinstance(value, Text) else literal(value)
 
 
+def rank_cell(case: CaseResult) -> Any:
+    """The rank, or ``dropped`` for an option that fails the pivot check (``case.pivot``,
+    read with getattr: results without it show "—")."""
+    if case.rank:
+        return case.rank
+    pivot = getattr(case, "pivot", None)
+    return Text("dropped", "red") if pivot is not None and pivot.dropped else "—"
+
+
 #: (header, sort key, cell) of the ranking table
 RANKING_COLUMNS: list[tuple[str, Callable[[CaseResult], Any], Callable[..., Any]]] = [
-    ("rank", lambda c: (c.rank is None, c.rank or 0), lambda c: c.rank or "—"),
+    ("rank", lambda c: (c.rank is None, c.rank or 0), lambda c: rank_cell(c)),
     ("option", lambda c: c.name, lambda c: c.name),
     ("kg/m", lambda c: c.frp_mass_per_m, lambda c: f"{c.frp_mass_per_m:.2f}"),
     ("FRP kg", lambda c: c.frp_mass, lambda c: f"{c.frp_mass:.1f}"),

@@ -1,4 +1,5 @@
-"""The Results tab: ranking (sortable), IDA per record, FRP plot, spectrum compliance.
+"""The Results tab: ranking (sortable), IDA per record, FRP plot, fragility curves, bars as
+built and pivot check, code checks and sensitivity, design mode, spectrum compliance.
 
 Everything is read from the typed results of the run (:mod:`frp_assess.results.model`), as the PDF
 report does.  The ranking (:mod:`frp_assess.tui.ranking_table`): the highlighted row is the
@@ -23,6 +24,17 @@ from frp_assess.tui.core.text import printable
 from frp_assess.tui.literal import literal
 from frp_assess.tui.plots import PlotView, Rule, Series
 from frp_assess.tui.ranking_table import RankingTable
+from frp_assess.tui.result_views import (
+    bars_table,
+    case_details,
+    design_bars,
+    floor_spectra_plot,
+    fragility_plot,
+    fragility_table,
+    kinematic_table,
+    pivot_table,
+    sensitivity_table,
+)
 from frp_assess.tui.tabbed import Tabbed
 
 MATERIAL_STYLES = ("green", "yellow", "magenta", "cyan", "bright_blue", "red", "white")
@@ -75,6 +87,18 @@ class ResultsPane(Vertical):
                         compact=True,
                     )
                 yield PlotView(id="frp-plot")
+            with TabPane("Fragility", id="res-fragility"):
+                with VerticalScroll(id="fragility-scroll"):
+                    yield PlotView(id="fragility-plot")
+                    yield Static("", id="fragility-table")
+            with TabPane("Bars & pivot", id="res-bars"):
+                with VerticalScroll(id="bars-scroll"):
+                    yield Static("", id="bars-table")
+                    yield Static("", id="pivot-table")
+            with TabPane("Checks", id="res-checks"):
+                with VerticalScroll(id="checks-scroll"):
+                    yield Static("", id="kinematic-table")
+                    yield Static("", id="sensitivity-table")
             with TabPane("Design", id="res-design"):
                 with VerticalScroll(id="design-scroll"):
                     yield Static("", id="design-table")
@@ -83,6 +107,7 @@ class ResultsPane(Vertical):
                     yield Static("", id="compliance-summary")
                     yield Static("", id="compliance-table")
                     yield PlotView(id="compliance-plot")
+                    yield PlotView(id="floor-plot")
 
     def on_mount(self) -> None:
         self.results: AssessmentResult | None = None
@@ -119,6 +144,23 @@ class ResultsPane(Vertical):
         self.draw_plot()
         self._compliance(results)
         self._design(results)
+        self._issue_views(results)
+        self._floor_spectra(results)
+
+    def _issue_views(self, r: AssessmentResult) -> None:
+        """Fragility curves, bars as built, pivot check, code checks and sensitivity."""
+        q = self.query_one
+        series, options = fragility_plot(r)
+        plot = q("#fragility-plot", PlotView)
+        if series:
+            plot.show(series, **options)
+        else:
+            plot.show_message("No lognormal fit: fewer than 2 distinct collapse values.")
+        q("#fragility-table", Static).update(fragility_table(r))
+        q("#bars-table", Static).update(bars_table(r))
+        q("#pivot-table", Static).update(pivot_table(r))
+        q("#kinematic-table", Static).update(kinematic_table(r))
+        q("#sensitivity-table", Static).update(sensitivity_table(r))
 
     def mark_stale(self, stale: bool) -> None:
         """Say whether the project was edited after the run shown."""
@@ -144,6 +186,10 @@ class ResultsPane(Vertical):
         t.append(f"{r.model.target:g};  code check (§C8.7.1): a0* = {cc.a0_star:.3f} g ")
         t.append(f"vs {cc.demand:.3f} g → ")
         t.append("satisfied" if cc.passed else "NOT satisfied", "green" if cc.passed else "red")
+        building = getattr(r, "building", None)
+        if building is not None:
+            t.append("\nShaken by: ", "bold")
+            t.append(printable(building.shaken_by))
         if not r.input_code_compliant:
             t.append(
                 "\nINPUT NOT CODE-COMPLIANT: the records fail the code's spectrum checks "
@@ -169,9 +215,10 @@ class ResultsPane(Vertical):
         table = self.query_one("#records-table", DataTable)
         table.clear()
         for rec in c.records:
+            floor = getattr(rec, "floor_pga", None)
             table.add_row(
                 literal(rec.record),
-                f"{rec.pga:.4f}",
+                f"{rec.pga:.4f}" + ("" if floor is None else f" (floor {floor:.4f})"),
                 _num(rec.collapse_multiplier, ".4f")
                 if rec.collapse_multiplier
                 else Text("no collapse", "yellow"),
@@ -188,6 +235,9 @@ class ResultsPane(Vertical):
             f"capacity/demand = {c.capacity_demand:.3f}, improvement = "
             f"{c.improvement:.3f}, FRP {c.frp_mass:.1f} kg ({c.frp_mass_per_m:.2f} kg/m)"
         )
+        fc = getattr(c, "fc", None)
+        if fc is not None and fc != 1.0:
+            t.append(f"\ncapacity/demand = design a_dyn / (FC·a_g·S) with FC = {fc:.2f}")
         if c.lower_bound:
             t.append("\nsome record did not collapse up to C_max: lower bounds", "yellow")
         sc = c.scatter
@@ -207,6 +257,7 @@ class ResultsPane(Vertical):
                     f"P(collapse) at a_g·S = {shown}",
                     "yellow" if p >= 0.1 else "",
                 )
+        t.append_text(case_details(c))
         self.query_one("#case-summary", Static).update(t)
 
     @on(Select.Changed, "#case-select")
@@ -304,8 +355,14 @@ class ResultsPane(Vertical):
         table.add_column(Text("C/D"), justify="right", no_wrap=True)
         table.add_column(Text("FRP [kg]"), justify="right", no_wrap=True)
         table.add_column(literal(f"cost [{cur}]"), justify="right", no_wrap=True)
+        built = [getattr(d, "as_built", None) for d in found]
+        if any(b is not None for b in built):
+            table.add_column(Text("bars as built"), no_wrap=True)
         table.add_column(Text("note"), ratio=1)
-        for d in found:
+        for d, b in zip(found, built, strict=True):
+            bars: list[Text] = []
+            if any(x is not None for x in built):
+                bars = [Text("—", "dim") if b is None else design_bars(b)]
             table.add_row(
                 literal(d.material),
                 literal(d.position),
@@ -313,9 +370,18 @@ class ResultsPane(Vertical):
                 Text(_num(d.capacity_demand, ".2f")),
                 Text(_num(d.frp_mass, ".1f")),
                 Text(_num(d.frp_cost, ".0f")),
+                *bars,
                 literal(d.message, "dim"),
             )
         out.update(table)
+
+    def _floor_spectra(self, r: AssessmentResult) -> None:
+        """The records' mean floor spectrum next to the code's (a wall above ground)."""
+        plot = self.query_one("#floor-plot", PlotView)
+        series, options = floor_spectra_plot(r)
+        plot.display = bool(series)
+        if series:
+            plot.show(series, **options)
 
     def _compliance(self, r: AssessmentResult) -> None:
         comp = r.compliance

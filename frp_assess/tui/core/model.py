@@ -8,9 +8,10 @@ the file) and the whole dict is validated by the loader's own models and message
 
 from __future__ import annotations
 
+import copy
 import math
 import re
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -123,6 +124,32 @@ def set_path(data: dict[str, Any], path: Loc, value: Any) -> None:
             node[key] = nxt
         node = nxt
     node[path[-1]] = value
+
+
+def without_paths(data: Any, paths: Iterable[Loc]) -> dict[str, Any]:
+    """A deep copy of the mapping ``data`` without the keys at ``paths``; a mapping emptied
+    by a removal goes too (``{"analysis": {"pivot": "edge"}}`` less ``analysis.pivot`` is
+    ``{}``).  Not a mapping: ``{}``.
+
+    The editor starts from what the file held less what its fields and tables own, so that
+    a block it has no field for (``bars:``) is carried into the data unchanged.
+    """
+    out: dict[str, Any] = copy.deepcopy(data) if isinstance(data, dict) else {}
+    for path in paths:
+        if not path:
+            continue
+        parent = get_path(out, path[:-1], None)
+        if not isinstance(parent, dict) or path[-1] not in parent:
+            continue
+        del parent[path[-1]]
+        for n in range(len(path) - 1, 0, -1):  # drop the mappings left empty
+            node = get_path(out, path[:n], None)
+            if not (isinstance(node, dict) and not node):
+                break
+            holder = get_path(out, path[: n - 1], None)
+            if isinstance(holder, dict):
+                del holder[path[n - 1]]
+    return out
 
 
 def parse_key(key: str) -> Loc:
