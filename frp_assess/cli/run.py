@@ -174,6 +174,7 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
                 "ida": f"IDA {n_cases} cases × {len(seismic.records)} records",
                 "design": "design mode",
                 "sensitivity": "sensitivity to the model conventions",
+                "checks": "code checks (time histories at a_g·S)",
                 "writing": "writing results",
                 "verify": "numerical check (10x tighter tolerance)",
             }.get(stage)
