@@ -143,15 +143,15 @@ def run_assessment(
     # FC divides the IDA capacity (code_check.fc_in_ida): capacity/demand = a_dyn/(FC·a_g·S)
     fc = ida_confidence_factor(inputs.code_check)
     # the floor spectra at the wall's base, once (a wall above ground only)
-    spectra = None if inputs.building is None else floor_spectra(
-        records, inputs.spectrum, inputs.building
+    spectra = (
+        None
+        if inputs.building is None
+        else floor_spectra(records, inputs.spectrum, inputs.building)
     )
     floor_pga = None if spectra is None else spectra.floor_pga
     cases, recommended = rank_cases(
         [
-            case_result(
-                inputs, o, m, s, names, demand, urm_design, fc=fc, floor_pga=floor_pga
-            )
+            case_result(inputs, o, m, s, names, demand, urm_design, fc=fc, floor_pga=floor_pga)
             for o, m, s in zip(options, models, summaries, strict=True)
         ],
         inputs.target,
