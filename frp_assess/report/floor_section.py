@@ -12,6 +12,7 @@ Units: accelerations in g, periods in s, heights in m.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import dataclass
 
 from reportlab.graphics.shapes import Drawing
 from reportlab.lib.units import mm
@@ -70,6 +71,42 @@ def floor_rows(results: Results) -> list[list[str]]:
         ["participation factor γ_1 = 3n/(2n+1)", f"{b.gamma1:.3f}"],
         ["mode shape ψ_1(Z) = Z/H_b", f"{b.psi1:.3f}"],
     ]
+
+
+@dataclass(frozen=True)
+class LinearSummary:
+    """The linear kinematic check of the unreinforced wall as page 1 states it: a0* and the
+    demand [g], their ratio [-], the verdict."""
+
+    a0_star: float
+    demand: float
+    ratio: float
+    passed: bool
+
+
+def linear_check(results: Results) -> LinearSummary:
+    """The unreinforced wall's linear check: from ``kinematic_checks`` when present (the
+    demand a_Z/q at the wall's base above ground), else from ``code_check`` (a_g·S/q)."""
+    kc = results.kinematic_checks
+    if kc is not None and kc.cases:
+        lin = kc.cases[0].linear
+        return LinearSummary(lin.a0_star, lin.demand, lin.zeta_e, lin.passed)
+    k = results.code_check
+    return LinearSummary(k.a0_star, k.demand, k.ratio, k.passed)
+
+
+def ground_demand_note(results: Results) -> str | None:
+    """For a wall above ground: the check of §4.3 uses the ground demand, the one at height
+    is in §4.4; None at ground level."""
+    kc = results.kinematic_checks
+    if results.building is None or kc is None or not kc.cases:
+        return None
+    lin = kc.cases[0].linear
+    return (
+        "This linear check compares a0* with the ground demand a_g·S/q; the wall stands above "
+        f"ground, where the demand is a_Z/q = {fmt_acc(lin.demand)} g (ratio "
+        f"{lin.zeta_e:.2f}, {'satisfied' if lin.passed else 'NOT satisfied'}; section 4.4)."
+    )
 
 
 def floor_spectra_chart(

@@ -130,7 +130,7 @@ def summary(results: Results) -> list[Flowable]:
             + f" target {target:g}).",
         )
     )
-    k = results.code_check
+    k = floor_section.linear_check(results)
     out.append(
         markup(
             "For comparison, the linear kinematic check of NTC 2018 / Circolare 2019 §C8.7.1 "
@@ -325,6 +325,9 @@ def unreinforced(results: Results) -> list[Flowable]:
     note = results.code_check.note
     if note:
         out.append(para(note, "caption"))
+    above = floor_section.ground_demand_note(results)
+    if above is not None:
+        out.append(para(above, "caption"))
     out += floor_section.checks_part(results)
     return out
 
