@@ -21,8 +21,9 @@ from pathlib import Path
 
 from frp_assess.assess.cache import IdaCache, cache_file, record_digest, task_key
 from frp_assess.assess.code_check import simple_overturning_check
-from frp_assess.assess.floor_input import floor_record
+from frp_assess.assess.floor_input import floor_record, floor_spectra
 from frp_assess.assess.inputs import AssessmentInputs, Material
+from frp_assess.assess.kinematic_checks import IdaSummary, ida_confidence_factor, kinematic_checks
 from frp_assess.assess.results import (
     below_collapse,
     build_results,
@@ -60,7 +61,8 @@ from frp_assess.study.run import Executor, StudyStats
 from frp_assess.study.schema import StudyFile
 from frp_assess.text_safety import plain
 
-#: progress(stage, done, total); stages: "records", "ida", "design", "writing"
+#: progress(stage, done, total); stages: "records", "ida", "verify", "sensitivity",
+#: "design", "checks", "writing"
 Progress = Callable[[str, int, int], None]
 #: case_progress(case_index, record_index): one (case, record) IDA of the "ida" stage finished
 #: (case 0 is the unreinforced wall); called from the worker threads
@@ -138,9 +140,18 @@ def run_assessment(
     summaries = [summarise(r, inputs.ida.max_multiplier, a_rm) for r in all_results]
     urm_design = summaries[0].design_a_dyn
     options = [None, *inputs.options]
+    # FC divides the IDA capacity (code_check.fc_in_ida): capacity/demand = a_dyn/(FC·a_g·S)
+    fc = ida_confidence_factor(inputs.code_check)
+    # the floor spectra at the wall's base, once (a wall above ground only)
+    spectra = (
+        None
+        if inputs.building is None
+        else floor_spectra(records, inputs.spectrum, inputs.building)
+    )
+    floor_pga = None if spectra is None else spectra.floor_pga
     cases, recommended = rank_cases(
         [
-            case_result(inputs, o, m, s, names, demand, urm_design)
+            case_result(inputs, o, m, s, names, demand, urm_design, fc=fc, floor_pga=floor_pga)
             for o, m, s in zip(options, models, summaries, strict=True)
         ],
         inputs.target,
@@ -153,7 +164,9 @@ def run_assessment(
         case=cases[focus].name,
         rows=tuple(
             SensitivityRow(**asdict(row))
-            for row in sensitivity(sens_runner, models[focus], demand, inputs.ida.max_multiplier)
+            for row in sensitivity(
+                sens_runner, models[focus], fc * demand, inputs.ida.max_multiplier
+            )
         ),
     )
     report("sensitivity", 1, 1)
@@ -164,9 +177,21 @@ def run_assessment(
         design = []
         for k, (mat, pos) in enumerate(pairs):
             report("design", k, len(pairs))
-            design.append(design_search(runner, inputs, mat, pos, demand))
+            design.append(design_search(runner, inputs, mat, pos, fc * demand))
         report("design", len(pairs), len(pairs))
 
+    report("checks", 0, 1)
+    # the code's checks; the IDA's a_dyn passed in, only the time-history check runs the model
+    checks = kinematic_checks(
+        inputs,
+        records=records,
+        ida={
+            c.name: IdaSummary(s.mean_a_dyn, s.min_a_dyn, len(records))
+            for c, s in zip(cases, summaries, strict=True)
+        },
+        building=inputs.building,
+    )
+    report("checks", 1, 1)
     governing = governing_histories(inputs, cases, records, all_results, recommended)
     materials: dict[str, Material] = {}
     for o in inputs.options:
@@ -192,6 +217,8 @@ def run_assessment(
         created=created or _dt.date.today().isoformat(),
         numerical_check=numerical_check,
         sensitivity=conventions,
+        floor_spectra=spectra,
+        kinematic_checks=checks,
     )
     if write:
         report("writing", 0, 1)

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 
+from frp_assess.results.checks import CaseChecks
 from frp_assess.results.model import AssessmentResult
 
 #: most decimals :func:`fmt_against` shows before giving up on separating value and threshold
@@ -64,7 +65,14 @@ def no_retrofit_caveats(results: AssessmentResult) -> list[str]:
     kinematic check of the same wall failing, or a margin within the scatter of the records
     (fitted P(collapse) at the demand ≥ 10 %, or capacity/demand − 1 below the records' CoV)."""
     out = []
-    if not results.code_check.passed:
+    kc = results.kinematic_checks
+    failed = [] if kc is None or not kc.cases else checks_failed(kc.cases[0])
+    if failed:
+        out.append(
+            f"the code check{'s' if len(failed) > 1 else ''} {', '.join(failed)} of "
+            "Circolare 2019 §C8.7.1 fail" + ("" if len(failed) > 1 else "s")
+        )
+    elif not results.code_check.passed:
         out.append("the linear kinematic check of Circolare 2019 §C8.7.1 is NOT satisfied")
     urm = results.cases[0]
     sc = urm.scatter
@@ -105,3 +113,59 @@ def recommendation_text(results: AssessmentResult) -> str:
             text += " (but " + "; ".join(caveats) + ")"
         return text + (f" (cheapest option for extra margin: {rec})" if rec else "")
     return rec or "none of the options meets the target"
+
+
+# --- the code's kinematic checks, in one line per case ----------------------------------------
+
+
+def check_verdicts(checks: CaseChecks) -> list[tuple[str, bool]]:
+    """(name, passed) of every check made on one case, in the order of the report's table:
+    linear, nonlinear SLV, nonlinear SLC, time history, IDA (the last two when made)."""
+    out = [
+        ("linear", checks.linear.passed),
+        ("nonlinear SLV", checks.slv.passed),
+        ("nonlinear SLC", checks.slc.passed),
+    ]
+    if checks.time_history is not None:
+        out.append(("time history", checks.time_history.passed))
+    if checks.ida is not None:
+        out.append(("IDA", checks.ida.passed))
+    return out
+
+
+def checks_failed(checks: CaseChecks) -> list[str]:
+    """The names of the checks of one case that fail (:func:`check_verdicts`)."""
+    return [name for name, ok in check_verdicts(checks) if not ok]
+
+
+def checks_line(checks: CaseChecks) -> str:
+    """ "passes …; fails …" for one case (a list is left out when empty)."""
+    verdicts = check_verdicts(checks)
+    passed = [n for n, ok in verdicts if ok]
+    failed = [n for n, ok in verdicts if not ok]
+    parts = []
+    if passed:
+        parts.append("passes " + ", ".join(passed))
+    if failed:
+        parts.append("fails " + ", ".join(failed))
+    return "; ".join(parts)
+
+
+def checks_summary(results: AssessmentResult) -> list[tuple[str, str]]:
+    """(label, :func:`checks_line`) for the unreinforced wall and the rank-1 option (the
+    recommended or best ranked one), when the results hold the code's checks; else []."""
+    kc = results.kinematic_checks
+    if kc is None or not kc.cases:
+        return []
+    by_name = {c.case: c for c in kc.cases}
+    out = [(kc.cases[0].case, checks_line(kc.cases[0]))]
+    best = next((c for c in results.cases if c.rank == 1), None)
+    if best is not None and best.name in by_name:
+        if results.recommended == best.name and results.input_code_compliant:
+            label = f"{best.name} (recommended)"
+        elif results.input_code_compliant:
+            label = f"{best.name} (best ranked)"
+        else:
+            label = f"{best.name} (best ranked, {NOT_COMPLIANT})"
+        out.append((label, checks_line(by_name[best.name])))
+    return out

@@ -16,13 +16,16 @@ import numpy as np
 
 from frp_assess import __version__
 from frp_assess.assess.code_check import KinematicCheck
+from frp_assess.assess.floor_input import FloorSpectra
 from frp_assess.assess.inputs import (
     UNREINFORCED,
     ArtificialRecords,
     AssessmentInputs,
+    Building,
     Material,
     Option,
 )
+from frp_assess.assess.kinematic_checks import ida_capacity_demand
 from frp_assess.assess.quantities import quantity_for
 from frp_assess.assess.ranking import RANKING_RULE, Rankable, rank_options
 from frp_assess.assess.runner import CaseSummary, DesignResult, design_value_rule
@@ -31,9 +34,12 @@ from frp_assess.assess.statistics import fit_lognormal_fragility, record_statist
 from frp_assess.assess.verification import NumericalCheck
 from frp_assess.dynamics import RockingModel
 from frp_assess.motions import G
+from frp_assess.motions.floor import default_period, mode_shape, participation_factor
+from frp_assess.results.checks import KinematicChecks
 from frp_assess.results.model import (
     SCHEMA_VERSION,
     AssessmentResult,
+    BuildingResult,
     CaseResult,
     CodeCheck,
     Compliance,
@@ -41,6 +47,7 @@ from frp_assess.results.model import (
     Costs,
     Demand,
     DesignRow,
+    FloorSpectraResult,
     Fragility,
     Generator,
     Governing,
@@ -135,8 +142,19 @@ def case_result(
     names: Sequence[str],
     demand: float,
     urm_design: float,
+    *,
+    fc: float = 1.0,
+    floor_pga: Sequence[float] | None = None,
 ) -> CaseResult:
-    """One case, unranked (``rank`` None: :func:`rank_cases` ranks them)."""
+    """One case, unranked (``rank`` None: :func:`rank_cases` ranks them).
+
+    ``demand`` is a_g·S [g]; ``fc`` the confidence factor dividing the IDA capacity
+    (:func:`~frp_assess.assess.kinematic_checks.ida_confidence_factor`), so capacity/demand =
+    design a_dyn / (FC·a_g·S) (:func:`~frp_assess.assess.kinematic_checks.ida_capacity_demand`)
+    and meets_target and the ranking follow it; the improvement stays a ratio of a_dyn.
+    ``floor_pga``: PGA of each record's floor motion [g] for a wall above ground, else None.
+    """
+    pgas: Sequence[float | None] = [None] * len(names) if floor_pga is None else floor_pga
     records = tuple(
         RecordResult(
             record=name,
@@ -147,15 +165,16 @@ def case_result(
             q=res.q,
             # every time history of the search, by C: (C, collapsed, peak θ/α)
             curve=tuple((p.multiplier, p.collapsed, p.peak_ratio) for p in res.curve),
+            floor_pga=fp,
         )
-        for name, res, a in zip(names, summary.results, summary.a_dyn, strict=True)
+        for name, res, a, fp in zip(names, summary.results, summary.a_dyn, pgas, strict=True)
     )
     if option is None:
         q_mass = q_mass_m = cost = 0.0
     else:
         q = quantity_for(inputs, option.material, option.position, option.ratio)
         q_mass, q_mass_m, cost = q.mass, q.mass_per_m, q.cost
-    cd = summary.design_a_dyn / demand
+    cd = ida_capacity_demand(summary.design_a_dyn, demand, fc)
     return CaseResult(
         name=option.name if option else UNREINFORCED,
         material=option.material.name if option else None,
@@ -179,6 +198,49 @@ def case_result(
         frp_cost=cost,
         meets_target=cd >= inputs.target,
         rank=None,
+        fc=fc,
+    )
+
+
+def shaken_by(building: Building) -> str:
+    """One sentence: the wall was shaken by the floor motion at Z (first mode), and a_dyn and
+    capacity/demand are in ground terms (for results.json, the report and the CLI)."""
+    gamma1 = participation_factor(building.storeys)
+    psi1 = mode_shape(building.wall_base, building.height)
+    return (
+        f"the wall's base at Z = {building.wall_base:g} m of a {building.storeys}-storey "
+        f"building {building.height:g} m tall moved with that floor's absolute acceleration, "
+        f"first mode only (γ1 = {gamma1:.3g}, ψ1 = Z/H_b = {psi1:.3g}, "
+        f"T1 = {building.period:.3g} s, ξ1 = {building.damping:.3g}; Circolare 2019 §C7.2.3); "
+        "the IDA scaled the ground records, so a_dyn and capacity/demand are in "
+        "ground-acceleration terms, compared with a_g·S"
+    )
+
+
+def building_result(building: Building) -> BuildingResult:
+    """The ``building`` object of results.json (docs/results-json.md)."""
+    return BuildingResult(
+        height=building.height,
+        storeys=building.storeys,
+        wall_base=building.wall_base,
+        z_over_h=building.z_over_h,
+        period=building.period,
+        period_default=default_period(building.height),
+        damping=building.damping,
+        gamma1=participation_factor(building.storeys),
+        psi1=mode_shape(building.wall_base, building.height),
+        shaken_by=shaken_by(building),
+    )
+
+
+def floor_spectra_result(spectra: FloorSpectra) -> FloorSpectraResult:
+    """The ``floor_spectra`` object of results.json, accelerations in g, periods in s."""
+    return FloorSpectraResult(
+        periods=spectra.periods,
+        mean=spectra.mean,
+        code=spectra.code,
+        ground=spectra.ground,
+        records=spectra.records,
     )
 
 
@@ -326,8 +388,12 @@ def build_results(
     created: str,
     numerical_check: NumericalCheck | None = None,
     sensitivity: Sensitivity | None = None,
+    floor_spectra: FloorSpectra | None = None,
+    kinematic_checks: KinematicChecks | None = None,
 ) -> AssessmentResult:
-    """The whole result, from the ranked ``cases`` and the rest of the assessment."""
+    """The whole result, from the ranked ``cases`` and the rest of the assessment
+    (``floor_spectra`` for a wall above ground, :func:`frp_assess.assess.floor_input.floor_spectra`;
+    ``kinematic_checks``, :func:`frp_assess.assess.kinematic_checks.kinematic_checks`)."""
     records = tuple(
         RecordInfo(
             name=r.name,
@@ -394,6 +460,9 @@ def build_results(
         # report then call the rank-1 option "best ranked", never "recommended"
         input_code_compliant=bool(seismic.compliance.passed),
         sensitivity=sensitivity,
+        building=None if inputs.building is None else building_result(inputs.building),
+        floor_spectra=None if floor_spectra is None else floor_spectra_result(floor_spectra),
+        kinematic_checks=kinematic_checks,
     )
 
 

@@ -20,6 +20,7 @@ from frp_assess.cli.wall_args import TOLERANCE
 from frp_assess.errors import Cancelled, InputError
 from frp_assess.motions import ComplianceReport
 from frp_assess.numbers import (
+    checks_summary,
     fmt_against,
     numerical_check_text,
     recommendation_label,
@@ -136,6 +137,20 @@ def print_ranking(con: Console, results: AssessmentResult) -> None:
     )
 
 
+def print_floor_and_checks(console: Console, results: AssessmentResult) -> None:
+    """The floor-motion line (a wall above ground) and one line of code-check verdicts for
+    the unreinforced wall and the rank-1 option (:func:`frp_assess.numbers.checks_summary`)."""
+    b = results.building
+    if b is not None:
+        console.print(
+            f"shaken by the floor motion at Z = {b.wall_base:g} m of {b.height:g} m "
+            f"(first mode: γ1 = {b.gamma1:.3g}, ψ1 = {b.psi1:.3g}, T1 = {b.period:.3g} s); "
+            "a_dyn and capacity/demand are in ground terms"
+        )
+    for label, line in checks_summary(results):
+        console.print(f"code checks, {user(label)}: {user(line)}")
+
+
 def run(args: argparse.Namespace) -> int:
     path = Path(args.file)
     inputs = load_inputs(path)  # InputError -> one line, exit 2, nothing written
@@ -174,6 +189,7 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
                 "ida": f"IDA {n_cases} cases × {len(seismic.records)} records",
                 "design": "design mode",
                 "sensitivity": "sensitivity to the model conventions",
+                "checks": "code checks (time histories at a_g·S)",
                 "writing": "writing results",
                 "verify": "numerical check (10x tighter tolerance)",
             }.get(stage)
@@ -199,13 +215,15 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
     w = results.wall
     urm = results.urm
     target = float(results.model.target)
+    fc = f"FC = {urm.fc:g}; " if urm.fc != 1.0 else ""
     console.print(
         f"wall B = {w.thickness:g} m, H = {w.height:g} m, α = {w.alpha_deg:.2f}°, "
         f"a_RM = {w.a_rm:.3f} g, {user(w.mechanism)}; unreinforced: design a_dyn = "
         f"{urm.design_a_dyn:.3f} g, capacity/demand = "
         f"{fmt_against(urm.capacity_demand, target, urm.meets_target)} "
-        f"({'meets' if urm.meets_target else 'does NOT meet'} the target)"
+        f"({fc}{'meets' if urm.meets_target else 'does NOT meet'} the target)"
     )
+    print_floor_and_checks(console, results)
     cc = results.code_check
     console.print(
         f"code kinematic check (Circolare 2019 §C8.7.1, q = {cc.behaviour_factor:g}, "

@@ -6,7 +6,7 @@ from reportlab.lib.units import mm
 from reportlab.platypus import CondPageBreak, Flowable, KeepTogether, PageBreak
 
 from frp_assess.numbers import no_retrofit_caveats, numerical_check_text
-from frp_assess.report import charts
+from frp_assess.report import charts, floor_section
 from frp_assess.report import tables as tb
 from frp_assess.report.flow import esc, gap, grid, key_value, markup, para
 from frp_assess.results.model import AssessmentResult, CaseResult
@@ -102,6 +102,9 @@ def summary(results: Results) -> list[Flowable]:
             )
         )
     )
+    floor = floor_section.floor_sentence(results)
+    if floor is not None:
+        out.append(markup(floor))
     ok = bool(urm.meets_target)
     lb = tb.is_lower_bound(urm)
     out.append(
@@ -110,7 +113,8 @@ def summary(results: Results) -> list[Flowable]:
             f"overturns at a design ground acceleration a<sub>dyn</sub> = "
             f"{esc(tb.bound(tb.fmt_acc(tb.design_a_dyn(urm)), lb))} g "
             f"({esc(design_statistic(results))}), i.e. "
-            f"{esc(tb.bound(tb.fmt_capacity(urm, target), lb))} times the demand."
+            f"{esc(tb.bound(tb.fmt_capacity(urm, target), lb))} times the demand"
+            + (f" once divided by the confidence factor FC = {urm.fc:g}." if urm.fc != 1.0 else ".")
         )
     )
     out.append(
@@ -126,7 +130,7 @@ def summary(results: Results) -> list[Flowable]:
             + f" target {target:g}).",
         )
     )
-    k = results.code_check
+    k = floor_section.linear_check(results)
     out.append(
         markup(
             "For comparison, the linear kinematic check of NTC 2018 / Circolare 2019 §C8.7.1 "
@@ -138,6 +142,7 @@ def summary(results: Results) -> list[Flowable]:
             "small",
         )
     )
+    out += floor_section.checks_verdict_lines(results)
     rec = tb.case_by_name(results, results.recommended)
     ranked = tb.ranked_options(results)
     compliant = bool(results.input_code_compliant)
@@ -285,6 +290,7 @@ def seismic(results: Results) -> list[Flowable]:
     out.append(
         _verdict(bool(comp.passed), "All checks passed." if comp.passed else "Some checks FAILED.")
     )
+    out += floor_section.floor_motion_part(results)
     return out
 
 
@@ -319,6 +325,10 @@ def unreinforced(results: Results) -> list[Flowable]:
     note = results.code_check.note
     if note:
         out.append(para(note, "caption"))
+    above = floor_section.ground_demand_note(results)
+    if above is not None:
+        out.append(para(above, "caption"))
+    out += floor_section.checks_part(results)
     return out
 
 
@@ -348,8 +358,8 @@ def options(results: Results) -> list[Flowable]:
             "each face, so twice the quantity is installed). FRP masses per metre of wall and "
             "for the whole wall; costs indicative. q = a<sub>dyn</sub>/a<sub>RM</sub>; "
             "improvement = a<sub>dyn</sub> / a<sub>dyn</sub> of the unreinforced wall; "
-            "capacity/demand = a<sub>dyn</sub> / a<sub>g</sub>·S. '≥': lower bound, some record "
-            "did not overturn up to C_max. Highlighted: the "
+            "capacity/demand = a<sub>dyn</sub> / (FC·a<sub>g</sub>·S). '≥': lower bound, "
+            "some record did not overturn up to C_max. Highlighted: the "
             + (
                 "recommended option."
                 if results.input_code_compliant
@@ -523,8 +533,9 @@ EQUATIONS = [
     (
         "Improvement and capacity/demand",
         "I = a<sub>dyn,d</sub>(retrofitted) / a<sub>dyn,d</sub>(unreinforced); "
-        "capacity/demand = a<sub>dyn,d</sub> / (a<sub>g</sub>·S), where the design value "
-        "a<sub>dyn,d</sub> is the mean over the records (7 or more), else the least favourable.",
+        "capacity/demand = a<sub>dyn,d</sub> / (FC·a<sub>g</sub>·S), where the design value "
+        "a<sub>dyn,d</sub> is the mean over the records (7 or more), else the least favourable, "
+        "and FC the confidence factor (below).",
     ),
 ]
 
@@ -568,6 +579,24 @@ REFERENCES = [
 ]
 
 
+def fc_text(results: Results) -> str:
+    """The confidence factor in the IDA verdict: its value, basis and how to turn it off."""
+    fc = results.cases[0].fc
+    kc = results.kinematic_checks
+    level = kc.knowledge_level if kc is not None else results.code_check.confidence_factor_level
+    if fc == 1.0:
+        return (
+            "Confidence factor: the IDA capacity is not divided by FC (FC = 1 in the verdict: "
+            "code_check.fc_in_ida: false, or knowledge level LC3)."
+        )
+    return (
+        f"Confidence factor: FC = {fc:g} ({level}; Circolare 2019 §C8.7.1.2.1.3: a rigid block "
+        "whose masonry has infinite compressive strength uses LC1's FC = 1.35) divides the IDA "
+        "capacity, capacity/demand = a_dyn,d / (FC·a_g·S); the improvement, a ratio of a_dyn, "
+        "does not change. Turn it off with code_check.fc_in_ida: false."
+    )
+
+
 def method(results: Results) -> list[Flowable]:
     out: list[Flowable] = [PageBreak(), h1("7  Method and references"), h2("7.1  Equations")]
     for title, eq in EQUATIONS:
@@ -586,6 +615,7 @@ def method(results: Results) -> list[Flowable]:
             "small",
         )
     )
+    out.append(para(fc_text(results), "small"))
     check = numerical_check_text(results)
     if check is not None:
         out.append(para(check, "small"))

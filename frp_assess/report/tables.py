@@ -515,9 +515,9 @@ def case_summary_rows(results: Results, case: CaseResult) -> list[list[str]]:
         ["least favourable a_dyn", f"{fmt_acc(case.min_a_dyn)} g"],
         ["mean q = a_dyn / a_RM", bound(fmt_q(case.mean_q), lb)],
         [
-            "capacity/demand = a_dyn / a_g·S",
+            "capacity/demand = a_dyn / (FC·a_g·S)",
             bound(fmt_capacity(case, float(results.model.target)), lb)
-            + f" (demand {fmt_acc(results.demand.pga)} g)",
+            + f" (FC = {case.fc:g}, demand a_g·S = {fmt_acc(results.demand.pga)} g)",
         ],
         [
             f"meets the target (≥ {results.model.target:g})",
@@ -556,8 +556,10 @@ def comparison_table(results: Results) -> TableData:
     header = ["assessment", "capacity [g]", "demand [g]", "capacity / demand", "verdict"]
     rows = [
         [
-            "IDA, rocking dynamics (this report)",
-            bound(fmt_acc(design_a_dyn(urm)), lb),
+            "IDA, rocking dynamics (this report): a_dyn / FC"
+            if urm.fc != 1.0
+            else "IDA, rocking dynamics (this report)",
+            bound(fmt_acc(design_a_dyn(urm) / urm.fc), lb),
             fmt_acc(results.demand.pga),
             bound(fmt_capacity(urm, float(results.model.target)), lb),
             "satisfied" if urm.meets_target else "NOT satisfied",

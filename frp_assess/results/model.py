@@ -13,6 +13,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from frp_assess.results.checks import KinematicChecks
+
 #: version of the contract written as ``schema_version``; another is refused on reading
 SCHEMA_VERSION = 1
 #: with this many records or more the design a_dyn is their mean, with fewer the least
@@ -238,6 +240,9 @@ class RecordResult:
     a_dyn: float | None
     q: float | None
     curve: tuple[CurvePoint, ...]
+    #: PGA of the motion at the wall's base [g]: the floor motion at Z for a wall above
+    #: ground (unscaled, as the IDA received it); None at ground level (it is ``pga``)
+    floor_pga: float | None = None
 
 
 @dataclass(frozen=True)
@@ -298,6 +303,9 @@ class CaseResult:
     frp_cost: float
     meets_target: bool
     rank: int | None
+    #: FC [-], the confidence factor dividing this case's capacity/demand (the knowledge
+    #: level's, Circolare 2019 Tab. C8.5.IV; 1.0 when code_check.fc_in_ida is false)
+    fc: float = 1.0
 
     @property
     def is_unreinforced(self) -> bool:
@@ -393,6 +401,41 @@ class Sensitivity:
 
 
 @dataclass(frozen=True)
+class BuildingResult:
+    """Where the wall stands in the building (project block ``building``, docs/model.md §9):
+    height H_b [m], storeys n [-], wall_base Z [m], z_over_h = Z/H_b = ψ1(Z) [-], period T1
+    [s] used, period_default = 0.05·H_b^0.75 [s] (Circolare 2019 eq. C7.3.2; equal to
+    ``period`` unless the project gave T1), damping ξ1 [-], gamma1 = 3n/(2n+1) [-], psi1 =
+    Z/H_b [-] (Circolare 2019 §C7.2.3, eq. C7.2.10)."""
+
+    height: float
+    storeys: int
+    wall_base: float
+    z_over_h: float
+    period: float
+    period_default: float
+    damping: float
+    gamma1: float
+    psi1: float
+    shaken_by: str  #: one sentence: what moves the wall's base, and in which terms a_dyn is
+
+
+@dataclass(frozen=True)
+class FloorSpectraResult:
+    """5 % pseudo-acceleration spectra at the wall's base, all in g at ``periods`` [s]: the
+    mean of the records' floor motions (unscaled, as the IDA received them), the code's floor
+    spectrum at Z of the target ground spectrum (Circolare 2019 eqs. C7.2.5-C7.2.9, first
+    mode), the target ground spectrum, and each record's own floor spectrum (by record, in
+    the order of ``records``)."""
+
+    periods: tuple[float, ...]
+    mean: tuple[float, ...]
+    code: tuple[float, ...]
+    ground: tuple[float, ...]
+    records: tuple[tuple[float, ...], ...]
+
+
+@dataclass(frozen=True)
 class AssessmentResult:
     """Everything ``frp-assess run`` found: the content of results.json.
 
@@ -425,6 +468,12 @@ class AssessmentResult:
     input_warnings: tuple[str, ...]
     input_code_compliant: bool
     sensitivity: Sensitivity | None
+    #: where the wall stands in the building; None: at ground level
+    building: BuildingResult | None = None
+    #: the floor spectra at the wall's base; None: at ground level
+    floor_spectra: FloorSpectraResult | None = None
+    #: the code's kinematic checks of every case (Circolare 2019 §C8.7.1); None: not computed
+    kinematic_checks: KinematicChecks | None = None
 
     @property
     def urm(self) -> CaseResult:

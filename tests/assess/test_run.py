@@ -75,7 +75,9 @@ def test_run_writes_consistent_results(tmp_path):
     for c in cases:
         a = [r.a_dyn for r in c.records]
         assert c.min_a_dyn == pytest.approx(min(a))
-        assert c.capacity_demand == pytest.approx(c.design_a_dyn / demand)
+        # FC = 1.35, LC1's (Circolare 2019 Tab. C8.5.IV), divides the IDA capacity by default
+        assert c.fc == 1.35
+        assert c.capacity_demand == pytest.approx(c.design_a_dyn / (1.35 * demand))
         assert c.improvement == pytest.approx(c.design_a_dyn / cases[0].design_a_dyn)
         assert c.meets_target == (c.capacity_demand >= 3.0)
     # fewer than 7 records: the design value is the least favourable record
