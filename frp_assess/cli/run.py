@@ -26,7 +26,7 @@ from frp_assess.numbers import (
     recommendation_text,
 )
 from frp_assess.output_set import FolderLock, check_out_dir
-from frp_assess.results.model import AssessmentResult
+from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.text_safety import plain
 
 
@@ -107,12 +107,13 @@ def ranking_columns(results: AssessmentResult) -> list[Column]:
 
 
 def ranking_rows(results: AssessmentResult) -> list[list[str]]:
-    """One row per case (unreinforced wall and options), by rank (plain text)."""
+    """One row per case (plain text): the unreinforced wall, the options by rank, then those
+    the pivot check dropped (rank "dropped", the reason below the table: :func:`dropped_lines`)."""
     target = float(results.model.target)
-    ordered = sorted(results.cases, key=lambda c: (c.rank is not None, c.rank or 0))
+    ordered = [results.urm, *results.ranked_options]
     return [
         [
-            "—" if c.rank is None else str(c.rank),
+            ("dropped" if is_dropped(c) else "—") if c.rank is None else str(c.rank),
             c.name,
             f"{c.frp_mass:.1f}",
             f"{c.frp_cost:.0f}",
@@ -126,6 +127,16 @@ def ranking_rows(results: AssessmentResult) -> list[list[str]]:
     ]
 
 
+def is_dropped(case: CaseResult) -> bool:
+    """The option fails the pivot check and has no rank (results.json ``pivot.dropped``)."""
+    return case.pivot is not None and case.pivot.dropped and not case.is_unreinforced
+
+
+def dropped_lines(results: AssessmentResult) -> list[str]:
+    """One line per option the pivot check dropped: its name, the check, "dropped: <why>"."""
+    return [c.pivot.reason for c in results.options if is_dropped(c) and c.pivot is not None]
+
+
 def print_ranking(con: Console, results: AssessmentResult) -> None:
     print_table(
         con,
@@ -134,6 +145,8 @@ def print_ranking(con: Console, results: AssessmentResult) -> None:
         ranking_columns(results),
         ranking_rows(results),
     )
+    for line in dropped_lines(results):
+        con.print(user(line))
 
 
 def run(args: argparse.Namespace) -> int:

@@ -358,6 +358,9 @@ def options(results: Results) -> list[Flowable]:
             "caption",
         )
     )
+    for c in results.options:  # dropped by the pivot check: no rank, the reason here
+        if c.pivot is not None and c.pivot.dropped:
+            out.append(para(c.pivot.reason, "small"))
     out.append(CondPageBreak(90 * mm))
     out.append(h2("5.2  Effect of the FRP quantity"))
     out.append(

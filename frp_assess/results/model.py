@@ -13,6 +13,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from frp_assess.results.as_built import AsBuilt
+from frp_assess.results.pivot import MasonryResult, PivotResult
+
 #: version of the contract written as ``schema_version``; another is refused on reading
 SCHEMA_VERSION = 1
 #: with this many records or more the design a_dyn is their mean, with fewer the least
@@ -297,7 +300,15 @@ class CaseResult:
     frp_mass: float
     frp_cost: float
     meets_target: bool
-    rank: int | None
+    rank: int | None  #: None: the unreinforced wall, or an option dropped (``pivot.dropped``)
+    #: ρ asked [‰] (``ratio`` is the ratio the model uses: installed with bars.whole_bars);
+    #: None for the unreinforced wall
+    ratio_asked: float | None = None
+    #: the bars as they will be built (None: unreinforced, or an option that cannot be built,
+    #: which only bars.whole_bars: false lets through)
+    as_built: AsBuilt | None = None
+    #: the compression at the pivot and the drop rule (None in files written before it)
+    pivot: PivotResult | None = None
 
     @property
     def is_unreinforced(self) -> bool:
@@ -317,6 +328,8 @@ class DesignRow:
     frp_mass: float | None
     frp_cost: float | None
     message: str
+    #: the bars of the answer as they will be built (None: no ratio met the target)
+    as_built: AsBuilt | None = None
 
 
 @dataclass(frozen=True)
@@ -425,6 +438,8 @@ class AssessmentResult:
     input_warnings: tuple[str, ...]
     input_code_compliant: bool
     sensitivity: Sensitivity | None
+    #: the masonry strength behind the pivot check (None in files written before it)
+    masonry_strength: MasonryResult | None = None
 
     @property
     def urm(self) -> CaseResult:
