@@ -283,7 +283,7 @@ def summary_table(results: Results, n_alternatives: int = 3) -> TableData:
         Markup("capacity /<br/>demand"),
         Markup("meets<br/>target"),
     ]
-    ranked = ranked_options(results)
+    ranked = [c for c in ranked_options(results) if c.rank is not None]  # not the dropped
     chosen: list[tuple[str, CaseResult]] = [("existing", urm_case(results))]
     rec = case_by_name(results, results.recommended)
     if rec is not None:
