@@ -86,6 +86,13 @@ def test_run_writes_consistent_results(tmp_path):
     assert all(c.rank is None for c in cases[1:] if c.pivot.dropped)
     d = results.design[0]
     assert d.ratio is None or d.capacity_demand >= 3.0
+    # the answer's bars as built: they install at least the ratio found, and its FRP mass and
+    # cost are theirs
+    if d.ratio is None:
+        assert d.as_built is None
+    else:
+        assert d.as_built is not None and d.as_built.ratio_installed >= d.ratio
+        assert (d.frp_mass, d.frp_cost) == (d.as_built.mass, d.as_built.cost)
     lines = (tmp_path / "results.csv").read_text().splitlines()
     assert len(lines) == 1 + 3 * 3
     assert results.governing.runs[0].collapsed is True
