@@ -137,6 +137,15 @@ def dropped_lines(results: AssessmentResult) -> list[str]:
     return [c.pivot.reason for c in results.options if is_dropped(c) and c.pivot is not None]
 
 
+def built_lines(results: AssessmentResult) -> list[str]:
+    """The recommended option's bars as built and their anchorage (none without them)."""
+    rec = results.case(results.recommended)
+    if rec is None or rec.as_built is None:
+        return []
+    b = rec.as_built
+    return [f"  built as {b.note}; {b.anchorage.note}"]
+
+
 def print_ranking(con: Console, results: AssessmentResult) -> None:
     print_table(
         con,
@@ -229,6 +238,8 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
         print_ranking(console, results)
         console.print(f"Ranking rule: {user(results.ranking_rule)}")
         console.print(f"{recommendation_label(results)}: " + user(recommendation_text(results)))
+        for line in built_lines(results):
+            console.print(user(line))
     if not results.input_code_compliant:
         console.print(
             "[bold red]INPUT NOT CODE-COMPLIANT[/]: the records fail the code's "

@@ -50,6 +50,7 @@ def _option_sentence(results: Results, c: CaseResult) -> str:
         f"{esc(tb.bound(tb.fmt_ratio(c.improvement), lb))} × the unreinforced wall"
         + ("" if c.meets_target else " (does <b>not</b> reach the target)")
         + "."
+        + ("" if c.as_built is None else f" Built as {esc(c.as_built.note)}.")
     )
 
 

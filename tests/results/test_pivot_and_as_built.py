@@ -23,7 +23,7 @@ from frp_assess.api import run_assessment
 from frp_assess.assess.inputs import DesignRequest
 from frp_assess.assess.results import rank_cases
 from frp_assess.assess.runner import design_search
-from frp_assess.cli.run import dropped_lines, ranking_rows
+from frp_assess.cli.run import built_lines, dropped_lines, ranking_rows
 from frp_assess.report import as_built_section
 from frp_assess.report.document import build_report
 from frp_assess.report.tables import ranking_table
@@ -184,3 +184,12 @@ def test_the_report_sections_render(tmp_path: Path) -> None:
     )
     assert as_built_section.section(bare) == []
     assert math.isfinite(r.urm.mean_q)
+
+
+def test_the_cli_says_how_the_recommended_option_is_built(tmp_path: Path) -> None:
+    r = small_result(tmp_path)
+    first = r.options[0]
+    assert first.as_built is not None
+    lines = built_lines(replace(r, recommended=first.name))
+    assert lines == [f"  built as {first.as_built.note}; {first.as_built.anchorage.note}"]
+    assert built_lines(replace(r, recommended=None)) == []
