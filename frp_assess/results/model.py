@@ -47,7 +47,8 @@ class ProjectInfo:
 class WallResult:
     """The wall: thickness, height, length [m]; unit_weight [kN/m³]; alpha [rad] with
     tan(alpha) = B/H, alpha_deg [°]; R half diagonal [m]; p frequency parameter [rad/s];
-    mass per metre of wall [kg/m]; a_rm = g·tan(alpha) [g]."""
+    mass per metre of wall [kg/m]; a_rm [g]: the unreinforced wall's model's, about its pivot
+    (g·tan(alpha) with pivot: edge, g·(B − x)/H with pivot: crushing)."""
 
     thickness: float
     height: float
@@ -276,7 +277,9 @@ class CaseResult:
     Eq. 10 [-]; theta_max rupture rotation [rad]; accelerations (mean/min/design a_dyn) [g];
     q [-]; capacity_demand = design_a_dyn / demand.pga [-]; improvement = design_a_dyn over
     that of the unreinforced wall [-]; frp_mass_per_m [kg/m]; frp_mass [kg] and frp_cost
-    [currency] for the whole wall; rank 1 = recommended, None for the unreinforced wall.
+    [currency] for the whole wall (of the bars as built when ``as_built`` is set); rank 1 =
+    recommended, None for the unreinforced wall and for an option the pivot check dropped;
+    q and mean_q are over the a_RM of this case's own model (about its pivot).
     """
 
     name: str
