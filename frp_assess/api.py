@@ -121,7 +121,6 @@ def run_assessment(
     records = seismic.records
     names = [r.name for r in records]
     demand = inputs.spectrum.pga_g
-    a_rm = inputs.wall.a_rm_g
     runner = IdaRunner(records, inputs, IdaCache(out_dir / CACHE_DIR), jobs=jobs, cancel=cancel)
 
     models = inputs.case_models()
@@ -137,7 +136,11 @@ def run_assessment(
             inputs.ida.tolerance,
             progress=lambda d, n: report("verify", d, n),
         )
-    summaries = [summarise(r, inputs.ida.max_multiplier, a_rm) for r in all_results]
+    # q = a_dyn / a_RM of each case's own model (about its pivot: docs/model.md §1.1)
+    summaries = [
+        summarise(r, inputs.ida.max_multiplier, m.a_rm_g)
+        for m, r in zip(models, all_results, strict=True)
+    ]
     urm_design = summaries[0].design_a_dyn
     options = [None, *inputs.options]
     # FC divides the IDA capacity (code_check.fc_in_ida): capacity/demand = a_dyn/(FC·a_g·S)
@@ -245,11 +248,10 @@ def governing_histories(
     model = inputs.model_for(None if idx == 0 else inputs.options[idx - 1])
     rec = floor_record(records[k], inputs.building)  # the motion the IDA ran
     below = below_collapse(c, res[k].survivor_multiplier, inputs.ida.tolerance)
+    alpha = model.alpha  # θ/α about the model's pivot (the edge's α, or α' with crushing)
     runs = (
-        history_run("collapse", c, model.run(rec.acc, rec.dt, c, history=True), model.wall.alpha),
-        history_run(
-            "just below", below, model.run(rec.acc, rec.dt, below, history=True), model.wall.alpha
-        ),
+        history_run("collapse", c, model.run(rec.acc, rec.dt, c, history=True), alpha),
+        history_run("just below", below, model.run(rec.acc, rec.dt, below, history=True), alpha),
     )
     bars = model.rebars
     return Governing(
@@ -376,7 +378,7 @@ def run_ida(
     return IdaOutcome(
         tuple(records),
         tuple(results),
-        summarise(results, settings.max_multiplier, model.wall.a_rm_g),
+        summarise(results, settings.max_multiplier, model.a_rm_g),
         design_value_rule(len(results)),
         runner.computed,
     )

@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from frp_assess import __version__
+from frp_assess.assess.as_built import design_as_built, option_as_built
 from frp_assess.assess.code_check import KinematicCheck
 from frp_assess.assess.floor_input import FloorSpectra
 from frp_assess.assess.inputs import (
@@ -26,6 +27,7 @@ from frp_assess.assess.inputs import (
     Option,
 )
 from frp_assess.assess.kinematic_checks import ida_capacity_demand
+from frp_assess.assess.pivot import case_pivot, masonry_result
 from frp_assess.assess.quantities import quantity_for
 from frp_assess.assess.ranking import RANKING_RULE, Rankable, rank_options
 from frp_assess.assess.runner import CaseSummary, DesignResult, design_value_rule
@@ -88,6 +90,9 @@ def material_result(m: Material) -> MaterialResult:
 
 
 def wall_result(inputs: AssessmentInputs) -> WallResult:
+    """The wall; ``a_rm`` is that of the unreinforced wall's model about its pivot
+    (g·tan α at the edge, g·(B − x)/H with ``pivot: crushing``), ``alpha`` the geometric
+    slenderness (tan α = B/H)."""
     w = inputs.wall
     return WallResult(
         thickness=inputs.thickness,
@@ -102,7 +107,7 @@ def wall_result(inputs: AssessmentInputs) -> WallResult:
         R=w.R,
         p=w.p,
         mass=w.mass,
-        a_rm=w.a_rm_g,
+        a_rm=inputs.model_for(None).a_rm_g,
     )
 
 
@@ -153,6 +158,12 @@ def case_result(
     design a_dyn / (FC·a_g·S) (:func:`~frp_assess.assess.kinematic_checks.ida_capacity_demand`)
     and meets_target and the ranking follow it; the improvement stays a ratio of a_dyn.
     ``floor_pga``: PGA of each record's floor motion [g] for a wall above ground, else None.
+
+    With its pivot check (:func:`~frp_assess.assess.pivot.case_pivot`) and, for an option,
+    its bars as built (:func:`~frp_assess.assess.as_built.option_as_built`): FRP mass and
+    cost are then those of the bars as built (whole bars, bond lengths counted); an option
+    that cannot be built (``bars.whole_bars: false``) keeps the smeared quantities of its
+    ratio (:func:`~frp_assess.assess.quantities.quantity_for`).
     """
     pgas: Sequence[float | None] = [None] * len(names) if floor_pga is None else floor_pga
     records = tuple(
@@ -169,8 +180,11 @@ def case_result(
         )
         for name, res, a, fp in zip(names, summary.results, summary.a_dyn, pgas, strict=True)
     )
+    built = None if option is None else option_as_built(inputs, option)
     if option is None:
         q_mass = q_mass_m = cost = 0.0
+    elif built is not None:
+        q_mass, q_mass_m, cost = built.mass, built.mass / inputs.length, built.cost
     else:
         q = quantity_for(inputs, option.material, option.position, option.ratio)
         q_mass, q_mass_m, cost = q.mass, q.mass_per_m, q.cost
@@ -198,6 +212,9 @@ def case_result(
         frp_cost=cost,
         meets_target=cd >= inputs.target,
         rank=None,
+        ratio_asked=option.asked if option else None,
+        as_built=built,
+        pivot=case_pivot(inputs, option).result(),
         fc=fc,
     )
 
@@ -247,11 +264,20 @@ def floor_spectra_result(spectra: FloorSpectra) -> FloorSpectraResult:
 def rank_cases(
     cases: Sequence[CaseResult], target: float
 ) -> tuple[tuple[CaseResult, ...], str | None]:
-    """The cases with ``rank`` set on every option (not the unreinforced wall, the first),
-    and the name of the rank-1 option if it meets ``target`` (else None).  Pure: ``cases``
-    are not changed."""
+    """The cases with ``rank`` set on every option (not the unreinforced wall, the first)
+    but those dropped by the pivot check (``pivot.dropped``: rank None, the reason in
+    ``pivot.reason``), and the name of the rank-1 option if it meets ``target`` (else None).
+    Pure: ``cases`` are not changed."""
     items = [
-        Rankable(i, c.capacity_demand, c.frp_cost, c.frp_mass) for i, c in enumerate(cases) if i > 0
+        Rankable(
+            i,
+            c.capacity_demand,
+            c.frp_cost,
+            c.frp_mass,
+            dropped=c.pivot is not None and c.pivot.dropped,
+        )
+        for i, c in enumerate(cases)
+        if i > 0
     ]
     order = rank_options(items, target)
     rank_of = {idx: rank for rank, idx in enumerate(order, start=1)}
@@ -336,18 +362,28 @@ def code_check_result(check: KinematicCheck, mass: float) -> CodeCheck:
 
 
 def design_rows(inputs: AssessmentInputs, found: Sequence[DesignResult]) -> tuple[DesignRow, ...]:
+    """Design mode's answers; mass [kg] and cost [currency] are those of the bars as built
+    (bond lengths counted) when the answer has a layout, else of the smeared ratio."""
     out = []
     for d in found:
-        q = quantity_for(inputs, d.material, d.position, d.ratio) if d.ratio is not None else None
+        built = design_as_built(inputs, d)
+        mass: float | None = None
+        cost: float | None = None
+        if built is not None:
+            mass, cost = built.mass, built.cost
+        elif d.ratio is not None:
+            q = quantity_for(inputs, d.material, d.position, d.ratio)
+            mass, cost = q.mass, q.cost
         out.append(
             DesignRow(
                 material=d.material.name,
                 position=d.position,
                 ratio=d.ratio,
                 capacity_demand=d.capacity_demand,
-                frp_mass=None if q is None else q.mass,
-                frp_cost=None if q is None else q.cost,
+                frp_mass=mass,
+                frp_cost=cost,
                 message=d.message,
+                as_built=built,
             )
         )
     return tuple(out)
@@ -462,6 +498,7 @@ def build_results(
         sensitivity=sensitivity,
         building=None if inputs.building is None else building_result(inputs.building),
         floor_spectra=None if floor_spectra is None else floor_spectra_result(floor_spectra),
+        masonry_strength=masonry_result(inputs),
         kinematic_checks=kinematic_checks,
     )
 

@@ -12,6 +12,7 @@ from frp_assess.assess.bars import BarLayout
 from frp_assess.assess.cache import IdaCache, record_digest, task_key
 from frp_assess.assess.floor_input import floor_record, in_ground_terms
 from frp_assess.assess.inputs import AssessmentInputs, Building, Material
+from frp_assess.assess.pivot import largest_ratio
 from frp_assess.dynamics import (
     IdaResult,
     IdaSettings,
@@ -53,6 +54,9 @@ def design_value_rule(n_records: int) -> str:
 
 
 def summarise(results: Sequence[IdaResult], settings_max: float, a_rm_g: float) -> CaseSummary:
+    """The case's IDA over the record set; ``a_rm_g`` [g] is the a_RM of the case's own model
+    (:attr:`RockingModel.a_rm_g`, about its pivot: the edge, or moved inward by x/2 with
+    ``pivot: crushing``), so that mean q = mean a_dyn / a_RM is the IDA's q."""
     a_dyn = tuple(None if r.a_dyn is None else r.a_dyn / G for r in results)
     bound = tuple(
         a if a is not None else settings_max * r.c0 * r.pga / G
@@ -215,7 +219,9 @@ def design_search(
     and capacity/demand is that of the bars as built.  The installed ratio never decreases
     along the grid (each size's rounding is monotone, and a size that stops fitting the
     spacing rule never comes back), so the bisection keeps its premise.  Grid ratios beyond
-    the largest installable one are left out of the search (the message says so).
+    the largest installable one are left out of the search, and so are those whose model
+    ratio the pivot check would drop (:func:`~frp_assess.assess.pivot.largest_ratio`: kept up
+    to it with ``pivot: edge``, strictly below it with ``crushing``); the message says so.
     """
     assert inputs.design is not None
     lo_r, hi_r = inputs.design.ratio_range
@@ -235,7 +241,6 @@ def design_search(
         if capped
         else ""
     )
-    a_rm = inputs.wall.a_rm_g
     cache: dict[int, CaseSummary] = {}
 
     def layout(k: int) -> BarLayout:
@@ -246,11 +251,36 @@ def design_search(
     def model_ratio(k: int) -> float:
         return layout(k).ratio_installed if inputs.bars.whole_bars else k * res
 
+    pivot_top = largest_ratio(inputs, material, position)
+    crushing = inputs.model.pivot == "crushing"
+
+    def pivot_keeps(k: int) -> bool:
+        r = model_ratio(k)
+        return r < pivot_top if crushing else r <= pivot_top * (1.0 + 1e-12)
+
+    if grid_hi >= grid_lo and not pivot_keeps(grid_hi):
+        # the model ratio never decreases along the grid: bisect for the last kept k
+        lo, hi = grid_lo - 1, grid_hi  # lo kept (or below the range), hi dropped
+        while hi - lo > 1:
+            mid = (lo + hi) // 2
+            if pivot_keeps(mid):
+                lo = mid
+            else:
+                hi = mid
+        grid_hi = lo
+        capped = True
+        hi_shown = grid_hi * res
+        relation = "below" if crushing else "up to"
+        cap_note = (  # the tighter bound: it replaces the installable one
+            f" (the search stops at {max(hi_shown, 0.0):g} ‰: the pivot check (pivot: "
+            f"{inputs.model.pivot}) keeps a model ratio only {relation} {pivot_top:.3g} ‰)"
+        )
+
     def evaluate(k: int) -> CaseSummary:
         if k not in cache:
             bars = inputs.rebars(material, position, model_ratio(k))
             model = RockingModel(inputs.wall, inputs.mechanism, bars, inputs.model)
-            cache[k] = summarise(runner.run([model])[0], inputs.ida.max_multiplier, a_rm)
+            cache[k] = summarise(runner.run([model])[0], inputs.ida.max_multiplier, model.a_rm_g)
         return cache[k]
 
     def ok(k: int) -> bool:

@@ -27,7 +27,7 @@ from frp_assess.numbers import (
     recommendation_text,
 )
 from frp_assess.output_set import FolderLock, check_out_dir
-from frp_assess.results.model import AssessmentResult
+from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.text_safety import plain
 
 
@@ -108,12 +108,13 @@ def ranking_columns(results: AssessmentResult) -> list[Column]:
 
 
 def ranking_rows(results: AssessmentResult) -> list[list[str]]:
-    """One row per case (unreinforced wall and options), by rank (plain text)."""
+    """One row per case (plain text): the unreinforced wall, the options by rank, then those
+    the pivot check dropped (rank "dropped", the reason below the table: :func:`dropped_lines`)."""
     target = float(results.model.target)
-    ordered = sorted(results.cases, key=lambda c: (c.rank is not None, c.rank or 0))
+    ordered = [results.urm, *results.ranked_options]
     return [
         [
-            "—" if c.rank is None else str(c.rank),
+            ("dropped" if is_dropped(c) else "—") if c.rank is None else str(c.rank),
             c.name,
             f"{c.frp_mass:.1f}",
             f"{c.frp_cost:.0f}",
@@ -127,6 +128,25 @@ def ranking_rows(results: AssessmentResult) -> list[list[str]]:
     ]
 
 
+def is_dropped(case: CaseResult) -> bool:
+    """The option fails the pivot check and has no rank (results.json ``pivot.dropped``)."""
+    return case.pivot is not None and case.pivot.dropped and not case.is_unreinforced
+
+
+def dropped_lines(results: AssessmentResult) -> list[str]:
+    """One line per option the pivot check dropped: its name, the check, "dropped: <why>"."""
+    return [c.pivot.reason for c in results.options if is_dropped(c) and c.pivot is not None]
+
+
+def built_lines(results: AssessmentResult) -> list[str]:
+    """The recommended option's bars as built and their anchorage (none without them)."""
+    rec = results.case(results.recommended)
+    if rec is None or rec.as_built is None:
+        return []
+    b = rec.as_built
+    return [f"  built as {b.note}; {b.anchorage.note}"]
+
+
 def print_ranking(con: Console, results: AssessmentResult) -> None:
     print_table(
         con,
@@ -135,6 +155,8 @@ def print_ranking(con: Console, results: AssessmentResult) -> None:
         ranking_columns(results),
         ranking_rows(results),
     )
+    for line in dropped_lines(results):
+        con.print(user(line))
 
 
 def print_floor_and_checks(console: Console, results: AssessmentResult) -> None:
@@ -234,6 +256,8 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
         print_ranking(console, results)
         console.print(f"Ranking rule: {user(results.ranking_rule)}")
         console.print(f"{recommendation_label(results)}: " + user(recommendation_text(results)))
+        for line in built_lines(results):
+            console.print(user(line))
     if not results.input_code_compliant:
         console.print(
             "[bold red]INPUT NOT CODE-COMPLIANT[/]: the records fail the code's "

@@ -226,6 +226,10 @@ def add_marker(
                 strokeWidth=0.8,
             )
         )
+    elif shape == "x":  # a cross (an option dropped by the pivot check)
+        r = size * 1.5
+        d.add(Line(px - r, py - r, px + r, py + r, strokeColor=color, strokeWidth=1.1))
+        d.add(Line(px - r, py + r, px + r, py - r, strokeColor=color, strokeWidth=1.1))
     else:
         d.add(Circle(px, py, size, fillColor=fill, strokeColor=color, strokeWidth=0.8))
 
@@ -451,6 +455,11 @@ def options_chart(
         items.append((f"{key[0]} {key[1]}", sty))
     ax.marker(urm.frp_mass, getattr(urm, quantity), st.INK, shape="^")
     items.append(("unreinforced wall", {"color": st.INK, "width": 0, "marker": "^"}))
+    dropped = [c for c in results.options if c.pivot is not None and c.pivot.dropped]
+    for c in dropped:  # crossed out: the pivot check drops them from the ranking
+        ax.marker(c.frp_mass, getattr(c, quantity), st.FAIL, shape="x")
+    if dropped:
+        items.append(("dropped: pivot check", {"color": st.FAIL, "width": 0, "marker": "x"}))
     rec = next((c for c in results.cases if c.name == results.recommended), None)
     if rec is not None:
         px, py = ax.tx(rec.frp_mass), ax.ty(getattr(rec, quantity))

@@ -17,7 +17,7 @@ from reportlab.platypus import BaseDocTemplate, Flowable, Frame, PageTemplate, P
 
 from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_path
-from frp_assess.report import sections
+from frp_assess.report import as_built_section, sections
 from frp_assess.report import styles as st
 from frp_assess.results.json_io import from_json
 from frp_assess.results.model import AssessmentResult
@@ -83,6 +83,7 @@ def build_story(results: AssessmentResult) -> list[Flowable]:
         sections.seismic,
         sections.unreinforced,
         sections.options,
+        as_built_section.section,
         sections.governing,
         sections.method,
     ):

@@ -50,6 +50,7 @@ def _option_sentence(results: Results, c: CaseResult) -> str:
         f"{esc(tb.bound(tb.fmt_ratio(c.improvement), lb))} × the unreinforced wall"
         + ("" if c.meets_target else " (does <b>not</b> reach the target)")
         + "."
+        + ("" if c.as_built is None else f" Built as {esc(c.as_built.note)}.")
     )
 
 
@@ -144,7 +145,7 @@ def summary(results: Results) -> list[Flowable]:
     )
     out += floor_section.checks_verdict_lines(results)
     rec = tb.case_by_name(results, results.recommended)
-    ranked = tb.ranked_options(results)
+    ranked = [c for c in tb.ranked_options(results) if c.rank is not None]  # not the dropped
     compliant = bool(results.input_code_compliant)
     if not compliant:
         out.append(
@@ -197,8 +198,19 @@ def summary(results: Results) -> list[Flowable]:
         )
         for c in ranked[:3]:
             out.append(markup(_option_sentence(results, c), "bullet"))
-    else:
+    elif not results.options:
         out.append(para("No retrofit option was examined."))
+    n_dropped = sum(1 for c in results.options if c.rank is None)
+    if n_dropped:
+        out.append(
+            para(
+                f"{n_dropped} of {len(results.options)} options fail the pivot check (the "
+                "masonry cannot carry the wall and the bars at rupture on a compressed zone "
+                "small enough for the rocking mechanism) and are dropped from the ranking: "
+                'see "The masonry at the pivot".',
+                "small",
+            )
+        )
     out.append(gap(4))
     data = tb.summary_table(results)
     widths = [25 * mm, 37 * mm, 18 * mm, 18 * mm, 20 * mm, 17 * mm, 20 * mm, 15 * mm]
@@ -341,7 +353,7 @@ def options(results: Results) -> list[Flowable]:
     data = tb.ranking_table(results)
     rec_name = results.recommended
     hl = [i for i, r in enumerate(data.rows) if r[1] == rec_name]
-    widths = [9, 26, 11, 14, 8, 12, 12, 11, 15, 13, 16, 16, 11]
+    widths = [12, 25, 11, 14, 8, 11, 11, 11, 14, 12, 16, 16, 11]  # rank: 'dropped'
     out.append(
         grid(
             data,
@@ -368,6 +380,9 @@ def options(results: Results) -> list[Flowable]:
             "caption",
         )
     )
+    for c in results.options:  # dropped by the pivot check: no rank, the reason here
+        if c.pivot is not None and c.pivot.dropped:
+            out.append(para(c.pivot.reason, "small"))
     out.append(CondPageBreak(90 * mm))
     out.append(h2("5.2  Effect of the FRP quantity"))
     out.append(

@@ -172,10 +172,18 @@ RANKING_HEADER = [
 ]
 
 
+def rank_text(case: CaseResult) -> str:
+    """The rank, "dropped" for an option the pivot check dropped, else a dash."""
+    if case.rank is not None:
+        return str(case.rank)
+    dropped = case.pivot is not None and case.pivot.dropped and not case.is_unreinforced
+    return "dropped" if dropped else DASH
+
+
 def ranking_row(case: CaseResult, target: float) -> list[str]:
     lb = is_lower_bound(case)
     return [
-        DASH if case.rank is None else str(case.rank),
+        rank_text(case),
         case.name,
         case.material or "none",
         position_text(case.position),
@@ -275,7 +283,7 @@ def summary_table(results: Results, n_alternatives: int = 3) -> TableData:
         Markup("capacity /<br/>demand"),
         Markup("meets<br/>target"),
     ]
-    ranked = ranked_options(results)
+    ranked = [c for c in ranked_options(results) if c.rank is not None]  # not the dropped
     chosen: list[tuple[str, CaseResult]] = [("existing", urm_case(results))]
     rec = case_by_name(results, results.recommended)
     if rec is not None:

@@ -13,7 +13,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from frp_assess.results.as_built import AsBuilt
 from frp_assess.results.checks import KinematicChecks
+from frp_assess.results.pivot import MasonryResult, PivotResult
 
 #: version of the contract written as ``schema_version``; another is refused on reading
 SCHEMA_VERSION = 1
@@ -46,7 +48,8 @@ class ProjectInfo:
 class WallResult:
     """The wall: thickness, height, length [m]; unit_weight [kN/m³]; alpha [rad] with
     tan(alpha) = B/H, alpha_deg [°]; R half diagonal [m]; p frequency parameter [rad/s];
-    mass per metre of wall [kg/m]; a_rm = g·tan(alpha) [g]."""
+    mass per metre of wall [kg/m]; a_rm [g]: the unreinforced wall's model's, about its pivot
+    (g·tan(alpha) with pivot: edge, g·(B − x)/H with pivot: crushing)."""
 
     thickness: float
     height: float
@@ -278,7 +281,9 @@ class CaseResult:
     Eq. 10 [-]; theta_max rupture rotation [rad]; accelerations (mean/min/design a_dyn) [g];
     q [-]; capacity_demand = design_a_dyn / demand.pga [-]; improvement = design_a_dyn over
     that of the unreinforced wall [-]; frp_mass_per_m [kg/m]; frp_mass [kg] and frp_cost
-    [currency] for the whole wall; rank 1 = recommended, None for the unreinforced wall.
+    [currency] for the whole wall (of the bars as built when ``as_built`` is set); rank 1 =
+    recommended, None for the unreinforced wall and for an option the pivot check dropped;
+    q and mean_q are over the a_RM of this case's own model (about its pivot).
     """
 
     name: str
@@ -302,7 +307,15 @@ class CaseResult:
     frp_mass: float
     frp_cost: float
     meets_target: bool
-    rank: int | None
+    rank: int | None  #: None: the unreinforced wall, or an option dropped (``pivot.dropped``)
+    #: ρ asked [‰] (``ratio`` is the ratio the model uses: installed with bars.whole_bars);
+    #: None for the unreinforced wall
+    ratio_asked: float | None = None
+    #: the bars as they will be built (None: unreinforced, or an option that cannot be built,
+    #: which only bars.whole_bars: false lets through)
+    as_built: AsBuilt | None = None
+    #: the compression at the pivot and the drop rule (None in files written before it)
+    pivot: PivotResult | None = None
     #: FC [-], the confidence factor dividing this case's capacity/demand (the knowledge
     #: level's, Circolare 2019 Tab. C8.5.IV; 1.0 when code_check.fc_in_ida is false)
     fc: float = 1.0
@@ -325,6 +338,8 @@ class DesignRow:
     frp_mass: float | None
     frp_cost: float | None
     message: str
+    #: the bars of the answer as they will be built (None: no ratio met the target)
+    as_built: AsBuilt | None = None
 
 
 @dataclass(frozen=True)
@@ -472,6 +487,8 @@ class AssessmentResult:
     building: BuildingResult | None = None
     #: the floor spectra at the wall's base; None: at ground level
     floor_spectra: FloorSpectraResult | None = None
+    #: the masonry strength behind the pivot check (None in files written before it)
+    masonry_strength: MasonryResult | None = None
     #: the code's kinematic checks of every case (Circolare 2019 §C8.7.1); None: not computed
     kinematic_checks: KinematicChecks | None = None
 

@@ -293,8 +293,13 @@ def test_design_mode_answers_with_a_layout_installing_at_least_the_ratio_found()
 
 def test_design_mode_stops_at_the_largest_installable_ratio():
     # B = 0.4, L = 1: at most 10 × Ø16 = 5.03 ‰; range up to 8 ‰ and a target never met
+    # (a strong masonry, f_m 50 MPa: the pivot check's own cap stays above 8 ‰)
     inputs = inputs_of("  []", b=0.4, length=1.0)
-    inputs = replace(inputs, design=DesignRequest((), ("centred",), (1.0, 8.0), 0.5))
+    inputs = replace(
+        inputs,
+        design=DesignRequest((), ("centred",), (1.0, 8.0), 0.5),
+        compressive_strength=50.0,
+    )
     gfrp = inputs_of("  - {material: GFRP, position: centred, ratio: 1}").options[0].material
     runner = RatioRunner()
     res = design_search(runner, inputs, gfrp, "centred", 10.0)  # type: ignore[arg-type]

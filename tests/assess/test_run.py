@@ -82,10 +82,19 @@ def test_run_writes_consistent_results(tmp_path):
         assert c.meets_target == (c.capacity_demand >= 3.0)
     # fewer than 7 records: the design value is the least favourable record
     assert cases[1].design_a_dyn == pytest.approx(cases[1].min_a_dyn)
-    ranks = sorted(c.rank for c in cases[1:])
-    assert ranks == [1, 2]
+    # options failing the pivot check get no rank; the others rank 1, 2, ...
+    kept = [c for c in cases[1:] if not c.pivot.dropped]
+    assert sorted(c.rank for c in kept) == list(range(1, len(kept) + 1))
+    assert all(c.rank is None for c in cases[1:] if c.pivot.dropped)
     d = results.design[0]
     assert d.ratio is None or d.capacity_demand >= 3.0
+    # the answer's bars as built: they install at least the ratio found, and its FRP mass and
+    # cost are theirs
+    if d.ratio is None:
+        assert d.as_built is None
+    else:
+        assert d.as_built is not None and d.as_built.ratio_installed >= d.ratio
+        assert (d.frp_mass, d.frp_cost) == (d.as_built.mass, d.as_built.cost)
     lines = (tmp_path / "results.csv").read_text().splitlines()
     assert len(lines) == 1 + 3 * 3
     assert results.governing.runs[0].collapsed is True

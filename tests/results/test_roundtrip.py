@@ -30,7 +30,8 @@ def test_ranking_returns_a_new_ranking_and_leaves_the_cases_alone(tmp_path: Path
     result, _ = run_assessment(
         small_inputs(), tmp_path, jobs=2, pdf=False, created="2026-01-01", write=False
     )
-    unranked = tuple(dataclasses.replace(c, rank=None) for c in result.cases)
+    # pivot None: both options stand (the drop rule is tested in test_pivot_and_as_built.py)
+    unranked = tuple(dataclasses.replace(c, rank=None, pivot=None) for c in result.cases)
     # two options, one made cheap and meeting the target: it must rank first
     urm, a, b = unranked
     a = dataclasses.replace(a, capacity_demand=0.5, meets_target=False, frp_cost=1.0)
