@@ -213,9 +213,9 @@ def section(results: Results) -> list[Flowable]:
     has_pivot = any(c.pivot is not None for c in results.cases)
     if not items and not has_pivot:
         return []
-    out: list[Flowable] = [PageBreak(), markup("The retrofit as built", "h1")]
+    out: list[Flowable] = [PageBreak(), markup("6  The retrofit as built", "h1")]
     if items:
-        out.append(markup("Bars, quantities and cost", "h2"))
+        out.append(markup("6.1  Bars, quantities and cost", "h2"))
         out.append(
             grid(
                 layout_table(results),
@@ -237,11 +237,11 @@ def section(results: Results) -> list[Flowable]:
             )
         )
         out.append(CondPageBreak(45 * mm))
-        out.append(markup("Rupture strain of the bars", "h2"))
+        out.append(markup("6.2  Rupture strain of the bars", "h2"))
         out.append(para(strain_rule(results)))
         out.append(grid(strain_table(results), [x * mm for x in (26, 22, 22, 22, 18, 18, 16, 26)]))
         out.append(CondPageBreak(45 * mm))
-        out.append(markup("Anchorage", "h2"))
+        out.append(markup("6.3  Anchorage", "h2"))
         out.append(
             grid(
                 anchorage_table(results),
@@ -271,7 +271,7 @@ def section(results: Results) -> list[Flowable]:
                 )
             )
     out.append(CondPageBreak(60 * mm))
-    out.append(markup("The masonry at the pivot", "h2"))
+    out.append(markup("6.4  The masonry at the pivot", "h2"))
     out.append(para(masonry_text(results)))
     if has_pivot:
         out.append(

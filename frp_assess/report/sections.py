@@ -471,7 +471,7 @@ def options(results: Results) -> list[Flowable]:
 
 
 def governing(results: Results) -> list[Flowable]:
-    out: list[Flowable] = [PageBreak(), h1("6  The governing time history")]
+    out: list[Flowable] = [PageBreak(), h1("7  The governing time history")]
     gov = results.governing
     if not gov or not gov.runs:
         out.append(para("No time history is stored in the results."))
@@ -554,12 +554,21 @@ EQUATIONS = [
     ),
 ]
 
+#: the first assumption, by the pivot rule of the run (docs/model.md §1.1)
+PIVOT_ASSUMPTION = {
+    "edge": "The wall is a rigid monolithic block rocking about its base edges (no sliding, "
+    "no bouncing, no crushing of the edge: the pivot check of section 6.4 says where this "
+    "fails); the analysis is per metre of wall.",
+    "crushing": "The wall is a rigid monolithic block rocking about a pivot inside the "
+    "compressed zone of its base, at x/2 from the edge, x sized on the weight and the bar "
+    "force at rupture and held for the whole time history (conservative below rupture; "
+    "section 6.4); no sliding, no bouncing; the analysis is per metre of wall.",
+}
+
 ASSUMPTIONS = [
-    "The wall is a rigid monolithic block rocking about its base edges (no sliding, no "
-    "bouncing, no crushing of the edge); the analysis is per metre of wall.",
     "The FRP bars are unbonded, not prestressed, anchored at the base and the top, linear "
-    "elastic up to a brittle rupture at ε_max = c·ε_u; they carry no load at rest, so they "
-    "do not change a_RM.",
+    "elastic up to a brittle rupture at the strain ε_max of section 6.2 (c·ε_u with mean "
+    "values, c·η_a·ε_fk/γ_f with design values); they carry no load at rest.",
     "Collapse follows the chosen criterion (section 2.4); the collapse multiplier is the "
     "first one that overturns the wall.",
     "With 7 or more records the mean a_dyn is the design value (EN 1998-1 §4.3.3.4.3, "
@@ -613,7 +622,7 @@ def fc_text(results: Results) -> str:
 
 
 def method(results: Results) -> list[Flowable]:
-    out: list[Flowable] = [PageBreak(), h1("7  Method and references"), h2("7.1  Equations")]
+    out: list[Flowable] = [PageBreak(), h1("8  Method and references"), h2("8.1  Equations")]
     for title, eq in EQUATIONS:
         out.append(markup(f"<b>{esc(title)}.</b>"))
         out.append(markup(eq, "equation"))
@@ -634,10 +643,11 @@ def method(results: Results) -> list[Flowable]:
     check = numerical_check_text(results)
     if check is not None:
         out.append(para(check, "small"))
-    out.append(h2("7.2  Assumptions"))
-    for a in ASSUMPTIONS:
+    out.append(h2("8.2  Assumptions"))
+    rule = results.cases[0].pivot.rule if results.cases[0].pivot is not None else "edge"
+    for a in (PIVOT_ASSUMPTION.get(rule, PIVOT_ASSUMPTION["edge"]), *ASSUMPTIONS):
         out.append(markup("• " + esc(a), "bullet"))
-    out.append(h2("7.3  References"))
+    out.append(h2("8.3  References"))
     for r in REFERENCES:
         out.append(para(r, "reference"))
     sw = results.software
