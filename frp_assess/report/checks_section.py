@@ -5,7 +5,7 @@ Circolare 2019 §C8.7.1 (docs/model.md, "Displacement-based checks"): one table 
 favourable record) with capacity, demand, ζ_E and verdict; one table of the capacity curves
 (e*, M*, d0, d_SLV, T_SLV, demand); a line stating FC and its basis, and the floor when the
 wall stands above ground.  Built from :mod:`frp_assess.results.checks` (read back from
-results.json with :func:`~frp_assess.results.checks.checks_from_dict`).
+results.json through :mod:`frp_assess.results.json_io`).
 
 Formats as :mod:`frp_assess.report.tables`: accelerations in g with 3 decimals, ratios with 2;
 displacements in mm with 1 decimal; periods in s with 3 decimals.

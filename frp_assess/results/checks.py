@@ -4,7 +4,7 @@ Circolare 2019 §C8.7.1 (docs/model.md, "Displacement-based checks"): the linear
 nonlinear static SLV and SLC checks, the time-history check of §C8.7.1.2.1.9 and the IDA's
 verdict, each with its safety index ζ_E = capacity/demand.  Plain frozen dataclasses of
 floats, strings, booleans, tuples and None (no numpy, no other frp_assess module): the field
-names are the results.json keys, :func:`checks_to_dict` and :func:`checks_from_dict` convert.
+names are the results.json keys; :mod:`frp_assess.results.json_io` reads and writes them.
 
 Units: ground accelerations in g (a_g·S, the design intensity at the site); spectral
 accelerations of the capacity curve in m/s²; displacements in m; periods in s; damping ratios
@@ -14,8 +14,7 @@ that fell under a record) is None, never an infinity, so that the JSON stays sta
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass
-from typing import Any
+from dataclasses import dataclass
 
 
 @dataclass(frozen=True)
@@ -137,45 +136,3 @@ class KinematicChecks:
     a_g: float  #: design intensity a_g·S [g]
     floor: FloorBasis | None  #: None: the wall stands at ground level
     cases: tuple[CaseChecks, ...]
-
-
-def checks_to_dict(checks: KinematicChecks) -> dict[str, Any]:
-    """The results.json object of the checks (tuples become lists)."""
-    return asdict(checks)
-
-
-def _floor(d: dict[str, Any] | None) -> FloorBasis | None:
-    return None if d is None else FloorBasis(**d)
-
-
-def _case(d: dict[str, Any]) -> CaseChecks:
-    th = d.get("time_history")
-    ida = d.get("ida")
-    return CaseChecks(
-        case=d["case"],
-        capacity=CapacitySummary(**d["capacity"]),
-        linear=LinearCheck(**d["linear"]),
-        slv=LimitStateResult(**d["slv"]),
-        slc=LimitStateResult(**d["slc"]),
-        time_history=None
-        if th is None
-        else TimeHistoryResult(**{**th, "peaks": tuple(th["peaks"])}),
-        ida=None if ida is None else IdaCheck(**ida),
-    )
-
-
-def checks_from_dict(data: dict[str, Any]) -> KinematicChecks:
-    """The checks back from their results.json object (inverse of :func:`checks_to_dict`).
-
-    Raises:
-        KeyError, TypeError: the object lacks a key or has one more than the dataclasses.
-    """
-    return KinematicChecks(
-        knowledge_level=data["knowledge_level"],
-        fc=data["fc"],
-        fc_basis=data["fc_basis"],
-        fc_in_ida=data["fc_in_ida"],
-        a_g=data["a_g"],
-        floor=_floor(data.get("floor")),
-        cases=tuple(_case(c) for c in data["cases"]),
-    )

@@ -1,7 +1,7 @@
 """The masonry at the pivot in results.json (docs/results-json.md, docs/model.md §1.1).
 
 Plain frozen dataclasses (standard library only): the field names are the JSON keys, written
-with :func:`dataclasses.asdict`.  Forces are per metre of wall length.
+by :mod:`frp_assess.results.json_io`.  Forces are per metre of wall length.
 """
 
 from __future__ import annotations

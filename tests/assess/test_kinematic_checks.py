@@ -40,7 +40,8 @@ from frp_assess.assess.kinematic_checks import (
 )
 from frp_assess.dynamics import RockingModel, Wall
 from frp_assess.motions import ElasticSpectrum, Record
-from frp_assess.results.checks import checks_from_dict, checks_to_dict
+from frp_assess.results.checks import KinematicChecks
+from frp_assess.results.json_io import from_data, to_json
 
 G = 9.80665
 ALPHA = math.radians(7.5)
@@ -169,8 +170,8 @@ def test_worked_example_of_external_cfrp_bars_whose_rupture_limits_d_slv():
 def test_checks_round_trip_through_json():
     """results.json holds the checks as plain JSON (no infinity) and reads them back."""
     checks = kinematic_checks(_inputs(), ida={"Unreinforced": IdaSummary(0.3, 0.2, 7)})
-    text = json.dumps(checks_to_dict(checks), allow_nan=False)
-    assert checks_from_dict(json.loads(text)) == checks
+    text = to_json(checks)  # the writer of results.json (refuses NaN and infinity)
+    assert from_data(KinematicChecks, json.loads(text)) == checks
     assert checks.cases[0].ida is not None and checks.cases[1].ida is None
 
 
