@@ -23,7 +23,12 @@ from frp_assess.assess.cache import IdaCache, cache_file, record_digest, task_ke
 from frp_assess.assess.code_check import simple_overturning_check
 from frp_assess.assess.floor_input import floor_record, floor_spectra
 from frp_assess.assess.inputs import AssessmentInputs, Material
-from frp_assess.assess.kinematic_checks import IdaSummary, ida_confidence_factor, kinematic_checks
+from frp_assess.assess.kinematic_checks import (
+    IdaSummary,
+    floor_ratio,
+    ida_confidence_factor,
+    kinematic_checks,
+)
 from frp_assess.assess.results import (
     below_collapse,
     build_results,
@@ -207,10 +212,11 @@ def run_assessment(
         seismic=seismic,
         cases=cases,
         recommended=recommended,
+        # above ground the linear check's demand is a_Z, the floor's peak acceleration at Z
         check=simple_overturning_check(
             inputs.thickness,
             inputs.height,
-            demand,
+            demand * floor_ratio(inputs.spectrum, inputs.building),
             inputs.code_check.knowledge_level,
             inputs.code_check.behaviour_factor,
         ),

@@ -24,7 +24,7 @@ class KinematicCheck:
     knowledge_level: str
     behaviour_factor: float  #: q [-]
     a0_star: float  #: spectral acceleration of activation [g]
-    demand: float  #: a_g·S/q [g]
+    demand: float  #: a_g·S/q [g] (a_Z/q above ground)
 
     @property
     def ratio(self) -> float:
@@ -42,7 +42,8 @@ def simple_overturning_check(
     knowledge_level: str = "LC1",
     behaviour_factor: float = 2.0,
 ) -> KinematicCheck:
-    """Args: B, H [m]; a_g·S [g] of the site; knowledge level LC1–LC3; q [-]."""
+    """Args: B, H [m]; a_g·S [g] of the site (a_Z, the floor's peak acceleration at the
+    wall's base, for a wall above ground); knowledge level LC1–LC3; q [-]."""
     if knowledge_level not in CONFIDENCE_FACTORS:
         raise ValueError(f"knowledge level must be LC1, LC2 or LC3, got {knowledge_level!r}")
     alpha0 = thickness / height

@@ -344,7 +344,16 @@ def compliance_result(seismic: SeismicInput) -> Compliance:
     )
 
 
-def code_check_result(check: KinematicCheck, mass: float) -> CodeCheck:
+def code_check_result(
+    check: KinematicCheck, mass: float, above_ground: bool = False
+) -> CodeCheck:
+    """The linear check of results.json; ``above_ground``: its demand is a_Z/q."""
+    at_height = (
+        " Above ground the demand is a_Z/q, a_Z the peak acceleration of the floor at the "
+        "wall's base (Circolare 2019 eq. C7.2.7, first mode; §C8.7.1.2.1.7)."
+        if above_ground
+        else ""
+    )
     return CodeCheck(
         alpha0=check.alpha0,
         e_star=check.e_star,
@@ -357,7 +366,7 @@ def code_check_result(check: KinematicCheck, mass: float) -> CodeCheck:
         ratio=check.ratio,
         passed=check.passed,
         note="Passive unbonded bars carry no load at rest: they do not change alpha0, "
-        "so this check is the same for every retrofit option.",
+        "so this check is the same for every retrofit option." + at_height,
     )
 
 
@@ -481,7 +490,9 @@ def build_results(
         demand=Demand(pga=inputs.spectrum.pga_g),
         records=records,
         compliance=compliance_result(seismic),
-        code_check=code_check_result(check, inputs.wall.mass),
+        code_check=code_check_result(
+            check, inputs.wall.mass, above_ground=inputs.building is not None
+        ),
         cases=tuple(cases),
         ranking_rule=RANKING_RULE.format(target=inputs.target),
         recommended=recommended,

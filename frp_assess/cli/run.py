@@ -249,7 +249,8 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
     cc = results.code_check
     console.print(
         f"code kinematic check (Circolare 2019 §C8.7.1, q = {cc.behaviour_factor:g}, "
-        f"FC = {cc.FC:g}): a0* = {cc.a0_star:.3f} g vs a_g·S/q = {cc.demand:.3f} g "
+        f"FC = {cc.FC:g}): a0* = {cc.a0_star:.3f} g vs "
+        f"{'a_Z/q' if results.building else 'a_g·S/q'} = {cc.demand:.3f} g "
         f"-> {'satisfied' if cc.passed else 'NOT satisfied'}. {user(cc.note)}"
     )
     if len(results.cases) > 1:

@@ -95,20 +95,6 @@ def linear_check(results: Results) -> LinearSummary:
     return LinearSummary(k.a0_star, k.demand, k.ratio, k.passed)
 
 
-def ground_demand_note(results: Results) -> str | None:
-    """For a wall above ground: the check of §4.3 uses the ground demand, the one at height
-    is in §4.4; None at ground level."""
-    kc = results.kinematic_checks
-    if results.building is None or kc is None or not kc.cases:
-        return None
-    lin = kc.cases[0].linear
-    return (
-        "This linear check compares a0* with the ground demand a_g·S/q; the wall stands above "
-        f"ground, where the demand is a_Z/q = {fmt_acc(lin.demand)} g (ratio "
-        f"{lin.zeta_e:.2f}, {'satisfied' if lin.passed else 'NOT satisfied'}; section 4.4)."
-    )
-
-
 def floor_spectra_chart(
     results: Results, *, width: float = st.FRAME_WIDTH, height: float = 220
 ) -> Drawing | None:

@@ -337,9 +337,6 @@ def unreinforced(results: Results) -> list[Flowable]:
     note = results.code_check.note
     if note:
         out.append(para(note, "caption"))
-    above = floor_section.ground_demand_note(results)
-    if above is not None:
-        out.append(para(above, "caption"))
     out += floor_section.checks_part(results)
     return out
 

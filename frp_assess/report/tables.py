@@ -550,7 +550,7 @@ def code_check_rows(results: Results) -> list[list[str]]:
         ],
         ["behaviour factor q", f"{k.behaviour_factor:g}"],
         ["a₀* = α₀·g / (e*·FC)", f"{fmt_acc(k.a0_star)} g"],
-        ["demand a_g·S / q", f"{fmt_acc(k.demand)} g"],
+        ["demand a_Z / q" if results.building else "demand a_g·S / q", f"{fmt_acc(k.demand)} g"],
         ["ratio a₀* / demand", fmt_ratio(k.ratio)],
         ["verdict", "satisfied" if k.passed else "NOT satisfied"],
     ]

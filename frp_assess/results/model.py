@@ -211,7 +211,8 @@ class Compliance:
 class CodeCheck:
     """NTC 2018 / Circolare 2019 §C8.7.1 linear kinematic check of the unreinforced wall:
     alpha0 load multiplier [-], e_star [-], M_star [kg/m], FC [-], behaviour factor [-],
-    a0_star and demand = a_g·S/q [g], ratio a0_star/demand [-]."""
+    a0_star and demand [g] (a_g·S/q at ground level, a_Z/q above it: the floor's peak
+    acceleration at the wall's base), ratio a0_star/demand [-]."""
 
     alpha0: float
     e_star: float

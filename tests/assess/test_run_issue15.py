@@ -92,5 +92,11 @@ def test_wall_above_ground_in_the_results(tmp_path):
             assert r.floor_pga is not None and r.floor_pga > r.pga  # the floor amplifies
     assert results.kinematic_checks.floor is not None
     assert results.kinematic_checks.floor.z_over_h == pytest.approx(0.9)
+    # the linear check of code_check takes the demand at the wall's base, a_Z/q, as the
+    # linear check of kinematic_checks (Circolare 2019 eq. C7.2.7; §C8.7.1.2.1.7)
+    lin = results.kinematic_checks.cases[0].linear
+    assert results.code_check.demand == pytest.approx(lin.demand, rel=1e-12)
+    assert results.code_check.demand > results.demand.pga / results.code_check.behaviour_factor
+    assert "a_Z/q" in results.code_check.note
     text = (tmp_path / "results.json").read_text()
     assert from_json(text) == results and to_json(results) == text
