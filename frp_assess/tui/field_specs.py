@@ -2,6 +2,8 @@
 
 Every input is a :class:`~frp_assess.tui.fields.FieldRow` bound to a key path of the
 project file; the help text of each field is the schema's own description (units, range).
+The model and IDA options are derived whole from their declaration (``dynamics/options.py``,
+see :mod:`~frp_assess.tui.option_fields`).
 The panes (``wall_pane``, ``site_pane``, ``records_pane``, ``analysis_pane``) lay them out;
 :class:`~frp_assess.tui.project_form.ProjectForm` collects and validates them.
 """
@@ -22,8 +24,6 @@ from frp_assess.config.schema import (
     CostsSpec,
     DesignSpec,
     Ec8Spectrum,
-    IdaSpec,
-    IntegrationSpec,
     Ntc2018Spectrum,
     PresetSpectrum,
     ProjectInfo,
@@ -32,7 +32,21 @@ from frp_assess.config.schema import (
     TableSpectrum,
     WallSpec,
 )
+from frp_assess.dynamics.options import (
+    COLLAPSE,
+    FREE_VIBRATION_TAIL,
+    IDA_MAX_MULTIPLIER,
+    IDA_STEP_RATIO,
+    IDA_TOLERANCE,
+    INTEGRATION_TOLERANCE,
+    PIVOT,
+    RESTITUTION,
+    RUPTURE,
+    STRAIN_FACTOR,
+    VERIFY,
+)
 from frp_assess.tui.fields import FieldSpec, choice, field_help, items, num, text
+from frp_assess.tui.option_fields import option_field
 
 W = ("wall",)
 SP = ("seismic", "spectrum")
@@ -222,42 +236,29 @@ SCALE_FIELD = choice(
 
 IDA = (*AN, "ida")
 INTEGRATION = (*AN, "integration")
+#: the declared options (dynamics/options.py), each field derived from its declaration
 ANALYSIS_FIELDS = (
-    num((*AN, "restitution"), "Restitution", "or 0-1", AnalysisSpec, optional=True),
-    choice(
-        (*AN, "rupture"),
-        "Bar rupture",
-        None,
-        AnalysisSpec,
-        width=22,
-    ),
-    choice(
-        (*AN, "collapse"),
-        "Collapse",
-        None,
-        AnalysisSpec,
-        width=22,
-    ),
-    choice(
+    option_field((*AN, "restitution"), "Restitution", RESTITUTION),
+    option_field((*AN, "rupture"), "Bar rupture", RUPTURE),
+    option_field((*AN, "collapse"), "Collapse", COLLAPSE),
+    option_field(
         (*AN, "pivot"),
         "Pivot",
-        (("crushing (x/2 in)", "crushing"), ("edge (paper)", "edge")),
-        AnalysisSpec,
-        width=22,
+        PIVOT,
+        labels={"crushing": "crushing (x/2 in)", "edge": "edge (paper)"},
     ),
-    num((*AN, "strain_factor"), "Strain factor c", "-", AnalysisSpec, optional=True),
-    num((*AN, "free_vibration_tail"), "Free tail", "s", AnalysisSpec, optional=True),
-    num((*INTEGRATION, "tolerance"), "Integration tol.", "-", IntegrationSpec, optional=True),
-    choice(
+    option_field((*AN, "strain_factor"), "Strain factor c", STRAIN_FACTOR),
+    option_field((*AN, "free_vibration_tail"), "Free tail", FREE_VIBRATION_TAIL),
+    option_field((*INTEGRATION, "tolerance"), "Integration tol.", INTEGRATION_TOLERANCE),
+    option_field(
         (*INTEGRATION, "verify"),
         "Numerical check",
-        (("off", False), ("10x tighter", True)),
-        IntegrationSpec,
-        width=22,
+        VERIFY,
+        labels={False: "off", True: "10x tighter"},
     ),
-    num((*IDA, "step_ratio"), "IDA step ratio", "> 1", IdaSpec, optional=True),
-    num((*IDA, "tolerance"), "IDA tolerance", "0-0.1", IdaSpec, optional=True),
-    num((*IDA, "max_multiplier"), "IDA max C/C0", "", IdaSpec, optional=True),
+    option_field((*IDA, "step_ratio"), "IDA step ratio", IDA_STEP_RATIO),
+    option_field((*IDA, "tolerance"), "IDA tolerance", IDA_TOLERANCE),
+    option_field((*IDA, "max_multiplier"), "IDA max C/C0", IDA_MAX_MULTIPLIER),
     num((*AN, "target"), "Target C/D", "", AnalysisSpec, optional=True),
 )
 CODE_FIELDS = (
