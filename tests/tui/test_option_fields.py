@@ -10,9 +10,11 @@ hand here from the declared bounds (docs/model.md §5: s in [1.01, 10], toleranc
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any
 
 import pytest
+from textual.widgets import Input, Label, Static, TabbedContent
 
 from frp_assess.config.schema import AnalysisSpec
 from frp_assess.dynamics.options import (
@@ -31,9 +33,11 @@ from frp_assess.dynamics.options import (
     VERIFY,
     Option,
 )
+from frp_assess.tui.app import FrpAssessApp
 from frp_assess.tui.field_specs import ANALYSIS_FIELDS
 from frp_assess.tui.fields import FieldSpec
 from frp_assess.tui.option_fields import option_field, option_hint
+from tests.tui.conftest import run_async, settle
 
 #: where each declared option lives in a project file (docs/project-file keys)
 OPTION_PATHS: list[tuple[tuple[str, ...], Option[Any]]] = [
@@ -119,3 +123,36 @@ def test_option_hint_and_labels() -> None:
     assert spec.choices == (("a", "a"), ("b (other)", "b"))
     with pytest.raises(ValueError, match="c"):
         option_field(("a", "w"), "W", word, labels={"c": "?"})
+
+
+def test_the_analysis_tab_shows_and_checks_the_declared_range(small_project: Path) -> None:
+    """Driven with Pilot: the step ratio's row shows the declared range, its help line is the
+    declaration's, and 1.005 (below 1.01, above the old hint's ``> 1``) is refused on the field
+    while 1.2 is taken into the project."""
+
+    async def body() -> None:
+        app = FrpAssessApp(small_project)
+        path = ("analysis", "ida", "step_ratio")
+        async with app.run_test(size=(100, 30)) as pilot:
+            await pilot.pause()
+            await pilot.press("f7")
+            tabs = app.query_one("#tabs", TabbedContent)
+            await settle(pilot, lambda: tabs.active == "tab-analysis")
+            row = next(r for r in app.rows if r.spec.path == path)
+            assert str(row.query_one(".f-unit", Label).content) == "[1.01, 10] (1.1)"
+            box = row.query_one(Input)
+            box.focus()
+            help_line = app.query_one("#help-line", Static)
+            await settle(pilot, lambda: str(help_line.content) == IDA_STEP_RATIO.describe())
+            box.value = "1.00"
+            box.cursor_position = len(box.value)
+            await pilot.press("5")
+            await settle(pilot, lambda: row.error is not None)
+            assert row.error is not None and "[1.01, 10]" in row.error and "1.005" in row.error
+            box.value = "1."
+            box.cursor_position = len(box.value)
+            await pilot.press("2")
+            await settle(pilot, lambda: row.error is None and app.project is not None)
+            assert app.project is not None and app.project.analysis.ida.step_ratio == 1.2
+
+    run_async(body)
