@@ -18,6 +18,7 @@ from textual.message import Message
 from textual.widgets import Button, Input, Label, Select, Static
 
 from frp_assess.assess.results import below_collapse
+from frp_assess.dynamics.options import IDA_TOLERANCE
 from frp_assess.results.model import AssessmentResult, RecordResult
 from frp_assess.tui.core.session import HistoryData, RunOutcome, case_history
 from frp_assess.tui.core.text import printable
@@ -63,7 +64,8 @@ class HistoryPane(Vertical):
     def on_mount(self) -> None:
         self.outcome: RunOutcome | None = None
         self.results: AssessmentResult | None = None
-        self.tolerance = 0.005
+        #: the IDA's bisection tolerance [-] of the results shown (the declared default before)
+        self.tolerance: float = IDA_TOLERANCE.default
         self._needs_update = False
 
     def set_case(self, case: int) -> None:
