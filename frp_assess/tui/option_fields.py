@@ -38,7 +38,8 @@ def option_field(
     A number (with or without words besides) is an optional input whose unit text is
     :func:`option_hint` and the default (``[1.01, 10] (1.1)``); a word option is a choice of
     its words, a yes/no option a choice of ``False``/``True``; ``labels`` names a value in the
-    list (the value itself otherwise); ``width`` of the input (14 cells, a choice 22).
+    list (the value itself otherwise).  ``width`` of the input: a number's 10 cells (its range
+    text needs the room right of it), a choice's 22.
     """
     help_text = option.describe()
     if option.numeric:
@@ -50,7 +51,7 @@ def option_field(
             unit=unit,
             help=help_text,
             optional=True,
-            width=width or 14,
+            width=width or 10,
             default=option.default,
         )
     values: tuple[Any, ...] = (False, True) if option.is_flag else option.choices
