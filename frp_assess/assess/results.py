@@ -420,6 +420,13 @@ def history_run(label: str, multiplier: float, res: Any, alpha: float) -> Histor
     )
 
 
+def applied_restitution_ratio(inputs: AssessmentInputs) -> float:
+    """The velocity ratio [-] applied at an impact of the unreinforced wall's model: Eqs. 13–14
+    at the slenderness about its pivot (α' with ``pivot: crushing``, docs/model.md §1.1), as
+    ``wall.a_rm`` is stated about that pivot; each option's own ratio follows its own α'."""
+    return inputs.model_for(None).impact_velocity_ratio
+
+
 def build_results(
     *,
     inputs: AssessmentInputs,
@@ -452,7 +459,6 @@ def build_results(
         for r, sa in zip(seismic.records, seismic.compliance.spectra, strict=True)
     )
     m = inputs.model
-    from frp_assess.dynamics import velocity_ratio
 
     return AssessmentResult(
         schema_version=SCHEMA_VERSION,
@@ -463,7 +469,7 @@ def build_results(
         wall=wall_result(inputs),
         model=ModelSettings(
             restitution=m.restitution,
-            restitution_ratio=velocity_ratio(m.restitution, inputs.mechanism, inputs.wall.alpha),
+            restitution_ratio=applied_restitution_ratio(inputs),
             rupture=m.rupture,
             collapse=m.collapse,
             strain_factor=inputs.strain_factor,

@@ -89,7 +89,8 @@ class IdaSettings:
 @dataclass(frozen=True)
 class ModelSettings:
     """The model conventions of the run; restitution_ratio is the velocity ratio applied at
-    an impact [-], strain_factor c of eps_max = c·eps_u [-], free_vibration_tail [s], target
+    an impact of the unreinforced wall's model, at the slenderness about its pivot [-],
+    strain_factor c of eps_max = c·eps_u [-], free_vibration_tail [s], target
     capacity/demand [-]; design_value says how design_a_dyn is taken (prose)."""
 
     restitution: str | float  #: energy | velocity, or the coefficient itself [-]
