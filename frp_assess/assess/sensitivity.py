@@ -66,9 +66,9 @@ def sensitivity(
     """Design a_dyn and capacity/demand of ``model`` under every convention variant."""
     variants = convention_variants(model)
     results = runner.run([m for _, m in variants])
-    a_rm = model.wall.a_rm_g
     rows = []
-    for (label, _), res in zip(variants, results, strict=True):
-        s = summarise(res, max_multiplier, a_rm)
+    for (label, variant), res in zip(variants, results, strict=True):
+        # a_RM of the variant's own model: with pivot: crushing E and c move the pivot
+        s = summarise(res, max_multiplier, variant.a_rm_g)
         rows.append(SensitivityRow(label, s.design_a_dyn, s.design_a_dyn / demand_g, s.lower_bound))
     return rows
