@@ -21,7 +21,7 @@ MODULUS_CHANGE = 0.10
 class SensitivityRow:
     variant: str  #: what was changed ("as assessed" for the case itself)
     design_a_dyn: float  #: [g]
-    capacity_demand: float  #: design_a_dyn / a_g·S [-]
+    capacity_demand: float  #: design_a_dyn / (FC·a_g·S) [-], as the cases'
     lower_bound: bool  #: some record did not collapse up to C_max
 
 
@@ -63,7 +63,8 @@ def sensitivity(
     demand_g: float,
     max_multiplier: float,
 ) -> list[SensitivityRow]:
-    """Design a_dyn and capacity/demand of ``model`` under every convention variant."""
+    """Design a_dyn and capacity/demand of ``model`` under every convention variant;
+    ``demand_g`` [g] is what divides the capacity, FC·a_g·S (as the cases')."""
     variants = convention_variants(model)
     results = runner.run([m for _, m in variants])
     rows = []

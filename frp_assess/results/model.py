@@ -281,7 +281,7 @@ class CaseResult:
 
     ratio [‰]; elastic_modulus [GPa]; ultimate_strain [-]; K restraint stiffness term of
     Eq. 10 [-]; theta_max rupture rotation [rad]; accelerations (mean/min/design a_dyn) [g];
-    q [-]; capacity_demand = design_a_dyn / demand.pga [-]; improvement = design_a_dyn over
+    q [-]; capacity_demand = design_a_dyn / (fc·demand.pga) [-]; improvement = design_a_dyn over
     that of the unreinforced wall [-]; frp_mass_per_m [kg/m]; frp_mass [kg] and frp_cost
     [currency] for the whole wall (of the bars as built when ``as_built`` is set); rank 1 =
     recommended, None for the unreinforced wall and for an option the pivot check dropped;
