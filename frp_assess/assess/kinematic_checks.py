@@ -64,11 +64,7 @@ from frp_assess.results.checks import (
     LinearCheck,
     TimeHistoryResult,
 )
-
-#: With ≥ this many records the mean is the design value, else the least favourable record
-#: (EC8 §4.3.3.4.3, NTC 2018 §7.3.5; docs/model.md §5).
-MIN_RECORDS_FOR_MEAN = 7
-
+from frp_assess.results.model import MEAN_OF_RECORDS_FROM
 
 # --- the confidence factor in the IDA verdict ---------------------------------------------
 
@@ -127,7 +123,7 @@ def ida_check(ida: IdaSummary, demand: float, fc: float) -> IdaCheck:
     (the mean with ≥ 7 records, else the least favourable; docs/model.md §5)."""
     mean = ida_capacity_demand(ida.mean_a_dyn, demand, fc)
     least = ida_capacity_demand(ida.least_a_dyn, demand, fc)
-    rule = "mean" if ida.records >= MIN_RECORDS_FOR_MEAN else "least"
+    rule = "mean" if ida.records >= MEAN_OF_RECORDS_FROM else "least"
     zeta = mean if rule == "mean" else least
     return IdaCheck(fc, demand, mean, least, rule, zeta, zeta >= 1.0)
 
