@@ -17,8 +17,9 @@ clause functions of :mod:`frp_assess.assess.kinematic_nonlinear` and
 
 A wall above ground (Circolare 2019 §C7.2.3) takes its demand from the floor spectrum
 (eq. C8.7.1.12) and, in the time-history check, its base motion from the floor filter of
-:mod:`frp_assess.motions.floor`.  The building is described by any object with the attributes
-of :class:`FloorPosition` (the project's ``building`` block once it exists).
+:mod:`frp_assess.motions.floor`.  The building is any object with the attributes of
+:class:`Building` (the project's ``building`` block, :class:`~frp_assess.assess.inputs.Building`,
+or a :class:`FloorPosition`).
 
 Units: ground accelerations in g (a_g·S); records in m/s²; displacements in m.
 """
@@ -63,11 +64,7 @@ from frp_assess.results.checks import (
     LinearCheck,
     TimeHistoryResult,
 )
-
-#: With ≥ this many records the mean is the design value, else the least favourable record
-#: (EC8 §4.3.3.4.3, NTC 2018 §7.3.5; docs/model.md §5).
-MIN_RECORDS_FOR_MEAN = 7
-
+from frp_assess.results.model import MEAN_OF_RECORDS_FROM
 
 # --- the confidence factor in the IDA verdict ---------------------------------------------
 
@@ -126,7 +123,7 @@ def ida_check(ida: IdaSummary, demand: float, fc: float) -> IdaCheck:
     (the mean with ≥ 7 records, else the least favourable; docs/model.md §5)."""
     mean = ida_capacity_demand(ida.mean_a_dyn, demand, fc)
     least = ida_capacity_demand(ida.least_a_dyn, demand, fc)
-    rule = "mean" if ida.records >= MIN_RECORDS_FOR_MEAN else "least"
+    rule = "mean" if ida.records >= MEAN_OF_RECORDS_FROM else "least"
     zeta = mean if rule == "mean" else least
     return IdaCheck(fc, demand, mean, least, rule, zeta, zeta >= 1.0)
 
@@ -153,8 +150,9 @@ class Building(Protocol):
 class FloorPosition:
     """A wall whose rocking base is at Z in a building (Circolare 2019 §C7.2.3, first mode).
 
-    Stands in for ``AssessmentInputs.building`` until the project has that block; any object
-    with these attributes is accepted by :func:`kinematic_checks`.
+    For a caller without a project (T1 may be left to C1·H_b^(3/4)); any object with these
+    attributes, ``AssessmentInputs.building`` among them, is accepted by
+    :func:`kinematic_checks`.
     """
 
     height: float  #: H_b [m]
@@ -386,11 +384,11 @@ def kinematic_checks(
         records: the ground records (each is scaled to PGA = a_g·S here, :func:`base_motions`);
             None: no time-history check.
         ida: the IDA's a_dyn by case name; a case missing from it gets no IDA line.
-        building: the building around a wall above ground; None: ``inputs.building`` if the
-            inputs have that attribute, else ground level.
+        building: the building around a wall above ground; None: ``inputs.building`` (None
+            there too: ground level).
     """
     if building is None:
-        building = getattr(inputs, "building", None)
+        building = inputs.building
     settings = inputs.code_check
     a_g = inputs.spectrum.pga_g
     ratio = floor_ratio(inputs.spectrum, building)

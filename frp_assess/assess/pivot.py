@@ -28,6 +28,7 @@ from frp_assess.assess.masonry import (
     PivotCheck,
     bar_force,
     bar_lever_arm,
+    max_ratio_for_pivot,
     pivot_check,
     wall_weight,
 )
@@ -204,6 +205,4 @@ def largest_ratio(
     f_d = inputs.masonry_strength.f_d
     strain = inputs.rupture_strain(material)  # ε_max the model uses [-]
     bound = limit * b if inputs.model.pivot == "edge" else bar_lever_arm(position, b)
-    capacity = STRESS_BLOCK_FACTOR * f_d * 1e3 * bound  # [kN/m]
-    per_permille = bar_force(1.0, b, material.elastic_modulus, strain)  # T_u of 1 ‰ [kN/m]
-    return max(capacity - weight, 0.0) / per_permille
+    return max_ratio_for_pivot(weight, b, material.elastic_modulus, strain, f_d, bound / b)

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from frp_assess.assess.as_built import option_as_built
 from frp_assess.assess.inputs import AssessmentInputs, Costs, Material, Option
 from frp_assess.dynamics import Position
+from frp_assess.results.as_built import AsBuilt
 
 
 @dataclass(frozen=True)
@@ -57,11 +58,24 @@ def quantity_for(
     )
 
 
+def built_quantity(
+    inputs: AssessmentInputs,
+    built: AsBuilt | None,
+    material: Material,
+    position: Position,
+    ratio: float,
+) -> Quantity:
+    """The quantity of the bars as ``built`` (mass and cost over the bar length); without a
+    layout (``bars.whole_bars: false`` and no size fits) the smeared estimate of ``ratio``
+    [‰] (:func:`quantity_for`)."""
+    if built is None:
+        return quantity_for(inputs, material, position, ratio)
+    return Quantity(built.mass / inputs.length, built.mass, built.cost)
+
+
 def option_quantity(inputs: AssessmentInputs, option: Option) -> Quantity:
     """The bars of ``option`` as built: n whole bars per line × lines × bar length
     (H + 2·bond length when ``bars.anchorage`` is given), × bar area × density; cost as
     :func:`frp_quantity` (which it falls back on for an option that cannot be built)."""
     built = option_as_built(inputs, option)
-    if built is None:  # cannot be built (bars.whole_bars: false): the smeared estimate
-        return quantity_for(inputs, option.material, option.position, option.ratio)
-    return Quantity(built.mass / inputs.length, built.mass, built.cost)
+    return built_quantity(inputs, built, option.material, option.position, option.ratio)

@@ -28,7 +28,7 @@ from frp_assess.assess.inputs import (
 )
 from frp_assess.assess.kinematic_checks import ida_capacity_demand
 from frp_assess.assess.pivot import case_pivot, masonry_result
-from frp_assess.assess.quantities import quantity_for
+from frp_assess.assess.quantities import built_quantity
 from frp_assess.assess.ranking import RANKING_RULE, Rankable, rank_options
 from frp_assess.assess.runner import CaseSummary, DesignResult, design_value_rule
 from frp_assess.assess.seismic import SeismicInput
@@ -163,7 +163,7 @@ def case_result(
     its bars as built (:func:`~frp_assess.assess.as_built.option_as_built`): FRP mass and
     cost are then those of the bars as built (whole bars, bond lengths counted); an option
     that cannot be built (``bars.whole_bars: false``) keeps the smeared quantities of its
-    ratio (:func:`~frp_assess.assess.quantities.quantity_for`).
+    ratio (:func:`~frp_assess.assess.quantities.built_quantity`).
     """
     pgas: Sequence[float | None] = [None] * len(names) if floor_pga is None else floor_pga
     records = tuple(
@@ -183,10 +183,8 @@ def case_result(
     built = None if option is None else option_as_built(inputs, option)
     if option is None:
         q_mass = q_mass_m = cost = 0.0
-    elif built is not None:
-        q_mass, q_mass_m, cost = built.mass, built.mass / inputs.length, built.cost
     else:
-        q = quantity_for(inputs, option.material, option.position, option.ratio)
+        q = built_quantity(inputs, built, option.material, option.position, option.ratio)
         q_mass, q_mass_m, cost = q.mass, q.mass_per_m, q.cost
     cd = ida_capacity_demand(summary.design_a_dyn, demand, fc)
     return CaseResult(
@@ -378,10 +376,8 @@ def design_rows(inputs: AssessmentInputs, found: Sequence[DesignResult]) -> tupl
         built = design_as_built(inputs, d)
         mass: float | None = None
         cost: float | None = None
-        if built is not None:
-            mass, cost = built.mass, built.cost
-        elif d.ratio is not None:
-            q = quantity_for(inputs, d.material, d.position, d.ratio)
+        if d.ratio is not None:
+            q = built_quantity(inputs, built, d.material, d.position, d.ratio)
             mass, cost = q.mass, q.cost
         out.append(
             DesignRow(
@@ -420,6 +416,13 @@ def history_run(label: str, multiplier: float, res: Any, alpha: float) -> Histor
     )
 
 
+def applied_restitution_ratio(inputs: AssessmentInputs) -> float:
+    """The velocity ratio [-] applied at an impact of the unreinforced wall's model: Eqs. 13–14
+    at the slenderness about its pivot (α' with ``pivot: crushing``, docs/model.md §1.1), as
+    ``wall.a_rm`` is stated about that pivot; each option's own ratio follows its own α'."""
+    return inputs.model_for(None).impact_velocity_ratio
+
+
 def build_results(
     *,
     inputs: AssessmentInputs,
@@ -452,7 +455,6 @@ def build_results(
         for r, sa in zip(seismic.records, seismic.compliance.spectra, strict=True)
     )
     m = inputs.model
-    from frp_assess.dynamics import velocity_ratio
 
     return AssessmentResult(
         schema_version=SCHEMA_VERSION,
@@ -463,7 +465,7 @@ def build_results(
         wall=wall_result(inputs),
         model=ModelSettings(
             restitution=m.restitution,
-            restitution_ratio=velocity_ratio(m.restitution, inputs.mechanism, inputs.wall.alpha),
+            restitution_ratio=applied_restitution_ratio(inputs),
             rupture=m.rupture,
             collapse=m.collapse,
             strain_factor=inputs.strain_factor,

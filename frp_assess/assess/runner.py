@@ -22,6 +22,7 @@ from frp_assess.dynamics import (
     run_batch,
 )
 from frp_assess.motions import G, Record
+from frp_assess.results.model import MEAN_OF_RECORDS_FROM
 
 #: progress(stage, done, total)
 Progress = Callable[[str, int, int], None]
@@ -39,11 +40,6 @@ class CaseSummary:
     mean_q: float
     design_a_dyn: float  #: mean with ≥ 7 records, else the least favourable [g]
     lower_bound: bool  #: some record did not collapse up to C_max: values are lower bounds
-
-
-#: with this many records or more the design a_dyn is their mean, with fewer the least
-#: favourable one (EN 1998-1 §4.3.3.4.3, NTC 2018 §7.3.5)
-MEAN_OF_RECORDS_FROM = 7
 
 
 def design_value_rule(n_records: int) -> str:

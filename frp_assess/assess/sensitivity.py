@@ -21,7 +21,7 @@ MODULUS_CHANGE = 0.10
 class SensitivityRow:
     variant: str  #: what was changed ("as assessed" for the case itself)
     design_a_dyn: float  #: [g]
-    capacity_demand: float  #: design_a_dyn / a_g·S [-]
+    capacity_demand: float  #: design_a_dyn / (FC·a_g·S) [-], as the cases'
     lower_bound: bool  #: some record did not collapse up to C_max
 
 
@@ -63,12 +63,13 @@ def sensitivity(
     demand_g: float,
     max_multiplier: float,
 ) -> list[SensitivityRow]:
-    """Design a_dyn and capacity/demand of ``model`` under every convention variant."""
+    """Design a_dyn and capacity/demand of ``model`` under every convention variant;
+    ``demand_g`` [g] is what divides the capacity, FC·a_g·S (as the cases')."""
     variants = convention_variants(model)
     results = runner.run([m for _, m in variants])
-    a_rm = model.wall.a_rm_g
     rows = []
-    for (label, _), res in zip(variants, results, strict=True):
-        s = summarise(res, max_multiplier, a_rm)
+    for (label, variant), res in zip(variants, results, strict=True):
+        # a_RM of the variant's own model: with pivot: crushing E and c move the pivot
+        s = summarise(res, max_multiplier, variant.a_rm_g)
         rows.append(SensitivityRow(label, s.design_a_dyn, s.design_a_dyn / demand_g, s.lower_bound))
     return rows

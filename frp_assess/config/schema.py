@@ -870,6 +870,18 @@ class Project(_Model):
                     "materials",
                     name,
                 )
+        table = self.material_table()
+        for name in self.materials:  # the library gives no eps_fk: the file gave this one
+            eps_u, eps_fk = table[name].ultimate_strain, table[name].characteristic_strain
+            if eps_fk is not None and eps_fk > eps_u:
+                raise located_error(
+                    f"expected characteristic_strain eps_fk <= ultimate_strain eps_u = "
+                    f"{eps_u:g} (the 5 % fractile lies below the mean), found "
+                    f"{eps_fk:g}",
+                    "materials",
+                    name,
+                    "characteristic_strain",
+                )
         self._check_option_count()
         known = self.material_names()
         for i, item in enumerate(self.interventions):

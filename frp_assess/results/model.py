@@ -89,7 +89,8 @@ class IdaSettings:
 @dataclass(frozen=True)
 class ModelSettings:
     """The model conventions of the run; restitution_ratio is the velocity ratio applied at
-    an impact [-], strain_factor c of eps_max = c·eps_u [-], free_vibration_tail [s], target
+    an impact of the unreinforced wall's model, at the slenderness about its pivot [-],
+    strain_factor c of eps_max = c·eps_u [-], free_vibration_tail [s], target
     capacity/demand [-]; design_value says how design_a_dyn is taken (prose)."""
 
     restitution: str | float  #: energy | velocity, or the coefficient itself [-]
@@ -280,7 +281,7 @@ class CaseResult:
 
     ratio [‰]; elastic_modulus [GPa]; ultimate_strain [-]; K restraint stiffness term of
     Eq. 10 [-]; theta_max rupture rotation [rad]; accelerations (mean/min/design a_dyn) [g];
-    q [-]; capacity_demand = design_a_dyn / demand.pga [-]; improvement = design_a_dyn over
+    q [-]; capacity_demand = design_a_dyn / (fc·demand.pga) [-]; improvement = design_a_dyn over
     that of the unreinforced wall [-]; frp_mass_per_m [kg/m]; frp_mass [kg] and frp_cost
     [currency] for the whole wall (of the bars as built when ``as_built`` is set); rank 1 =
     recommended, None for the unreinforced wall and for an option the pivot check dropped;
