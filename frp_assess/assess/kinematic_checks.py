@@ -254,20 +254,31 @@ def base_motions(
 # --- the checks of one case ----------------------------------------------------------------
 
 
+def edge_rotation(theta: float, model: RockingModel) -> float:
+    """The rotation [rad] of the code's rigid block about its edge that is as far from
+    tipping as ``theta`` is about the model's pivot: θ·α/α'.
+
+    With ``pivot: crushing`` the model turns about a pivot x/2 inside the base and tips at
+    α' < α (docs/model.md §1.1), while the capacity curve, d0 and d_SLV of the code's checks
+    are those of the block about its edge (d_C(α) = B/2); the same fraction of the way to
+    tipping keeps the comparison on one geometry (θ = α' gives d0).  Identity for the edge
+    pivot."""
+    return theta * model.wall.alpha / model.alpha
+
+
 def peak_displacements(
     model: RockingModel,
     motions: Sequence[tuple[NDArray[np.float64], float]],
     scale: float = 1.0,
 ) -> tuple[float, ...]:
     """Peak displacement d_C [m] of the control point under each motion times ``scale``
-    (the free vibration after the record included); inf where the collapse rule says the
-    wall fell."""
+    (the free vibration after the record included), on the code's edge geometry
+    (:func:`edge_rotation`); inf where the collapse rule says the wall fell."""
     peaks = []
     for acc, dt in motions:
         res = model.run(acc, dt, scale)
-        peaks.append(
-            math.inf if res.collapsed else control_displacement(res.max_rotation, model.wall)
-        )
+        theta = edge_rotation(res.max_rotation, model)
+        peaks.append(math.inf if res.collapsed else control_displacement(theta, model.wall))
     return tuple(peaks)
 
 

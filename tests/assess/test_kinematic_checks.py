@@ -32,13 +32,15 @@ from frp_assess.assess.kinematic_checks import (
     base_motions,
     case_checks,
     displacement_spectrum,
+    edge_rotation,
     ida_capacity_demand,
     ida_check,
     ida_confidence_factor,
     kinematic_checks,
     peak_displacements,
 )
-from frp_assess.dynamics import RockingModel, Wall
+from frp_assess.assess.kinematic_nonlinear import control_displacement
+from frp_assess.dynamics import ModelOptions, RockingModel, Wall
 from frp_assess.motions import ElasticSpectrum, Record
 from frp_assess.results.checks import KinematicChecks
 from frp_assess.results.json_io import from_data, to_json
@@ -239,6 +241,11 @@ class _StubModel:
     def __post_init__(self) -> None:
         self.scales: list[float] = []
 
+    @property
+    def alpha(self) -> float:
+        """The edge pivot: the model's slenderness is the wall's."""
+        return self.wall.alpha
+
     def run(self, acc: object, dt: float, scale: float = 1.0) -> _Result:
         self.scales.append(scale)
         theta = self.peaks[len(self.scales) - 1]
@@ -309,6 +316,21 @@ def test_peak_displacements_of_the_real_model():
     peaks = peak_displacements(model, [(quiet, 0.01), (strong, 0.01)])
     assert peaks[0] == 0.0
     assert peaks[1] == math.inf
+
+
+def test_crushing_pivot_rotation_is_compared_on_the_edge_geometry():
+    """With the crushing pivot the model tips at α' < α; its peak rotation goes to the code's
+    edge geometry as the same fraction of the way to tipping: α' ↦ d0 = B/2 (d_C(α) = R·sin α,
+    Circolare 2019 §C8.7.1.2.1.9 compares the peaks with d0 and d_SLV of the edge block)."""
+    wall = Wall(WALL.thickness, WALL.height, WALL.unit_weight, compressive_strength=0.5e6)
+    model = RockingModel(wall, "one-sided", None, ModelOptions(pivot="crushing"))
+    x = WALL.unit_weight * WALL.thickness * WALL.height / (0.85 * 0.5e6)  # N/(0.85·f_d) [m]
+    assert model.alpha == pytest.approx(math.atan((WALL.thickness - x) / WALL.height))
+    assert model.alpha < wall.alpha - 1e-3  # the pivot did move: the test can tell
+    d_tip = control_displacement(edge_rotation(model.alpha, model), wall)
+    assert d_tip == pytest.approx(WALL.thickness / 2, rel=1e-12)
+    edge = RockingModel(WALL, "one-sided")
+    assert edge_rotation(0.01, edge) == 0.01
 
 
 def test_records_are_scaled_to_the_design_pga_before_the_time_histories():
