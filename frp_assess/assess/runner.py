@@ -108,6 +108,8 @@ class IdaRunner:
                 raise ValueError("IdaRunner needs the assessment inputs or the IDA settings")
             settings = inputs.ida
         if inputs is not None:
+            if building is not None and building != inputs.building:
+                raise ValueError("IdaRunner: give the building through inputs or alone, not both")
             building = inputs.building
         self.settings = settings
         self.building = building
