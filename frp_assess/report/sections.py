@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 from reportlab.lib.units import mm
 from reportlab.platypus import CondPageBreak, Flowable, KeepTogether, PageBreak
 
@@ -79,6 +81,7 @@ def summary(results: Results) -> list[Flowable]:
         h1("1  Summary"),
     ]
     mech = MECHANISM_TEXT.get(w.mechanism, esc(w.mechanism))
+    x_pivot = tb.crushing_shift(results)
     out.append(
         markup(
             f"<b>The wall.</b> {w.thickness:.2f} m thick, {w.height:.2f} m high and "
@@ -86,7 +89,14 @@ def summary(results: Results) -> list[Flowable]:
             f"{esc(w.masonry_description or w.masonry or 'masonry')} "
             f"({w.unit_weight:g} kN/m³), assessed for {esc(mech)}. Its slenderness is "
             f"α = {w.alpha_deg:.2f}° and it starts rocking at a<sub>RM</sub> = "
-            f"{tb.fmt_acc(w.a_rm)} g."
+            f"{tb.fmt_acc(w.a_rm)} g"
+            + (
+                "."
+                if x_pivot is None
+                else f" about a pivot {x_pivot * 500:.0f} mm inside its edge (the masonry "
+                f"crushed under its weight, x = {x_pivot * 1000:.0f} mm; section 6.4), "
+                f"against g·tan α = {tb.fmt_acc(math.tan(w.alpha))} g about the edge."
+            )
         )
     )
     site = esc(p.location or "The site")
@@ -248,8 +258,14 @@ def inputs(results: Results) -> list[Flowable]:
     out.append(
         para(
             "Prices are indicative defaults or user inputs, not quotes. ε_u is the ultimate "
-            "tensile strain of the bar; the design rupture strain is ε_max = c·ε_u "
-            f"with c = {results.model.strain_factor:g}.",
+            "tensile strain of the bar (mean producer value); the rupture strain of the model "
+            f"is ε_max = {tb.rupture_strain_words(results)} with c = "
+            f"{results.model.strain_factor:g}"
+            + (
+                " (CNR-DT 200 design values, section 6.2)."
+                if tb.design_strain(results)
+                else " (mean values)."
+            ),
             "caption",
         )
     )
@@ -528,7 +544,9 @@ EQUATIONS = [
     (
         "Bar rupture (paper Eq. 11–12)",
         "θ<sub>max</sub> = 2·asin(ε<sub>max</sub>·H / (2·b<sub>r</sub>)), ε<sub>max</sub> = "
-        "c·ε<sub>u</sub>, b<sub>r</sub> = B/2 centred, B external; 'energy-transfer': "
+        "c·ε<sub>u</sub> (mean values) or c·η<sub>a</sub>·ε<sub>fk</sub>/γ<sub>f</sub> "
+        "(design values, section 6.2), b<sub>r</sub> = B/2 centred, B external; "
+        "'energy-transfer': "
         "½I<sub>0</sub>θ'<sub>+</sub>² = ½I<sub>0</sub>θ'<sub>−</sub>² + U<sub>r</sub>(θ<sub>max"
         "</sub>), U<sub>r</sub> = ½·(E·A/H)·e², e = 2·b<sub>r</sub>·sin(θ/2).",
     ),
@@ -540,7 +558,9 @@ EQUATIONS = [
     ),
     (
         "Force reduction factor (paper Eq. 15–16)",
-        "q = a<sub>dyn</sub> / a<sub>RM</sub>, a<sub>RM</sub> = g·tan α.",
+        "q = a<sub>dyn</sub> / a<sub>RM</sub>, a<sub>RM</sub> = g·tan α about the edge, "
+        "g·(B − x)/H about the crushing pivot (section 6.4; α, R, I<sub>0</sub>, p and "
+        "b<sub>r</sub> are then those about the shifted pivot, docs/model.md §1.1).",
     ),
     (
         "Improvement and capacity/demand",
