@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from frp_assess.report import build_story
+from frp_assess.report import as_built_section, build_story
 from frp_assess.report import tables as tb
 from frp_assess.results.model import AssessmentResult
 from tests.report.test_report import story_text
@@ -79,3 +79,23 @@ def test_rupture_strain_words_follow_design_values(tmp_path: Path) -> None:
     rows = dict((k, v) for k, v in tb.model_rows(mean) if isinstance(k, str))
     assert "cyclic strain factor c (ε_max = c·ε_u)" in rows
     assert "ε_max = c·ε_u with c = 0.5 (mean values)" in story_text(build_story(mean))
+
+
+def test_pivot_paragraph_states_the_rule_the_model_ran(tmp_path: Path) -> None:
+    """docs/model.md §1.1: the crushing pivot is a constant shift x/2 (x of W + T_u) held for
+    the whole time history, not a pivot following the compression; the edge pivot drops an
+    option beyond x/B = 0.10 (DEFAULT_PIVOT_LIMIT), which the paragraph must state."""
+    r = small_result(tmp_path)
+    text = as_built_section.masonry_text(r)
+    assert "held for the whole time history" in text
+    assert "as the compression grows" not in text
+    edge = replace(
+        r,
+        cases=tuple(
+            c if c.pivot is None else replace(c, pivot=replace(c.pivot, rule="edge"))
+            for c in r.cases
+        ),
+    )
+    text = as_built_section.masonry_text(edge)
+    assert "deeper than x/B = 0.10" in text
+    assert "stated fraction" not in text
