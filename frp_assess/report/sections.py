@@ -105,7 +105,7 @@ def summary(results: Results) -> list[Flowable]:
         markup(
             f"<b>The site and the demand.</b> {site}: {esc(s.spectrum.name or '')}; "
             f"design ground acceleration a<sub>g</sub>·S = {tb.fmt_acc(demand)} g. "
-            f"{n_rec} {esc(s.records_kind)} records, "
+            f"{n_rec} {esc(RECORDS_KIND.get(s.records_kind, s.records_kind + ' records'))}, "
             + (
                 "compatible with the spectrum (all code checks passed)."
                 if comp.passed
@@ -242,6 +242,11 @@ def summary(results: Results) -> list[Flowable]:
 
 
 # --- 2 Inputs -----------------------------------------------------------------------------
+
+
+#: results.json ``seismic.records_kind`` in words ("recorded": read from the project's files,
+#: which may themselves be artificial; "7 recorded records" said neither)
+RECORDS_KIND = {"artificial": "artificial records", "recorded": "records read from files"}
 
 
 def inputs(results: Results) -> list[Flowable]:

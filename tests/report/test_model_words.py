@@ -99,3 +99,12 @@ def test_pivot_paragraph_states_the_rule_the_model_ran(tmp_path: Path) -> None:
     text = as_built_section.masonry_text(edge)
     assert "deeper than x/B = 0.10" in text
     assert "stated fraction" not in text
+
+
+def test_record_files_are_not_called_recorded_records(tmp_path: Path) -> None:
+    r = small_result(tmp_path)
+    files = replace(r, seismic=replace(r.seismic, records_kind="recorded"))
+    n = len(r.records)
+    assert f"{n} records read from files, " in story_text(build_story(files))
+    assert "recorded records" not in story_text(build_story(files))
+    assert f"{n} artificial records, " in story_text(build_story(r))
