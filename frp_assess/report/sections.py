@@ -214,10 +214,12 @@ def summary(results: Results) -> list[Flowable]:
     if n_dropped:
         out.append(
             para(
-                f"{n_dropped} of {len(results.options)} options fail the pivot check (the "
-                "masonry cannot carry the wall and the bars at rupture on a compressed zone "
-                "small enough for the rocking mechanism) and are dropped from the ranking: "
-                'see "The masonry at the pivot".',
+                f"{n_dropped} of {len(results.options)} options "
+                + ("fails" if n_dropped == 1 else "fail")
+                + " the pivot check (the masonry cannot carry the wall and the bars at rupture "
+                "on a compressed zone small enough for the rocking mechanism) and "
+                + ("is" if n_dropped == 1 else "are")
+                + ' dropped from the ranking: see section 6.4, "The masonry at the pivot".',
                 "small",
             )
         )
