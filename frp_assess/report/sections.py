@@ -637,11 +637,17 @@ def fc_text(results: Results) -> str:
             "Confidence factor: the IDA capacity is not divided by FC (FC = 1 in the verdict: "
             "code_check.fc_in_ida: false, or knowledge level LC3)."
         )
+    rule = "Circolare 2019 §C8.7.1.2.1.3: a rigid block whose masonry has infinite compressive "
+    basis = (
+        f"{level}; {rule}strength uses LC1's FC = 1.35"
+        if level == "LC1"
+        else f"knowledge level {level}, as asked in the project; note that {rule}strength "
+        "would use LC1's FC = 1.35"
+    )
     return (
-        f"Confidence factor: FC = {fc:g} ({level}; Circolare 2019 §C8.7.1.2.1.3: a rigid block "
-        "whose masonry has infinite compressive strength uses LC1's FC = 1.35) divides the IDA "
-        "capacity, capacity/demand = a_dyn,d / (FC·a_g·S); the improvement, a ratio of a_dyn, "
-        "does not change. Turn it off with code_check.fc_in_ida: false."
+        f"Confidence factor: FC = {fc:g} ({basis}) divides the IDA capacity, capacity/demand = "
+        "a_dyn,d / (FC·a_g·S); the improvement, a ratio of a_dyn, does not change. Turn it off "
+        "with code_check.fc_in_ida: false."
     )
 
 

@@ -119,3 +119,26 @@ def test_dropped_count_agrees_with_its_verb(tmp_path: Path) -> None:
     assert "and is dropped from the ranking: see section 6.4" in text
     every = replace(r, cases=(r.cases[0], *(replace(c, rank=None) for c in r.options)))
     assert f"{n} of {n} options fail the pivot check" in story_text(build_story(every))
+
+
+def test_fc_sentence_does_not_contradict_its_knowledge_level(tmp_path: Path) -> None:
+    """Circolare 2019 Tab. C8.5.IV: LC2 gives FC = 1.20; the method section printed
+    "FC = 1.2 (LC2; ... uses LC1's FC = 1.35)", two values for one factor."""
+    from frp_assess.report.sections import fc_text
+
+    r = small_result(tmp_path)
+    assert r.kinematic_checks is not None
+    lc2 = replace(
+        r,
+        cases=tuple(replace(c, fc=1.2) for c in r.cases),
+        kinematic_checks=replace(r.kinematic_checks, knowledge_level="LC2"),
+    )
+    text = fc_text(lc2)
+    assert text.startswith("Confidence factor: FC = 1.2 (knowledge level LC2, as asked")
+    assert "would use LC1's FC = 1.35" in text
+    lc1 = replace(
+        r,
+        cases=tuple(replace(c, fc=1.35) for c in r.cases),
+        kinematic_checks=replace(r.kinematic_checks, knowledge_level="LC1"),
+    )
+    assert fc_text(lc1).startswith("Confidence factor: FC = 1.35 (LC1; Circolare 2019")
