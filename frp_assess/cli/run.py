@@ -187,6 +187,17 @@ def run(args: argparse.Namespace) -> int:
         return _run(args, inputs, out_dir)
 
 
+
+def activation_text(results: AssessmentResult) -> str:
+    """``a_RM = … g`` [g] of the unreinforced wall's model, with the crushing pivot's depth x
+    [mm] when the model turns about it (then a_RM = g·(B − x)/H, not g·tan α; docs/model.md
+    §1.1)."""
+    text = f"a_RM = {results.wall.a_rm:.3f} g"
+    piv = results.urm.pivot
+    if piv is not None and piv.model_pivot == "crushing" and piv.pivot_shift > 0.0:
+        text += f" about the crushing pivot (x = {piv.depth * 1000:.0f} mm)"
+    return text
+
 def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> int:
     console = make_console()
     with console.status("generating/reading the records and checking them against the spectrum"):
@@ -240,7 +251,7 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
     fc = f"FC = {urm.fc:g}; " if urm.fc != 1.0 else ""
     console.print(
         f"wall B = {w.thickness:g} m, H = {w.height:g} m, α = {w.alpha_deg:.2f}°, "
-        f"a_RM = {w.a_rm:.3f} g, {user(w.mechanism)}; unreinforced: design a_dyn = "
+        f"{activation_text(results)}, {user(w.mechanism)}; unreinforced: design a_dyn = "
         f"{urm.design_a_dyn:.3f} g, capacity/demand = "
         f"{fmt_against(urm.capacity_demand, target, urm.meets_target)} "
         f"({fc}{'meets' if urm.meets_target else 'does NOT meet'} the target)"

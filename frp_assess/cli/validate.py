@@ -15,6 +15,7 @@ from frp_assess.config.loader import load_parsed
 from frp_assess.config.messages import Loc, format_path, line_of
 from frp_assess.config.problems import problems_of, raise_all
 from frp_assess.config.schema import (
+    CONFIDENCE_FACTORS,
     Ec8Spectrum,
     Ntc2018Spectrum,
     PresetSpectrum,
@@ -70,6 +71,17 @@ def building_summary(project: Project) -> str:
     )
 
 
+def code_check_summary(project: Project) -> str:
+    """Knowledge level, FC [-] and whether FC divides the IDA's capacity/demand (docs/model.md
+    §5.3, §5.5), and the behaviour factor q [-]."""
+    cc = project.code_check
+    fc = CONFIDENCE_FACTORS[cc.knowledge_level]
+    where = (
+        "in the IDA verdict too" if cc.fc_in_ida else "not in the IDA verdict (fc_in_ida: false)"
+    )
+    return f"{cc.knowledge_level}, FC = {fc:g} ({where}), q = {cc.behaviour_factor:g}"
+
+
 def summary(loaded: LoadedProject) -> list[str]:
     """The lines printed by `validate`."""
     p = loaded.project
@@ -100,8 +112,9 @@ def summary(loaded: LoadedProject) -> list[str]:
         f"  options: {len(options)} after expansion"
         + (f" ({names})" if options else " (only the unreinforced wall)"),
         f"  analysis: restitution {an.restitution}, rupture {an.rupture}, collapse "
-        f"{an.collapse}, integration tolerance {an.integration.tolerance:g}, target "
-        f"capacity/demand {an.target:g}",
+        f"{an.collapse}, pivot {an.pivot}, integration tolerance "
+        f"{an.integration.tolerance:g}, target capacity/demand {an.target:g}",
+        f"  code check: {code_check_summary(p)}",
     ]
     if p.building is not None:
         lines.insert(3, f"  building: {building_summary(p)}")

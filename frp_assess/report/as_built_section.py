@@ -181,16 +181,20 @@ def masonry_text(results: Results) -> str:
     m = results.masonry_strength
     if m is None:
         return "The masonry strength is not in these results (written before the pivot check)."
-    rule = next((c.pivot.rule for c in results.cases if c.pivot is not None), None)
+    pivot = next((c.pivot for c in results.cases if c.pivot is not None), None)
+    rule = pivot.rule if pivot is not None else None
+    limit = f"{pivot.limit:.2f}" if pivot is not None else "the limit"
     rule_text = {
         "edge": (
             "pivot: edge — the wall rocks about its compressed edge; an option is dropped "
-            "when the compressed zone is deeper than the stated fraction of B"
+            f"when the compressed zone is deeper than x/B = {limit}"
         ),
         "crushing": (
-            "pivot: crushing — the pivot moves inward by x/2 as the compression grows (the "
-            "lever arms of gravity and bars shrink); an option is dropped only when there is "
-            "no mechanism (the bar inside the compressed zone, or x ≥ B)"
+            "pivot: crushing — each case's pivot sits x/2 inside the compressed edge, x of "
+            "its N, held for the whole time history (the lever arms of gravity and bars "
+            "shrink by x/2; conservative below rupture, when the bar force is less than "
+            "T_u); an option is dropped only when there is no mechanism (the bar inside the "
+            "compressed zone, or x ≥ B)"
         ),
     }.get(rule or "", f"pivot: {rule}")
     kind = f"Masonry {m.masonry}" if m.masonry else "Masonry given by the project"

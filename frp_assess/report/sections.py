@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 from reportlab.lib.units import mm
 from reportlab.platypus import CondPageBreak, Flowable, KeepTogether, PageBreak
 
@@ -79,6 +81,7 @@ def summary(results: Results) -> list[Flowable]:
         h1("1  Summary"),
     ]
     mech = MECHANISM_TEXT.get(w.mechanism, esc(w.mechanism))
+    x_pivot = tb.crushing_shift(results)
     out.append(
         markup(
             f"<b>The wall.</b> {w.thickness:.2f} m thick, {w.height:.2f} m high and "
@@ -86,7 +89,14 @@ def summary(results: Results) -> list[Flowable]:
             f"{esc(w.masonry_description or w.masonry or 'masonry')} "
             f"({w.unit_weight:g} kN/m³), assessed for {esc(mech)}. Its slenderness is "
             f"α = {w.alpha_deg:.2f}° and it starts rocking at a<sub>RM</sub> = "
-            f"{tb.fmt_acc(w.a_rm)} g."
+            f"{tb.fmt_acc(w.a_rm)} g"
+            + (
+                "."
+                if x_pivot is None
+                else f" about a pivot {x_pivot * 500:.0f} mm inside its edge (the masonry "
+                f"crushed under its weight, x = {x_pivot * 1000:.0f} mm; section 6.4), "
+                f"against g·tan α = {tb.fmt_acc(math.tan(w.alpha))} g about the edge."
+            )
         )
     )
     site = esc(p.location or "The site")
@@ -95,7 +105,7 @@ def summary(results: Results) -> list[Flowable]:
         markup(
             f"<b>The site and the demand.</b> {site}: {esc(s.spectrum.name or '')}; "
             f"design ground acceleration a<sub>g</sub>·S = {tb.fmt_acc(demand)} g. "
-            f"{n_rec} {esc(s.records_kind)} records, "
+            f"{n_rec} {esc(RECORDS_KIND.get(s.records_kind, s.records_kind + ' records'))}, "
             + (
                 "compatible with the spectrum (all code checks passed)."
                 if comp.passed
@@ -204,10 +214,12 @@ def summary(results: Results) -> list[Flowable]:
     if n_dropped:
         out.append(
             para(
-                f"{n_dropped} of {len(results.options)} options fail the pivot check (the "
-                "masonry cannot carry the wall and the bars at rupture on a compressed zone "
-                "small enough for the rocking mechanism) and are dropped from the ranking: "
-                'see "The masonry at the pivot".',
+                f"{n_dropped} of {len(results.options)} options "
+                + ("fails" if n_dropped == 1 else "fail")
+                + " the pivot check (the masonry cannot carry the wall and the bars at rupture "
+                "on a compressed zone small enough for the rocking mechanism) and "
+                + ("is" if n_dropped == 1 else "are")
+                + ' dropped from the ranking: see section 6.4, "The masonry at the pivot".',
                 "small",
             )
         )
@@ -234,6 +246,11 @@ def summary(results: Results) -> list[Flowable]:
 # --- 2 Inputs -----------------------------------------------------------------------------
 
 
+#: results.json ``seismic.records_kind`` in words ("recorded": read from the project's files,
+#: which may themselves be artificial; "7 recorded records" said neither)
+RECORDS_KIND = {"artificial": "artificial records", "recorded": "records read from files"}
+
+
 def inputs(results: Results) -> list[Flowable]:
     w = results.wall
     out: list[Flowable] = [h1("2  Inputs"), h2("2.1  Project and software")]
@@ -248,8 +265,14 @@ def inputs(results: Results) -> list[Flowable]:
     out.append(
         para(
             "Prices are indicative defaults or user inputs, not quotes. ε_u is the ultimate "
-            "tensile strain of the bar; the design rupture strain is ε_max = c·ε_u "
-            f"with c = {results.model.strain_factor:g}.",
+            "tensile strain of the bar (mean producer value); the rupture strain of the model "
+            f"is ε_max = {tb.rupture_strain_words(results)} with c = "
+            f"{results.model.strain_factor:g}"
+            + (
+                " (CNR-DT 200 design values, section 6.2)."
+                if tb.design_strain(results)
+                else " (mean values)."
+            ),
             "caption",
         )
     )
@@ -528,7 +551,9 @@ EQUATIONS = [
     (
         "Bar rupture (paper Eq. 11–12)",
         "θ<sub>max</sub> = 2·asin(ε<sub>max</sub>·H / (2·b<sub>r</sub>)), ε<sub>max</sub> = "
-        "c·ε<sub>u</sub>, b<sub>r</sub> = B/2 centred, B external; 'energy-transfer': "
+        "c·ε<sub>u</sub> (mean values) or c·η<sub>a</sub>·ε<sub>fk</sub>/γ<sub>f</sub> "
+        "(design values, section 6.2), b<sub>r</sub> = B/2 centred, B external; "
+        "'energy-transfer': "
         "½I<sub>0</sub>θ'<sub>+</sub>² = ½I<sub>0</sub>θ'<sub>−</sub>² + U<sub>r</sub>(θ<sub>max"
         "</sub>), U<sub>r</sub> = ½·(E·A/H)·e², e = 2·b<sub>r</sub>·sin(θ/2).",
     ),
@@ -540,7 +565,9 @@ EQUATIONS = [
     ),
     (
         "Force reduction factor (paper Eq. 15–16)",
-        "q = a<sub>dyn</sub> / a<sub>RM</sub>, a<sub>RM</sub> = g·tan α.",
+        "q = a<sub>dyn</sub> / a<sub>RM</sub>, a<sub>RM</sub> = g·tan α about the edge, "
+        "g·(B − x)/H about the crushing pivot (section 6.4; α, R, I<sub>0</sub>, p and "
+        "b<sub>r</sub> are then those about the shifted pivot, docs/model.md §1.1).",
     ),
     (
         "Improvement and capacity/demand",
@@ -610,11 +637,17 @@ def fc_text(results: Results) -> str:
             "Confidence factor: the IDA capacity is not divided by FC (FC = 1 in the verdict: "
             "code_check.fc_in_ida: false, or knowledge level LC3)."
         )
+    rule = "Circolare 2019 §C8.7.1.2.1.3: a rigid block whose masonry has infinite compressive "
+    basis = (
+        f"{level}; {rule}strength uses LC1's FC = 1.35"
+        if level == "LC1"
+        else f"knowledge level {level}, as asked in the project; note that {rule}strength "
+        "would use LC1's FC = 1.35"
+    )
     return (
-        f"Confidence factor: FC = {fc:g} ({level}; Circolare 2019 §C8.7.1.2.1.3: a rigid block "
-        "whose masonry has infinite compressive strength uses LC1's FC = 1.35) divides the IDA "
-        "capacity, capacity/demand = a_dyn,d / (FC·a_g·S); the improvement, a ratio of a_dyn, "
-        "does not change. Turn it off with code_check.fc_in_ida: false."
+        f"Confidence factor: FC = {fc:g} ({basis}) divides the IDA capacity, capacity/demand = "
+        "a_dyn,d / (FC·a_g·S); the improvement, a ratio of a_dyn, does not change. Turn it off "
+        "with code_check.fc_in_ida: false."
     )
 
 

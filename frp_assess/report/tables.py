@@ -332,8 +332,38 @@ def wall_property_rows(results: Results) -> list[list[str]]:
         ["half diagonal R", f"{w.R:.3f} m"],
         ["frequency parameter p", f"{w.p:.3f} rad/s"],
         ["mass per metre m", f"{w.mass:.1f} kg/m"],
-        ["rocking activation a_RM = g·tan α", f"{fmt_acc(w.a_rm)} g"],
+        [activation_label(results), f"{fmt_acc(w.a_rm)} g"],
     ]
+
+
+def crushing_shift(results: Results) -> float | None:
+    """x [m] of the unreinforced wall's crushing pivot, None when its model turns about the
+    edge (docs/model.md §1.1): results.json ``wall.a_rm`` is about that pivot."""
+    piv = results.urm.pivot
+    if piv is None or piv.model_pivot != "crushing" or piv.pivot_shift <= 0.0:
+        return None
+    return piv.depth
+
+
+def activation_label(results: Results) -> str:
+    """The label of a_RM with the formula of the model's pivot: g·tan α about the edge,
+    g·(B − x)/H about the crushing pivot (docs/model.md §1.1, §5.1)."""
+    x = crushing_shift(results)
+    if x is None:
+        return "rocking activation a_RM = g·tan α"
+    return f"rocking activation a_RM = g·(B − x)/H (crushing pivot, x = {x * 1000:.0f} mm)"
+
+
+def design_strain(results: Results) -> bool:
+    """True when the bars' rupture strain is the design value c·η_a·ε_fk/γ_f (some option
+    has bars as built with ``bars.design_values``), False for the mean c·ε_u (docs/model.md
+    §2.1)."""
+    return any(c.as_built is not None and c.as_built.strain.design_values for c in results.cases)
+
+
+def rupture_strain_words(results: Results) -> str:
+    """ε_max in symbols, as the model used it: c·η_a·ε_fk/γ_f or c·ε_u."""
+    return "c·η_a·ε_fk/γ_f" if design_strain(results) else "c·ε_u"
 
 
 def materials_table(results: Results) -> TableData:
@@ -380,7 +410,10 @@ def model_rows(results: Results) -> list[list[str]]:
         ],
         ["rupture rule", m.rupture],
         ["collapse criterion", COLLAPSE_WORDS.get(m.collapse, m.collapse)],
-        ["cyclic strain factor c (ε_max = c·ε_u)", f"{m.strain_factor:g}"],
+        [
+            f"cyclic strain factor c (ε_max = {rupture_strain_words(results)})",
+            f"{m.strain_factor:g}",
+        ],
         ["free-vibration tail", f"{m.free_vibration_tail:g} s"],
         ["target capacity/demand", f"≥ {m.target:g}"],
     ]

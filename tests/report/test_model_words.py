@@ -1,0 +1,144 @@
+"""The report states a_RM and the rupture strain as the model computed them.
+
+With the crushing pivot (docs/model.md §1.1) results.json ``wall.a_rm`` is g·(B − x)/H, not
+g·tan α; with design values (docs/model.md §2.1) the rupture strain is c·η_a·ε_fk/γ_f, not
+c·ε_u (the report's §2.3 and §2.4 said c·ε_u for both, §4.1 g·tan α for both). References,
+written here: the small wall of tests/assess/test_run.py (B = 0.3 m, H = 3 m) has
+tan α = B/H = 0.1, so a_RM about its edge is 0.100 g, and about the crushed pivot (B − x)/H
+with x the depth printed in the label (rounded to 1 mm: 0.001/3 g at most).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+from pathlib import Path
+
+import pytest
+
+from frp_assess.report import as_built_section, build_story
+from frp_assess.report import tables as tb
+from frp_assess.results.model import AssessmentResult
+from tests.report.test_report import story_text
+from tests.results.test_pivot_and_as_built import small_result
+
+
+def edge_pivot(r: AssessmentResult) -> AssessmentResult:
+    """The same results as if run with ``pivot: edge`` (a_RM = g·tan α = 0.1 g)."""
+    cases = tuple(
+        c
+        if c.pivot is None
+        else replace(c, pivot=replace(c.pivot, model_pivot="edge", pivot_shift=0.0))
+        for c in r.cases
+    )
+    return replace(r, cases=cases, wall=replace(r.wall, a_rm=0.1))
+
+
+def strain_values(r: AssessmentResult, design: bool) -> AssessmentResult:
+    """The same results with ``bars.design_values`` set to ``design`` on every option."""
+    cases = []
+    for c in r.cases:
+        if c.as_built is not None:
+            strain = replace(c.as_built.strain, design_values=design)
+            c = replace(c, as_built=replace(c.as_built, strain=strain))
+        cases.append(c)
+    return replace(r, cases=tuple(cases))
+
+
+def test_crushing_pivot_a_rm_is_labelled_with_its_formula(tmp_path: Path) -> None:
+    r = small_result(tmp_path)
+    label, value = tb.wall_property_rows(r)[-1]
+    assert "g·tan α" not in label
+    m = re.search(r"g·\(B − x\)/H \(crushing pivot, x = (\d+) mm\)", label)
+    assert m is not None, label
+    x = int(m.group(1)) / 1000
+    assert float(value.split()[0]) == pytest.approx((0.3 - x) / 3.0, abs=1e-3)
+    text = story_text(build_story(r))
+    assert "crushed under its weight" in text
+    assert "against g·tan α = 0.100 g about the edge" in text
+
+
+def test_edge_pivot_a_rm_is_g_tan_alpha(tmp_path: Path) -> None:
+    r = edge_pivot(small_result(tmp_path))
+    label, value = tb.wall_property_rows(r)[-1]
+    assert label == "rocking activation a_RM = g·tan α"
+    assert value == "0.100 g"
+    assert "crushed under its weight" not in story_text(build_story(r))
+
+
+def test_rupture_strain_words_follow_design_values(tmp_path: Path) -> None:
+    r = small_result(tmp_path)
+    assert all(c.as_built is not None for c in r.options)
+    design = strain_values(r, design=True)
+    rows = dict((k, v) for k, v in tb.model_rows(design) if isinstance(k, str))
+    assert "cyclic strain factor c (ε_max = c·η_a·ε_fk/γ_f)" in rows
+    text = story_text(build_story(design))
+    assert "ε_max = c·η_a·ε_fk/γ_f with c = 0.5 (CNR-DT 200 design values" in text
+    assert "ε_max = c·ε_u with c" not in text
+    mean = strain_values(r, design=False)
+    rows = dict((k, v) for k, v in tb.model_rows(mean) if isinstance(k, str))
+    assert "cyclic strain factor c (ε_max = c·ε_u)" in rows
+    assert "ε_max = c·ε_u with c = 0.5 (mean values)" in story_text(build_story(mean))
+
+
+def test_pivot_paragraph_states_the_rule_the_model_ran(tmp_path: Path) -> None:
+    """docs/model.md §1.1: the crushing pivot is a constant shift x/2 (x of W + T_u) held for
+    the whole time history, not a pivot following the compression; the edge pivot drops an
+    option beyond x/B = 0.10 (DEFAULT_PIVOT_LIMIT), which the paragraph must state."""
+    r = small_result(tmp_path)
+    text = as_built_section.masonry_text(r)
+    assert "held for the whole time history" in text
+    assert "as the compression grows" not in text
+    edge = replace(
+        r,
+        cases=tuple(
+            c if c.pivot is None else replace(c, pivot=replace(c.pivot, rule="edge"))
+            for c in r.cases
+        ),
+    )
+    text = as_built_section.masonry_text(edge)
+    assert "deeper than x/B = 0.10" in text
+    assert "stated fraction" not in text
+
+
+def test_record_files_are_not_called_recorded_records(tmp_path: Path) -> None:
+    r = small_result(tmp_path)
+    files = replace(r, seismic=replace(r.seismic, records_kind="recorded"))
+    n = len(r.records)
+    assert f"{n} records read from files, " in story_text(build_story(files))
+    assert "recorded records" not in story_text(build_story(files))
+    assert f"{n} artificial records, " in story_text(build_story(r))
+
+
+def test_dropped_count_agrees_with_its_verb(tmp_path: Path) -> None:
+    r = small_result(tmp_path)
+    n = len(r.options)
+    assert sum(c.rank is None for c in r.options) == 1  # CFRP centred 2 ‰: no mechanism
+    text = story_text(build_story(r))
+    assert f"1 of {n} options fails the pivot check" in text
+    assert "and is dropped from the ranking: see section 6.4" in text
+    every = replace(r, cases=(r.cases[0], *(replace(c, rank=None) for c in r.options)))
+    assert f"{n} of {n} options fail the pivot check" in story_text(build_story(every))
+
+
+def test_fc_sentence_does_not_contradict_its_knowledge_level(tmp_path: Path) -> None:
+    """Circolare 2019 Tab. C8.5.IV: LC2 gives FC = 1.20; the method section printed
+    "FC = 1.2 (LC2; ... uses LC1's FC = 1.35)", two values for one factor."""
+    from frp_assess.report.sections import fc_text
+
+    r = small_result(tmp_path)
+    assert r.kinematic_checks is not None
+    lc2 = replace(
+        r,
+        cases=tuple(replace(c, fc=1.2) for c in r.cases),
+        kinematic_checks=replace(r.kinematic_checks, knowledge_level="LC2"),
+    )
+    text = fc_text(lc2)
+    assert text.startswith("Confidence factor: FC = 1.2 (knowledge level LC2, as asked")
+    assert "would use LC1's FC = 1.35" in text
+    lc1 = replace(
+        r,
+        cases=tuple(replace(c, fc=1.35) for c in r.cases),
+        kinematic_checks=replace(r.kinematic_checks, knowledge_level="LC1"),
+    )
+    assert fc_text(lc1).startswith("Confidence factor: FC = 1.35 (LC1; Circolare 2019")
