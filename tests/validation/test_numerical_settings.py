@@ -110,6 +110,8 @@ def test_time_history_peak_displacements(name: str, building: Building | None) -
     scale = 0.6 * c
     a = peak_displacements(base, motions, scale)
     b = peak_displacements(base.with_options(**TIGHT), motions, scale)
-    assert all(np.isfinite(b)) and b[0] > 0.0
+    assert all(np.isfinite(b))
+    rocked = base.run(motions[0][0], DT, scale).max_rotation
+    assert rocked > 0.05 * base.alpha  # rocking, not resting: the comparison is not trivial
     for x, y in zip(a, b, strict=True):
         assert abs(x - y) <= 1e-3 * y
