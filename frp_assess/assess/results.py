@@ -27,7 +27,7 @@ from frp_assess.assess.inputs import (
     Option,
 )
 from frp_assess.assess.kinematic_checks import ida_capacity_demand
-from frp_assess.assess.pivot import case_pivot, masonry_result
+from frp_assess.assess.pivot import case_pivot
 from frp_assess.assess.quantities import built_quantity
 from frp_assess.assess.ranking import RANKING_RULE, Rankable, rank_options
 from frp_assess.assess.runner import CaseSummary, DesignResult, design_value_rule
@@ -511,7 +511,7 @@ def build_results(
         sensitivity=sensitivity,
         building=None if inputs.building is None else building_result(inputs.building),
         floor_spectra=None if floor_spectra is None else floor_spectra_result(floor_spectra),
-        masonry_strength=masonry_result(inputs),
+        masonry_strength=inputs.masonry_strength,
         kinematic_checks=kinematic_checks,
     )
 
