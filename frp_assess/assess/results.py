@@ -9,7 +9,7 @@ from __future__ import annotations
 import json
 import math
 from collections.abc import Sequence
-from dataclasses import replace
+from dataclasses import asdict, replace
 from typing import Any
 
 import numpy as np
@@ -324,21 +324,11 @@ def seismic_result(inputs: AssessmentInputs, seismic: SeismicInput) -> SeismicRe
 
 
 def compliance_result(seismic: SeismicInput) -> Compliance:
+    """The ``compliance`` object of results.json: the record set's checks, one
+    :class:`~frp_assess.results.model.ComplianceCheck` per clause check (same fields)."""
     rep = seismic.compliance
     return Compliance(
-        passed=rep.passed,
-        checks=tuple(
-            ComplianceCheck(
-                code=c.code,
-                clause=c.clause,
-                requirement=c.requirement,
-                found=c.found,
-                passed=c.passed,
-                margin=c.margin,
-                unit=c.unit,
-            )
-            for c in rep.checks
-        ),
+        passed=rep.passed, checks=tuple(ComplianceCheck(**asdict(c)) for c in rep.checks)
     )
 
 
