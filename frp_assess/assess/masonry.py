@@ -195,6 +195,17 @@ def masonry_type(key: str) -> MasonryType:
         ) from None
 
 
+def confidence_factor(knowledge_level: str) -> float:
+    """FC [-] of a knowledge level (Circolare 2019 Tab. C8.5.IV); an unknown level is an
+    input error on ``code_check.knowledge_level``, where the project sets it."""
+    if knowledge_level not in CONFIDENCE_FACTORS:
+        raise InputError(
+            f"unknown knowledge level {knowledge_level!r}; choose LC1, LC2 or LC3",
+            key="code_check.knowledge_level",
+        )
+    return CONFIDENCE_FACTORS[knowledge_level]
+
+
 def masonry_design_values(
     key: str,
     knowledge_level: str = "LC1",
@@ -211,11 +222,7 @@ def masonry_design_values(
     divide by FC (Tab. C8.5.IV) and by ``partial_factor`` γ_M.
     """
     row = masonry_type(key)
-    if knowledge_level not in CONFIDENCE_FACTORS:
-        raise InputError(
-            f"unknown knowledge level {knowledge_level!r}; choose LC1, LC2 or LC3",
-            key="wall.knowledge_level",
-        )
+    fc = confidence_factor(knowledge_level)
     for name, value in (("f_m", f_m), ("elastic_modulus", elastic_modulus), ("tau_0", tau_0)):
         if value is not None and not value > 0:
             raise InputError(f"must be > 0 MPa, got {value}", key=f"wall.{name}")
@@ -233,7 +240,6 @@ def masonry_design_values(
     strength = f_m if f_m is not None else strength
     modulus = elastic_modulus if elastic_modulus is not None else modulus
     shear = tau_0 if tau_0 is not None else shear
-    fc = CONFIDENCE_FACTORS[knowledge_level]
     return MasonryDesignValues(
         key=key,
         knowledge_level=knowledge_level,
@@ -471,12 +477,7 @@ def masonry_strength(
     knowledge-level rule (:func:`masonry_design_values`); else
     :data:`DEFAULT_COMPRESSIVE_STRENGTH`.  FC is always the knowledge level's.
     """
-    if knowledge_level not in CONFIDENCE_FACTORS:
-        raise InputError(
-            f"unknown knowledge level {knowledge_level!r}; choose LC1, LC2 or LC3",
-            key="code_check.knowledge_level",
-        )
-    fc = CONFIDENCE_FACTORS[knowledge_level]
+    fc = confidence_factor(knowledge_level)
     if compressive_strength is not None:
         if not compressive_strength > 0:
             raise InputError(
