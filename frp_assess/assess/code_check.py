@@ -12,8 +12,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-#: Confidence factors by knowledge level (Circolare 2019 Tab. C8.5.IV)
-CONFIDENCE_FACTORS: dict[str, float] = {"LC1": 1.35, "LC2": 1.20, "LC3": 1.00}
+#: confidence factors by knowledge level (Circolare 2019 Tab. C8.5.IV): one table, the input's
+from frp_assess.config.schema import CONFIDENCE_FACTORS
+
+__all__ = ["CONFIDENCE_FACTORS", "KinematicCheck", "simple_overturning_check"]
 
 
 @dataclass(frozen=True)

@@ -19,7 +19,7 @@ from frp_assess.assess.bars import (
     design_rupture_strain,
     fibre_of,
 )
-from frp_assess.assess.masonry import MasonryStrength, masonry_strength
+from frp_assess.assess.masonry import masonry_strength
 from frp_assess.dynamics import (
     IdaSettings,
     Mechanism,
@@ -32,6 +32,7 @@ from frp_assess.dynamics import (
 from frp_assess.dynamics.options import STRAIN_FACTOR, VERIFY
 from frp_assess.dynamics.units import rebars_from_practice, wall_from_practice
 from frp_assess.motions import ElasticSpectrum
+from frp_assess.results.pivot import MasonryResult
 
 #: the name of case 0, the wall without bars
 UNREINFORCED = "Unreinforced"
@@ -203,7 +204,7 @@ class AssessmentInputs:
     bars: BarSettings = BarSettings(design_values=False, whole_bars=False)
 
     @property
-    def masonry_strength(self) -> MasonryStrength:
+    def masonry_strength(self) -> MasonryResult:
         """f_m and f_d of the masonry (docs/model.md §1.1): the project's value, else the
         type's by the knowledge level, else the lowest of Tab. C8.5.I."""
         return masonry_strength(

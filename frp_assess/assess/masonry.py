@@ -42,6 +42,7 @@ from frp_assess.assess.code_check import CONFIDENCE_FACTORS
 from frp_assess.dynamics import Position
 from frp_assess.dynamics.pivot import STRESS_BLOCK_FACTOR as STRESS_BLOCK_FACTOR  # the model's
 from frp_assess.errors import InputError
+from frp_assess.results.pivot import MasonryResult
 
 KnowledgeLevel = Literal["LC1", "LC2", "LC3"]
 
@@ -194,6 +195,17 @@ def masonry_type(key: str) -> MasonryType:
         ) from None
 
 
+def confidence_factor(knowledge_level: str) -> float:
+    """FC [-] of a knowledge level (Circolare 2019 Tab. C8.5.IV); an unknown level is an
+    input error on ``code_check.knowledge_level``, where the project sets it."""
+    if knowledge_level not in CONFIDENCE_FACTORS:
+        raise InputError(
+            f"unknown knowledge level {knowledge_level!r}; choose LC1, LC2 or LC3",
+            key="code_check.knowledge_level",
+        )
+    return CONFIDENCE_FACTORS[knowledge_level]
+
+
 def masonry_design_values(
     key: str,
     knowledge_level: str = "LC1",
@@ -210,11 +222,7 @@ def masonry_design_values(
     divide by FC (Tab. C8.5.IV) and by ``partial_factor`` γ_M.
     """
     row = masonry_type(key)
-    if knowledge_level not in CONFIDENCE_FACTORS:
-        raise InputError(
-            f"unknown knowledge level {knowledge_level!r}; choose LC1, LC2 or LC3",
-            key="wall.knowledge_level",
-        )
+    fc = confidence_factor(knowledge_level)
     for name, value in (("f_m", f_m), ("elastic_modulus", elastic_modulus), ("tau_0", tau_0)):
         if value is not None and not value > 0:
             raise InputError(f"must be > 0 MPa, got {value}", key=f"wall.{name}")
@@ -232,7 +240,6 @@ def masonry_design_values(
     strength = f_m if f_m is not None else strength
     modulus = elastic_modulus if elastic_modulus is not None else modulus
     shear = tau_0 if tau_0 is not None else shear
-    fc = CONFIDENCE_FACTORS[knowledge_level]
     return MasonryDesignValues(
         key=key,
         knowledge_level=knowledge_level,
@@ -455,27 +462,6 @@ def max_ratio_for_pivot(
 # The strength an assessment uses
 
 
-@dataclass(frozen=True)
-class MasonryStrength:
-    """The compressive strength behind the pivot of an assessment.
-
-    Attributes:
-        masonry: the type of Tab. C8.5.I, or None when the project gives none.
-        knowledge_level: LC1, LC2 or LC3 (``code_check.knowledge_level``).
-        f_m: compressive strength taken [MPa].
-        confidence_factor: FC [-] (Tab. C8.5.IV).
-        f_d: design compressive strength f_m / FC [MPa].
-        source: where f_m comes from, one line.
-    """
-
-    masonry: str | None
-    knowledge_level: str
-    f_m: float
-    confidence_factor: float
-    f_d: float
-    source: str
-
-
 #: f_m [MPa] taken when the project gives neither ``wall.masonry`` nor
 #: ``wall.compressive_strength``: the lowest value of Tab. C8.5.I (rubble stone, LC1 rule),
 #: so that an unstated masonry is never credited with more strength than the table allows.
@@ -484,19 +470,14 @@ DEFAULT_COMPRESSIVE_STRENGTH = min(m.f_m[0] for m in MASONRY_TABLE.values())
 
 def masonry_strength(
     masonry: str | None, knowledge_level: str, compressive_strength: float | None = None
-) -> MasonryStrength:
-    """f_m and f_d = f_m/FC of a project (docs/model.md §1.1).
+) -> MasonryResult:
+    """f_m and f_d = f_m/FC of a project (docs/model.md §1.1), as results.json records it.
 
     The project's ``compressive_strength`` [MPa] wins; else the masonry type's value by the
     knowledge-level rule (:func:`masonry_design_values`); else
     :data:`DEFAULT_COMPRESSIVE_STRENGTH`.  FC is always the knowledge level's.
     """
-    if knowledge_level not in CONFIDENCE_FACTORS:
-        raise InputError(
-            f"unknown knowledge level {knowledge_level!r}; choose LC1, LC2 or LC3",
-            key="code_check.knowledge_level",
-        )
-    fc = CONFIDENCE_FACTORS[knowledge_level]
+    fc = confidence_factor(knowledge_level)
     if compressive_strength is not None:
         if not compressive_strength > 0:
             raise InputError(
@@ -513,4 +494,12 @@ def masonry_strength(
             f"no wall.masonry nor wall.compressive_strength: the lowest f_m of {_TABLE} "
             f"({f_m:g} MPa)"
         )
-    return MasonryStrength(masonry, knowledge_level, f_m, fc, f_m / fc, source)
+    return MasonryResult(
+        masonry=masonry,
+        knowledge_level=knowledge_level,
+        f_m=f_m,
+        confidence_factor=fc,
+        f_d=f_m / fc,
+        stress_block_factor=STRESS_BLOCK_FACTOR,
+        source=source,
+    )

@@ -33,7 +33,7 @@ from frp_assess.assess.masonry import (
     wall_weight,
 )
 from frp_assess.dynamics import PivotRule, Position
-from frp_assess.results.pivot import MasonryResult, PivotResult
+from frp_assess.results.pivot import PivotResult
 
 
 def pivot_fails(
@@ -169,20 +169,6 @@ def pivot_checks(
     return (
         case_pivot(inputs, None, limit),
         *(case_pivot(inputs, o, limit) for o in inputs.options),
-    )
-
-
-def masonry_result(inputs: AssessmentInputs) -> MasonryResult:
-    """The results.json record of the masonry strength behind the pivot."""
-    s = inputs.masonry_strength
-    return MasonryResult(
-        masonry=s.masonry,
-        knowledge_level=s.knowledge_level,
-        f_m=s.f_m,
-        confidence_factor=s.confidence_factor,
-        f_d=s.f_d,
-        stress_block_factor=STRESS_BLOCK_FACTOR,
-        source=s.source,
     )
 
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 import json
 import math
 from collections.abc import Sequence
-from dataclasses import replace
+from dataclasses import asdict, replace
 from typing import Any
 
 import numpy as np
@@ -27,7 +27,7 @@ from frp_assess.assess.inputs import (
     Option,
 )
 from frp_assess.assess.kinematic_checks import ida_capacity_demand
-from frp_assess.assess.pivot import case_pivot, masonry_result
+from frp_assess.assess.pivot import case_pivot
 from frp_assess.assess.quantities import built_quantity
 from frp_assess.assess.ranking import RANKING_RULE, Rankable, rank_options
 from frp_assess.assess.runner import CaseSummary, DesignResult, design_value_rule
@@ -324,21 +324,11 @@ def seismic_result(inputs: AssessmentInputs, seismic: SeismicInput) -> SeismicRe
 
 
 def compliance_result(seismic: SeismicInput) -> Compliance:
+    """The ``compliance`` object of results.json: the record set's checks, one
+    :class:`~frp_assess.results.model.ComplianceCheck` per clause check (same fields)."""
     rep = seismic.compliance
     return Compliance(
-        passed=rep.passed,
-        checks=tuple(
-            ComplianceCheck(
-                code=c.code,
-                clause=c.clause,
-                requirement=c.requirement,
-                found=c.found,
-                passed=c.passed,
-                margin=c.margin,
-                unit=c.unit,
-            )
-            for c in rep.checks
-        ),
+        passed=rep.passed, checks=tuple(ComplianceCheck(**asdict(c)) for c in rep.checks)
     )
 
 
@@ -511,7 +501,7 @@ def build_results(
         sensitivity=sensitivity,
         building=None if inputs.building is None else building_result(inputs.building),
         floor_spectra=None if floor_spectra is None else floor_spectra_result(floor_spectra),
-        masonry_strength=masonry_result(inputs),
+        masonry_strength=inputs.masonry_strength,
         kinematic_checks=kinematic_checks,
     )
 

@@ -201,6 +201,19 @@ class DesignResult:
     ratio_model: float | None = None
 
 
+def bisect_boundary(lo: int, hi: int, on_lo_side: Callable[[int], bool]) -> tuple[int, int]:
+    """Narrow the grid indices ``lo`` < ``hi`` (``lo`` on one side of a monotone predicate,
+    ``hi`` on the other) to neighbours ``(lo, hi)``, halving: ``on_lo_side(mid)`` says which
+    end ``mid`` replaces.  The design search's two bisections (pivot cap, target)."""
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        if on_lo_side(mid):
+            lo = mid
+        else:
+            hi = mid
+    return lo, hi
+
+
 def design_search(
     runner: IdaRunner,
     inputs: AssessmentInputs,
@@ -258,14 +271,8 @@ def design_search(
 
     if grid_hi >= grid_lo and not pivot_keeps(grid_hi):
         # the model ratio never decreases along the grid: bisect for the last kept k
-        lo, hi = grid_lo - 1, grid_hi  # lo kept (or below the range), hi dropped
-        while hi - lo > 1:
-            mid = (lo + hi) // 2
-            if pivot_keeps(mid):
-                lo = mid
-            else:
-                hi = mid
-        grid_hi = lo
+        # grid_lo - 1 kept (or below the range), grid_hi dropped
+        grid_hi = bisect_boundary(grid_lo - 1, grid_hi, pivot_keeps)[0]
         capped = True
         hi_shown = grid_hi * res
         relation = "below" if crushing else "up to"
@@ -300,14 +307,7 @@ def design_search(
     if ok(grid_lo):
         k = grid_lo
     else:
-        lo, hi = grid_lo, grid_hi  # lo fails, hi passes
-        while hi - lo > 1:
-            mid = (lo + hi) // 2
-            if ok(mid):
-                hi = mid
-            else:
-                lo = mid
-        k = hi
+        k = bisect_boundary(grid_lo, grid_hi, lambda j: not ok(j))[1]  # grid_lo fails, hi passes
     s = evaluate(k)
     ratio = round(k * res, 6)
     if k == grid_lo:

@@ -14,6 +14,7 @@ from frp_assess.assess.masonry import (
     bar_force,
     crushing_restoring_moment,
     masonry_design_values,
+    masonry_strength,
     max_ratio_for_pivot,
     pivot_check,
     wall_weight,
@@ -141,3 +142,16 @@ def test_largest_ratio_the_pivot_can_carry_by_hand():
     assert at_limit.depth_ratio == pytest.approx(0.1)
     # a wall whose own weight already needs x > 0.1·B admits no bars
     assert max_ratio_for_pivot(200.0, 0.4, 46.0, 0.0075, 2.875) == 0.0
+
+
+@pytest.mark.parametrize("call", ["design_values", "strength"])
+def test_an_unknown_knowledge_level_is_reported_on_the_project_key(call: str) -> None:
+    """The project sets the level in ``code_check.knowledge_level`` (there is no
+    ``wall.knowledge_level``): both entry points name that key."""
+    with pytest.raises(InputError) as info:
+        if call == "design_values":
+            masonry_design_values("rubble-stone", "LC4")
+        else:
+            masonry_strength("rubble-stone", "LC4")
+    assert info.value.key == "code_check.knowledge_level"
+    assert "LC4" in info.value.message

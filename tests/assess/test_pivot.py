@@ -16,7 +16,7 @@ from frp_assess.assess.cache import task_key
 from frp_assess.assess.from_project import load_inputs
 from frp_assess.assess.inputs import AssessmentInputs, Material, Option
 from frp_assess.assess.masonry import DEFAULT_COMPRESSIVE_STRENGTH, masonry_strength
-from frp_assess.assess.pivot import largest_ratio, masonry_result, pivot_checks, pivot_fails
+from frp_assess.assess.pivot import largest_ratio, pivot_checks, pivot_fails
 from frp_assess.dynamics import IdaSettings, ModelOptions
 from frp_assess.errors import InputError
 from frp_assess.motions import preset_spectrum
@@ -122,7 +122,7 @@ def test_pivot_checks_by_hand_and_consistent_with_the_model() -> None:
     rec = asdict(ext1.result())
     assert rec["pivot_shift"] == pytest.approx(ext1.check.depth / 2)
     assert rec["dropped"] is False and "\n" not in rec["reason"]
-    assert asdict(masonry_result(inp))["f_d"] == pytest.approx(f_d)
+    assert asdict(inp.masonry_strength)["f_d"] == pytest.approx(f_d)
 
 
 def test_edge_rule_drops_what_the_paper_would_keep() -> None:
