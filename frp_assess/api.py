@@ -154,7 +154,7 @@ def run_assessment(
     spectra = (
         None
         if inputs.building is None
-        else floor_spectra(records, inputs.spectrum, inputs.building)
+        else floor_spectra(records, inputs.spectrum, inputs.building, floors=runner.motions)
     )
     floor_pga = None if spectra is None else spectra.floor_pga
     cases, recommended = rank_cases(

@@ -105,6 +105,7 @@ def floor_spectra(
     spectrum: ElasticSpectrum,
     building: Building,
     periods: ArrayLike | None = None,
+    floors: Sequence[Record] | None = None,
 ) -> FloorSpectra:
     """The 5 % spectra of the floor motions of ``records`` and the code's floor spectrum.
 
@@ -113,11 +114,16 @@ def floor_spectra(
         spectrum: the target ground spectrum of the site.
         building: where the wall stands.
         periods: T [s] (default :func:`default_periods`).
+        floors: the floor motions of ``records`` when already computed (the run's
+            :attr:`~frp_assess.assess.runner.IdaRunner.motions`), else filtered here.
     """
     if not records:
         raise ValueError("no records")
     T = default_periods(building) if periods is None else np.asarray(periods, dtype=float)
-    floors = [floor_record(r, building) for r in records]
+    if floors is None:
+        floors = [floor_record(r, building) for r in records]
+    elif len(floors) != len(records):
+        raise ValueError("one floor motion per record")
     each = record_spectra(floors, T, SPECTRUM_DAMPING)
     ground = ground_spectrum_function(spectrum)
     code = floor_spectrum(

@@ -174,6 +174,9 @@ def test_floor_spectra_of_a_run() -> None:
     plateau = 1.1 / math.sqrt(0.05) * se_t1 * gamma * 0.9 * math.sqrt(1 + 0.0004 * 25)
     assert out.code[out.periods.index(0.3)] == pytest.approx(plateau, rel=1e-9)
     assert out.code[out.periods.index(0.24)] == pytest.approx(plateau, rel=1e-9)
+    # the run passes the floor motions its IDA ran on: the same spectra, nothing filtered twice
+    runner = IdaRunner(RECORDS, inputs(TOP), IdaCache(None), jobs=1)
+    assert floor_spectra(RECORDS, spectrum, TOP, floors=runner.motions) == out
 
 
 def test_governing_histories_and_missing_idas_use_the_floor_motion(tmp_path: Path) -> None:
