@@ -15,6 +15,7 @@ from rich import box
 from rich.table import Table
 from rich.text import Text
 
+from frp_assess.numbers import fmt_zeta
 from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.tui.core.fragility import lognormal_cdf, pga_axis
 from frp_assess.tui.literal import literal
@@ -244,7 +245,9 @@ def case_details(c: CaseResult) -> Text:
 
 # --------------------------------------------------------------------- checks, sensitivity
 def _zeta(value: float | None, passed: bool) -> Text:
-    return Text("—", "dim") if value is None else Text(f"{value:.2f}", "green" if passed else "red")
+    return (
+        Text("—", "dim") if value is None else Text(fmt_zeta(value), "green" if passed else "red")
+    )
 
 
 def kinematic_table(r: AssessmentResult) -> Table | Text:

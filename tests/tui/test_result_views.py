@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field, fields, make_dataclass, replace
 from pathlib import Path
+from types import SimpleNamespace
 from typing import Any
 
 import pytest
@@ -24,13 +25,20 @@ from frp_assess.assess.from_project import inputs_from_project
 from frp_assess.assess.kinematic_checks import IdaSummary, kinematic_checks
 from frp_assess.assess.pivot import case_pivot
 from frp_assess.config import load_project_text
+from frp_assess.results.checks import CaseChecks, KinematicChecks
 from frp_assess.results.model import AssessmentResult, DesignRow
 from frp_assess.tui.app import FrpAssessApp
 from frp_assess.tui.core.fragility import lognormal_cdf, pga_axis
 from frp_assess.tui.plots import PlotView, render_plot
 from frp_assess.tui.ranking_table import RankingTable
-from frp_assess.tui.result_views import bars_text, floor_spectra_plot, fragility_plot
+from frp_assess.tui.result_views import (
+    bars_text,
+    floor_spectra_plot,
+    fragility_plot,
+    kinematic_table,
+)
 from frp_assess.tui.results import ResultsPane
+from tests.report.test_checks_section import CAPACITY, LINEAR, _ls
 from tests.tui.conftest import SMALL, run_async, settle
 from tests.tui.test_app import SIZE
 
@@ -320,3 +328,23 @@ def test_dropped_options_floor_motion_and_fc_are_shown(run: Run, small_project: 
             assert "Shaken by" not in plain(q("#results-summary", Static))
 
     run_async(body)
+
+
+def test_kinematic_table_does_not_round_a_failing_zeta_to_one():
+    """ζ_E = 0.997 fails (ζ_E ≥ 1 passes): the TUI shows "0.997", not "1.00", as the report
+    does (tests/report/test_checks_section.py); 1.004 passes and shows "1.00"."""
+    case = CaseChecks(
+        "w",
+        CAPACITY,
+        LINEAR,
+        _ls("SLV", 0.079, 0.2493, 0.997),
+        _ls("SLC", 0.1, 0.251, 1.004),
+        None,
+        None,
+    )
+    checks = KinematicChecks("LC1", 1.35, "FC", True, 0.25, None, (case,))
+    table = kinematic_table(SimpleNamespace(kinematic_checks=checks))  # type: ignore[arg-type]
+    console = Console(width=240, record=True, file=open("/dev/null", "w"))  # noqa: SIM115
+    console.print(table)
+    row = next(line for line in console.export_text().splitlines() if line.strip().startswith("w "))
+    assert row.split()[1:4] == ["0.78", "0.997", "1.00"]
