@@ -22,12 +22,11 @@ def _text(value: Any) -> Text:
 
 
 def rank_cell(case: CaseResult) -> Any:
-    """The rank, or ``dropped`` for an option that fails the pivot check (``case.pivot``,
-    read with getattr: results without it show "—")."""
+    """The rank, or ``dropped`` for an option that fails the pivot check (``case.pivot``;
+    results without it show "—")."""
     if case.rank:
         return case.rank
-    pivot = getattr(case, "pivot", None)
-    return Text("dropped", "red") if pivot is not None and pivot.dropped else "—"
+    return Text("dropped", "red") if case.pivot is not None and case.pivot.dropped else "—"
 
 
 #: (header, sort key, cell) of the ranking table

@@ -186,7 +186,7 @@ class ResultsPane(Vertical):
         t.append(f"{r.model.target:g};  code check (§C8.7.1): a0* = {cc.a0_star:.3f} g ")
         t.append(f"vs {cc.demand:.3f} g → ")
         t.append("satisfied" if cc.passed else "NOT satisfied", "green" if cc.passed else "red")
-        building = getattr(r, "building", None)
+        building = r.building
         if building is not None:
             t.append("\nShaken by: ", "bold")
             t.append(printable(building.shaken_by))
@@ -215,7 +215,7 @@ class ResultsPane(Vertical):
         table = self.query_one("#records-table", DataTable)
         table.clear()
         for rec in c.records:
-            floor = getattr(rec, "floor_pga", None)
+            floor = rec.floor_pga
             table.add_row(
                 literal(rec.record),
                 f"{rec.pga:.4f}" + ("" if floor is None else f" (floor {floor:.4f})"),
@@ -235,9 +235,8 @@ class ResultsPane(Vertical):
             f"capacity/demand = {c.capacity_demand:.3f}, improvement = "
             f"{c.improvement:.3f}, FRP {c.frp_mass:.1f} kg ({c.frp_mass_per_m:.2f} kg/m)"
         )
-        fc = getattr(c, "fc", None)
-        if fc is not None and fc != 1.0:
-            t.append(f"\ncapacity/demand = design a_dyn / (FC·a_g·S) with FC = {fc:.2f}")
+        if c.fc != 1.0:
+            t.append(f"\ncapacity/demand = design a_dyn / (FC·a_g·S) with FC = {c.fc:.2f}")
         if c.lower_bound:
             t.append("\nsome record did not collapse up to C_max: lower bounds", "yellow")
         sc = c.scatter
@@ -355,7 +354,7 @@ class ResultsPane(Vertical):
         table.add_column(Text("C/D"), justify="right", no_wrap=True)
         table.add_column(Text("FRP [kg]"), justify="right", no_wrap=True)
         table.add_column(literal(f"cost [{cur}]"), justify="right", no_wrap=True)
-        built = [getattr(d, "as_built", None) for d in found]
+        built = [d.as_built for d in found]
         if any(b is not None for b in built):
             table.add_column(Text("bars as built"), no_wrap=True)
         table.add_column(Text("note"), ratio=1)
