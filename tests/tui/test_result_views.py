@@ -3,13 +3,12 @@ bars as built, the pivot check, the code's kinematic checks and the sensitivity 
 
 The results are those of a real run of a small project; the fields added by issues 15-16
 (``as_built``, ``pivot``, ``kinematic_checks``) are computed by their modules for the same
-inputs and put on the result with :func:`dataclasses.replace` (or, while a field is not yet
-on the results model, on a subclass that has it), as a run that writes them will.
+inputs and put on the result with :func:`dataclasses.replace`, as a run that writes them.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, fields, make_dataclass, replace
+from dataclasses import dataclass, replace
 from pathlib import Path
 from types import SimpleNamespace
 from typing import Any
@@ -53,17 +52,6 @@ def plain(widget: Static) -> str:
     return console.export_text()
 
 
-def with_fields(obj: Any, **values: Any) -> Any:
-    """``obj`` with these fields set: :func:`dataclasses.replace` when its class has them,
-    else an instance of a subclass that adds them (a field not yet on the results model)."""
-    names = {f.name for f in fields(obj)}
-    if set(values) <= names:
-        return replace(obj, **values)
-    extra = [(k, Any, field(default=None)) for k in values if k not in names]
-    cls = make_dataclass(type(obj).__name__, extra, bases=(type(obj),), frozen=True)
-    return cls(**{**{f.name: getattr(obj, f.name) for f in fields(obj)}, **values})
-
-
 @dataclass(frozen=True)
 class Run:
     plain: AssessmentResult  #: as the run gives it
@@ -83,7 +71,7 @@ def run(tmp_path_factory: pytest.TempPathFactory) -> Run:
     weak_inputs = inputs_from_project(weak, folder, "small.yaml")
     options = (None, *inputs.options)
     cases = tuple(
-        with_fields(
+        replace(
             c,
             ratio_asked=None if o is None else o.asked,
             as_built=None if o is None else option_as_built(inputs, o),
@@ -95,7 +83,7 @@ def run(tmp_path_factory: pytest.TempPathFactory) -> Run:
     )
     ida = {c.name: IdaSummary(c.mean_a_dyn, c.min_a_dyn, len(c.records)) for c in results.cases}
     checks = kinematic_checks(inputs, records=prepare_records(inputs).records, ida=ida)
-    full = with_fields(replace(results, cases=cases), kinematic_checks=checks)
+    full = replace(replace(results, cases=cases), kinematic_checks=checks)
     return Run(results, full)
 
 
@@ -172,19 +160,19 @@ def test_results_views_show_bars_pivot_checks_and_sensitivity(run: Run, small_pr
             # bars as built: n × Ød, spacing, installed vs asked, anchorage verdict
             bars = plain(q("#bars-table", Static))
             for c in r.options:
-                b = c.as_built  # type: ignore[attr-defined]
+                b = c.as_built
                 assert b is not None
                 row = next(line for line in bars.splitlines() if c.name in line)
                 assert bars_text(b) in row and f"{b.spacing:.2f}" in row
-                assert f"{b.ratio_installed:.3f} / {c.ratio_asked:g}" in row  # type: ignore[attr-defined]
+                assert f"{b.ratio_installed:.3f} / {c.ratio_asked:g}" in row
                 cone = b.anchorage.cone_ok
                 assert cone is not None and ("OK" if cone else "FAILS") in row
             # the pivot: x/B of every case, the dropped one says so and why
             pivot = plain(q("#pivot-table", Static))
-            dropped = [c for c in r.cases if c.pivot.dropped]  # type: ignore[attr-defined]
+            dropped = [c for c in r.cases if c.pivot.dropped]
             assert dropped, "0.2 MPa masonry: some option's compressed zone is too deep"
             for c in r.cases:
-                p = c.pivot  # type: ignore[attr-defined]
+                p = c.pivot
                 row = next(line for line in pivot.splitlines() if line.lstrip().startswith(c.name))
                 assert f"{p.depth_ratio:.3f}" in row
                 assert ("dropped" if p.dropped else "holds") in row
@@ -193,7 +181,7 @@ def test_results_views_show_bars_pivot_checks_and_sensitivity(run: Run, small_pr
                 )
             # the code's checks: each case's ζ_E of every check, and its verdict
             checks = plain(q("#kinematic-table", Static))
-            kc = r.kinematic_checks  # type: ignore[attr-defined]
+            kc = r.kinematic_checks
             assert f"FC = {kc.fc:.2f}" in checks
             for cc in kc.cases:
                 row = next(
@@ -211,9 +199,9 @@ def test_results_views_show_bars_pivot_checks_and_sensitivity(run: Run, small_pr
             gfrp = r.cases[1]
             row = DesignRow("GFRP", "external", 1.0, gfrp.capacity_demand, 1.0, 2.0, "")
             pane = q(ResultsPane)
-            pane.show(replace(r, design=(with_fields(row, as_built=gfrp.as_built),)), "out")  # type: ignore[attr-defined]
+            pane.show(replace(r, design=(replace(row, as_built=gfrp.as_built),)), "out")
             design = plain(q("#design-table", Static))
-            b = gfrp.as_built  # type: ignore[attr-defined]
+            b = gfrp.as_built
             assert (
                 f"{bars_text(b)} at {b.spacing:.2f} m /face, ρ {b.ratio_installed:.3f} ‰" in design
             )
@@ -221,8 +209,8 @@ def test_results_views_show_bars_pivot_checks_and_sensitivity(run: Run, small_pr
             pane.show_case(2)
             summary = plain(q("#case-summary", Static))
             c = r.cases[2]
-            assert f"bars: {bars_text(c.as_built)}" in summary  # type: ignore[attr-defined]
-            assert f"pivot: x/B = {c.pivot.depth_ratio:.3f}" in summary  # type: ignore[attr-defined]
+            assert f"bars: {bars_text(c.as_built)}" in summary
+            assert f"pivot: x/B = {c.pivot.depth_ratio:.3f}" in summary
 
     run_async(body)
 
@@ -237,14 +225,14 @@ def test_results_without_the_new_fields_show_nothing_of_them(run: Run, small_pro
             bare = replace(
                 r,
                 cases=tuple(
-                    with_fields(
+                    replace(
                         c, as_built=None, pivot=None, scatter=replace(c.scatter, fragility=None)
                     )
                     for c in r.cases
                 ),
                 sensitivity=None,
             )
-            bare = with_fields(bare, kinematic_checks=None)
+            bare = replace(bare, kinematic_checks=None)
             await _show(pilot, bare)
             q = app.query_one
             assert plain(q("#bars-table", Static)).strip() == "No bar layout in these results."
@@ -284,11 +272,11 @@ def test_dropped_options_floor_motion_and_fc_are_shown(run: Run, small_project: 
     r = run.full
     cases = []
     for c in r.cases:
-        records = tuple(with_fields(rec, floor_pga=2.0 * rec.pga) for rec in c.records)
-        dropped = c.pivot.dropped  # type: ignore[attr-defined]
-        cases.append(with_fields(c, records=records, fc=1.35, rank=None if dropped else c.rank))
+        records = tuple(replace(rec, floor_pga=2.0 * rec.pga) for rec in c.records)
+        dropped = c.pivot.dropped
+        cases.append(replace(c, records=records, fc=1.35, rank=None if dropped else c.rank))
     floor = FloorSpectraStandIn((0.0, 0.5, 1.0), (0.2, 0.6, 0.3), (0.25, 0.7, 0.2), (0.1, 0.3, 0.1))
-    shown = with_fields(
+    shown = replace(
         replace(r, cases=tuple(cases)),
         building=BuildingStandIn("the wall's base at Z = 9 m of a 3-storey building"),
         floor_spectra=floor,
@@ -306,7 +294,7 @@ def test_dropped_options_floor_motion_and_fc_are_shown(run: Run, small_project: 
             ranks = {str(table.get_row_at(i)[1]): str(table.get_row_at(i)[0]) for i in range(3)}
             assert "dropped" in ranks.values()
             for c in shown.cases[1:]:
-                assert (ranks[c.name] == "dropped") == c.pivot.dropped  # type: ignore[attr-defined]
+                assert (ranks[c.name] == "dropped") == c.pivot.dropped
             pane = q(ResultsPane)
             pane.show_case(1)
             case = shown.cases[1]
