@@ -18,7 +18,7 @@ from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.widgets import DataTable, Label, Select, Static, TabPane
 
-from frp_assess.numbers import recommendation_label, recommendation_text
+from frp_assess.numbers import fmt_against, recommendation_label, recommendation_text
 from frp_assess.results.model import AssessmentResult, CaseResult, RecordResult
 from frp_assess.tui.core.text import printable
 from frp_assess.tui.literal import literal
@@ -135,7 +135,9 @@ class ResultsPane(Vertical):
         self.mark_stale(stale)
         self.query_one("#results-tabs").display = True
         self._summary(results)
-        self.query_one(RankingTable).show(results.cases, results.costs.currency)
+        self.query_one(RankingTable).show(
+            results.cases, results.costs.currency, results.model.target
+        )
         sel = self.query_one("#case-select", Select)
         with self.app.prevent(Select.Changed):
             sel.set_options([(literal(c.name), i) for i, c in enumerate(results.cases)])
@@ -181,7 +183,8 @@ class ResultsPane(Vertical):
         t = Text()
         t.append(f"Demand a_g·S = {demand:.3f} g;  wall α = {w.alpha_deg:.2f}°, ")
         t.append(f"a_RM = {w.a_rm:.3f} g;  unreinforced a_dyn = {urm.design_a_dyn:.3f} g, ")
-        t.append(f"C/D = {urm.capacity_demand:.2f}", "green" if urm.meets_target else "red")
+        cd = fmt_against(urm.capacity_demand, r.model.target, urm.meets_target)
+        t.append(f"C/D = {cd}", "green" if urm.meets_target else "red")
         t.append(f"\nDesign value: {r.model.design_value};  target C/D ≥ ")
         t.append(f"{r.model.target:g};  code check (§C8.7.1): a0* = {cc.a0_star:.3f} g ")
         t.append(f"vs {cc.demand:.3f} g → ")

@@ -29,7 +29,7 @@ from frp_assess.results.model import AssessmentResult, DesignRow
 from frp_assess.tui.app import FrpAssessApp
 from frp_assess.tui.core.fragility import lognormal_cdf, pga_axis
 from frp_assess.tui.plots import PlotView, render_plot
-from frp_assess.tui.ranking_table import RankingTable
+from frp_assess.tui.ranking_table import RANKING_COLUMNS, RankingTable
 from frp_assess.tui.result_views import (
     bars_text,
     floor_spectra_plot,
@@ -38,6 +38,7 @@ from frp_assess.tui.result_views import (
 )
 from frp_assess.tui.results import ResultsPane
 from tests.report.test_checks_section import CAPACITY, LINEAR, _ls
+from tests.report.test_report import raw, typed
 from tests.tui.conftest import SMALL, run_async, settle
 from tests.tui.test_app import SIZE
 
@@ -336,3 +337,14 @@ def test_kinematic_table_does_not_round_a_failing_zeta_to_one():
     console.print(table)
     row = next(line for line in console.export_text().splitlines() if line.strip().startswith("w "))
     assert row.split()[1:4] == ["0.78", "0.997", "1.00"]
+
+
+def test_ranking_cd_agrees_with_meets():
+    """C/D = 0.997 against a target of 1 does not meet it: the ranking table's C/D cell reads
+    "0.997" beside "no" (not "1.00"), as the CLI and the report (numbers.fmt_against)."""
+    case = replace(typed(raw()).cases[1], capacity_demand=0.997, meets_target=False)
+    cells = {header: cell(case, 1.0) for header, _, cell in RANKING_COLUMNS}
+    assert cells["C/D"] == "0.997"
+    assert cells["meets"].plain == "no"
+    passing = replace(case, capacity_demand=1.004, meets_target=True)
+    assert {h: cell(passing, 1.0) for h, _, cell in RANKING_COLUMNS}["C/D"] == "1.00"
