@@ -33,6 +33,21 @@ def fmt_against(value: float, threshold: float, meets: bool | None, decimals: in
     return text
 
 
+#: ζ_E at or above this is shown as "> 100" (a wall that barely moves under the design records)
+ZETA_SHOWN_MAX = 100.0
+
+
+def fmt_zeta(value: float | None) -> str:
+    """ζ_E = capacity/demand [-] of a code check (it passes at ζ_E ≥ 1) with 2 decimals, or
+    more when 2 would round across 1 (0.997 is "0.997", not "1.00"); "> 100" from 100 up,
+    "—" for None."""
+    if value is None:
+        return "—"
+    if value >= ZETA_SHOWN_MAX:
+        return f"> {ZETA_SHOWN_MAX:.0f}"
+    return fmt_against(value, 1.0, value >= 1.0)
+
+
 def numerical_check_text(results: AssessmentResult) -> str | None:
     """The verification run in one sentence, or None when it was not asked for."""
     nc = results.numerical_check

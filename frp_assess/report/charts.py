@@ -16,7 +16,7 @@ from reportlab.lib.colors import Color
 from reportlab.pdfbase.pdfmetrics import stringWidth
 
 from frp_assess.report import styles as st
-from frp_assess.report.tables import fmt_permille, is_lower_bound, urm_case
+from frp_assess.report.tables import fmt_permille
 from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.text_safety import pdf_plain
 
@@ -417,7 +417,7 @@ def options_chart(
         "capacity_demand": "capacity / demand [–]",
     }
     groups = option_series(results)
-    urm = urm_case(results)
+    urm = results.urm
     d = new_drawing(width, height)
     x0, y0 = 46.0, 34.0
     w, h = width - x0 - 150, height - y0 - 10
@@ -447,7 +447,7 @@ def options_chart(
             sty["dash"],
         )
         for c in cs:
-            lb = is_lower_bound(c)
+            lb = c.lower_bound
             any_bound |= lb
             ax.marker(
                 c.frp_mass, getattr(c, quantity), sty["color"], shape=sty["marker"], hollow=lb

@@ -16,8 +16,9 @@ from __future__ import annotations
 from reportlab.lib.units import mm
 from reportlab.platypus import Flowable
 
+from frp_assess.numbers import fmt_zeta
 from frp_assess.report.flow import esc, gap, grid, markup, para
-from frp_assess.report.tables import DASH, TableData, fmt_acc, fmt_ratio, pass_fail
+from frp_assess.report.tables import DASH, TableData, fmt_acc, pass_fail
 from frp_assess.results.checks import CaseChecks, KinematicChecks
 from frp_assess.text_safety import Markup
 
@@ -35,23 +36,12 @@ CURVE_HEADER = [
 ]
 
 
-#: ζ_E at or above this is shown as "> 100" (a wall that barely moves under the design records)
-ZETA_SHOWN_MAX = 100.0
-
-
 def fmt_mm(x: float | None) -> str:
     """A displacement [m] shown in mm with 1 decimal (2 significant digits below 0.1 mm)."""
     if x is None:
         return DASH
     mm_value = 1e3 * x
     return f"{mm_value:.2g} mm" if 0.0 < mm_value < 0.1 else f"{mm_value:.1f} mm"
-
-
-def fmt_zeta(x: float | None) -> str:
-    """ζ_E with 2 decimals, "> 100" from 100 up."""
-    if x is None:
-        return DASH
-    return f"> {ZETA_SHOWN_MAX:.0f}" if x >= ZETA_SHOWN_MAX else fmt_ratio(x)
 
 
 def fmt_g(x: float | None) -> str:

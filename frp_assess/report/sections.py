@@ -24,7 +24,7 @@ MECHANISM_TEXT = {
 
 def design_statistic(results: Results) -> str:
     """What the design a_dyn is: the mean of the records or the least favourable one."""
-    if tb.uses_mean(results):
+    if results.design_is_mean:
         return "the mean over the records"
     return "the least favourable record, as there are fewer than 7 (EN 1998-1 §4.3.3.4.3)"
 
@@ -43,7 +43,7 @@ def _verdict(ok: bool, text: str) -> Flowable:
 
 def _option_sentence(results: Results, c: CaseResult) -> str:
     cur = results.costs.currency
-    lb = tb.is_lower_bound(c)
+    lb = c.lower_bound
     return (
         f"<b>{esc(c.name)}</b>: {tb.fmt_mass(c.frp_mass)} kg of {esc(c.material)} "
         f"({tb.fmt_mass(c.frp_mass_per_m)} kg per metre of wall), indicative cost "
@@ -63,7 +63,7 @@ def summary(results: Results) -> list[Flowable]:
     p = results.project
     w = results.wall
     s = results.seismic
-    urm = tb.urm_case(results)
+    urm = results.urm
     target = results.model.target
     demand = results.demand.pga
     n_rec = len(results.records)
@@ -117,12 +117,12 @@ def summary(results: Results) -> list[Flowable]:
     if floor is not None:
         out.append(markup(floor))
     ok = bool(urm.meets_target)
-    lb = tb.is_lower_bound(urm)
+    lb = urm.lower_bound
     out.append(
         markup(
             f"<b>The wall as it is.</b> Over the {n_rec} records the unreinforced wall "
             f"overturns at a design ground acceleration a<sub>dyn</sub> = "
-            f"{esc(tb.bound(tb.fmt_acc(tb.design_a_dyn(urm)), lb))} g "
+            f"{esc(tb.bound(tb.fmt_acc(urm.design_a_dyn), lb))} g "
             f"({esc(design_statistic(results))}), i.e. "
             f"{esc(tb.bound(tb.fmt_capacity(urm, target), lb))} times the demand"
             + (f" once divided by the confidence factor FC = {urm.fc:g}." if urm.fc != 1.0 else ".")
@@ -333,7 +333,7 @@ def seismic(results: Results) -> list[Flowable]:
 
 
 def unreinforced(results: Results) -> list[Flowable]:
-    urm = tb.urm_case(results)
+    urm = results.urm
     out: list[Flowable] = [
         PageBreak(),
         h1("4  The unreinforced wall"),

@@ -102,40 +102,17 @@ def pass_fail(x: bool | None) -> str:
 # --- helpers on the results ---------------------------------------------------------------
 
 
-def urm_case(results: Results) -> CaseResult:
-    """The unreinforced wall: the case without material (the first by contract)."""
-    for c in results.cases:
-        if c.material is None:
-            return c
-    return results.cases[0]
-
-
 def ranked_options(results: Results) -> list[CaseResult]:
     """Retrofit options by rank (1 first); unranked options last, in file order."""
     opts = [c for c in results.cases if c.material is not None]
     return sorted(opts, key=lambda c: (c.rank is None, c.rank or 0))
 
 
-def is_lower_bound(case: CaseResult) -> bool:
-    """Some record did not collapse up to C_max: the case's means are lower bounds."""
-    if case.lower_bound:
-        return True
-    return any(r.collapse_multiplier is None for r in case.records)
-
-
-def design_a_dyn(case: CaseResult) -> float:
-    """The design value of a_dyn [g]."""
-    return float(case.design_a_dyn)
-
-
-def uses_mean(results: Results) -> bool:
-    """The design a_dyn is the mean over the records (else the least favourable one)."""
-    return results.design_is_mean
-
-
 def a_dyn_label(results: Results) -> str:
     """Header markup of the design a_dyn column."""
-    return Markup("mean a<sub>dyn</sub> [g]" if uses_mean(results) else "min a<sub>dyn</sub> [g]")
+    return Markup(
+        "mean a<sub>dyn</sub> [g]" if results.design_is_mean else "min a<sub>dyn</sub> [g]"
+    )
 
 
 def bound(text: str, lower: bool) -> str:
@@ -181,7 +158,7 @@ def rank_text(case: CaseResult) -> str:
 
 
 def ranking_row(case: CaseResult, target: float) -> list[str]:
-    lb = is_lower_bound(case)
+    lb = case.lower_bound
     return [
         rank_text(case),
         case.name,
@@ -191,7 +168,7 @@ def ranking_row(case: CaseResult, target: float) -> list[str]:
         fmt_mass(case.frp_mass_per_m),
         fmt_mass(case.frp_mass),
         fmt_cost(case.frp_cost),
-        bound(fmt_acc(design_a_dyn(case)), lb),
+        bound(fmt_acc(case.design_a_dyn), lb),
         bound(fmt_q(case.mean_q), lb),
         bound(fmt_ratio(case.improvement), lb),
         bound(fmt_capacity(case, target), lb),
@@ -206,7 +183,7 @@ def ranking_table(results: Results) -> TableData:
         a_dyn_label(results) if h == "{a_dyn}" else head(h, cur=cur) for h in RANKING_HEADER
     ]
     target = float(results.model.target)
-    cases = [urm_case(results), *ranked_options(results)]
+    cases = [results.urm, *ranked_options(results)]
     rows = [ranking_row(c, target) for c in cases]
     return TableData(header, rows)
 
@@ -252,7 +229,7 @@ def scatter_table(results: Results) -> TableData:
         "P(collapse) at a_g·S",
     ]
     rows = []
-    for c in [urm_case(results), *ranked_options(results)]:
+    for c in [results.urm, *ranked_options(results)]:
         sc = c.scatter
         fr = sc.fragility
         rows.append(
@@ -284,10 +261,10 @@ def summary_table(results: Results, n_alternatives: int = 3) -> TableData:
         Markup("meets<br/>target"),
     ]
     ranked = [c for c in ranked_options(results) if c.rank is not None]  # not the dropped
-    chosen: list[tuple[str, CaseResult]] = [("existing", urm_case(results))]
+    chosen: list[tuple[str, CaseResult]] = [("existing", results.urm)]
     rec = case_by_name(results, results.recommended)
     if rec is not None:
-        urm_ok = bool(urm_case(results).meets_target)
+        urm_ok = bool(results.urm.meets_target)
         if not results.input_code_compliant:
             label = "best ranked"
         else:
@@ -297,14 +274,14 @@ def summary_table(results: Results, n_alternatives: int = 3) -> TableData:
     chosen += [(f"alternative {i}" if rec else f"best {i}", c) for i, c in enumerate(others, 1)]
     rows = []
     for role, c in chosen:
-        lb = is_lower_bound(c)
+        lb = c.lower_bound
         rows.append(
             [
                 role,
                 c.name,
                 fmt_mass(c.frp_mass),
                 fmt_cost(c.frp_cost),
-                bound(fmt_acc(design_a_dyn(c)), lb),
+                bound(fmt_acc(c.design_a_dyn), lb),
                 bound(fmt_ratio(c.improvement), lb),
                 bound(fmt_capacity(c, float(results.model.target)), lb),
                 yes_no(c.meets_target),
@@ -550,7 +527,7 @@ def case_records_table(case: CaseResult) -> TableData:
 
 
 def case_summary_rows(results: Results, case: CaseResult) -> list[list[str]]:
-    lb = is_lower_bound(case)
+    lb = case.lower_bound
     rows = [
         ["mean a_dyn over the records", bound(f"{fmt_acc(case.mean_a_dyn)} g", lb)],
         ["least favourable a_dyn", f"{fmt_acc(case.min_a_dyn)} g"],
@@ -565,7 +542,7 @@ def case_summary_rows(results: Results, case: CaseResult) -> list[list[str]]:
             yes_no(case.meets_target),
         ],
     ]
-    if case.design_a_dyn is not None and not uses_mean(results):
+    if case.design_a_dyn is not None and not results.design_is_mean:
         design = f"{fmt_acc(case.design_a_dyn)} g"
         rows.insert(2, ["design a_dyn (fewer than 7 records)", design])
     return rows
@@ -591,16 +568,16 @@ def code_check_rows(results: Results) -> list[list[str]]:
 
 def comparison_table(results: Results) -> TableData:
     """The IDA verdict of the unreinforced wall next to the code linear kinematic check."""
-    urm = urm_case(results)
+    urm = results.urm
     k = results.code_check
-    lb = is_lower_bound(urm)
+    lb = urm.lower_bound
     header = ["assessment", "capacity [g]", "demand [g]", "capacity / demand", "verdict"]
     rows = [
         [
             "IDA, rocking dynamics (this report): a_dyn / FC"
             if urm.fc != 1.0
             else "IDA, rocking dynamics (this report)",
-            bound(fmt_acc(design_a_dyn(urm) / urm.fc), lb),
+            bound(fmt_acc(urm.design_a_dyn / urm.fc), lb),
             fmt_acc(results.demand.pga),
             bound(fmt_capacity(urm, float(results.model.target)), lb),
             "satisfied" if urm.meets_target else "NOT satisfied",
@@ -646,7 +623,7 @@ def a_dyn_matrix(results: Results) -> TableData:
     """a_dyn [g] of every case and record, unreinforced wall first then by rank."""
     names = [r.name for r in results.records]
     header = ["option"] + names
-    cases: Sequence[CaseResult] = [urm_case(results)] + ranked_options(results)
+    cases: Sequence[CaseResult] = [results.urm] + ranked_options(results)
     rows = []
     for c in cases:
         by_rec = {r.record: r for r in c.records}

@@ -11,6 +11,7 @@ from textual.binding import Binding, BindingType
 from textual.message import Message
 from textual.widgets import DataTable, TabbedContent
 
+from frp_assess.numbers import fmt_against
 from frp_assess.results.model import CaseResult
 from frp_assess.tui.core.text import printable
 from frp_assess.tui.literal import literal, safe
@@ -22,29 +23,35 @@ def _text(value: Any) -> Text:
 
 
 def rank_cell(case: CaseResult) -> Any:
-    """The rank, or ``dropped`` for an option that fails the pivot check (``case.pivot``,
-    read with getattr: results without it show "—")."""
+    """The rank, or ``dropped`` for an option that fails the pivot check (``case.pivot``;
+    results without it show "—")."""
     if case.rank:
         return case.rank
-    pivot = getattr(case, "pivot", None)
-    return Text("dropped", "red") if pivot is not None and pivot.dropped else "—"
+    return Text("dropped", "red") if case.pivot is not None and case.pivot.dropped else "—"
 
 
-#: (header, sort key, cell) of the ranking table
-RANKING_COLUMNS: list[tuple[str, Callable[[CaseResult], Any], Callable[..., Any]]] = [
-    ("rank", lambda c: (c.rank is None, c.rank or 0), lambda c: rank_cell(c)),
-    ("option", lambda c: c.name, lambda c: c.name),
-    ("kg/m", lambda c: c.frp_mass_per_m, lambda c: f"{c.frp_mass_per_m:.2f}"),
-    ("FRP kg", lambda c: c.frp_mass, lambda c: f"{c.frp_mass:.1f}"),
-    ("cost", lambda c: c.frp_cost, lambda c: f"{c.frp_cost:.0f}"),
-    ("a_dyn [g]", lambda c: c.design_a_dyn, lambda c: f"{c.design_a_dyn:.3f}"),
-    ("q", lambda c: c.mean_q, lambda c: f"{c.mean_q:.2f}"),
-    ("impr.", lambda c: c.improvement, lambda c: f"{c.improvement:.2f}"),
-    ("C/D", lambda c: c.capacity_demand, lambda c: f"{c.capacity_demand:.2f}"),
+#: (header, sort key, cell) of the ranking table; the cell takes the case and the target C/D
+#: (C/D shown with the decimals that agree with "meets", :func:`~frp_assess.numbers.fmt_against`)
+RANKING_COLUMNS: list[
+    tuple[str, Callable[[CaseResult], Any], Callable[[CaseResult, float], Any]]
+] = [
+    ("rank", lambda c: (c.rank is None, c.rank or 0), lambda c, _: rank_cell(c)),
+    ("option", lambda c: c.name, lambda c, _: c.name),
+    ("kg/m", lambda c: c.frp_mass_per_m, lambda c, _: f"{c.frp_mass_per_m:.2f}"),
+    ("FRP kg", lambda c: c.frp_mass, lambda c, _: f"{c.frp_mass:.1f}"),
+    ("cost", lambda c: c.frp_cost, lambda c, _: f"{c.frp_cost:.0f}"),
+    ("a_dyn [g]", lambda c: c.design_a_dyn, lambda c, _: f"{c.design_a_dyn:.3f}"),
+    ("q", lambda c: c.mean_q, lambda c, _: f"{c.mean_q:.2f}"),
+    ("impr.", lambda c: c.improvement, lambda c, _: f"{c.improvement:.2f}"),
+    (
+        "C/D",
+        lambda c: c.capacity_demand,
+        lambda c, t: fmt_against(c.capacity_demand, t, c.meets_target),
+    ),
     (
         "meets",
         lambda c: c.meets_target,
-        lambda c: Text("yes", "green") if c.meets_target else Text("no", "red"),
+        lambda c, _: Text("yes", "green") if c.meets_target else Text("no", "red"),
     ),
 ]
 
@@ -78,10 +85,13 @@ class RankingTable(DataTable[Any]):
         self.sort_column = 0
         self.sort_reverse = False
         self.currency = ""
+        self.target = 1.0
 
-    def show(self, cases: Sequence[CaseResult], currency: str) -> None:
+    def show(self, cases: Sequence[CaseResult], currency: str, target: float) -> None:
+        """Show ``cases``; ``target`` is the C/D their ``meets_target`` is against [-]."""
         self.cases = cases
         self.currency = currency
+        self.target = target
         self._fill()
 
     def _fill(self) -> None:
@@ -94,7 +104,9 @@ class RankingTable(DataTable[Any]):
             self.add_column(Text(header + mark))
         self.order = sorted_order(self.cases, self.sort_column, self.sort_reverse)
         for i in self.order:
-            self.add_row(*[_text(cell(self.cases[i])) for _, _, cell in RANKING_COLUMNS])
+            self.add_row(
+                *[_text(cell(self.cases[i], self.target)) for _, _, cell in RANKING_COLUMNS]
+            )
         if self.cases:
             self.move_cursor(row=min(row, len(self.cases) - 1), column=col, animate=False)
 

@@ -2,9 +2,9 @@
 the code's kinematic checks and the sensitivity table, built from the typed results.
 
 Pure functions from :class:`~frp_assess.results.model.AssessmentResult` to Rich tables and
-plot series (the widgets are in :mod:`frp_assess.tui.results`).  Fields that a run may not
-have (``as_built``, ``pivot``, ``kinematic_checks``: older results, or a version without
-them) are read with ``getattr(..., None)``: a view with nothing to show says so.
+plot series (the widgets are in :mod:`frp_assess.tui.results`).  Fields that a run may leave
+None (``as_built``, ``pivot``, ``kinematic_checks``, ``floor_spectra``): a view with nothing
+to show says so.
 """
 
 from __future__ import annotations
@@ -15,6 +15,7 @@ from rich import box
 from rich.table import Table
 from rich.text import Text
 
+from frp_assess.numbers import fmt_zeta
 from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.tui.core.fragility import lognormal_cdf, pga_axis
 from frp_assess.tui.literal import literal
@@ -109,7 +110,7 @@ def floor_spectra_plot(r: AssessmentResult) -> tuple[list[Series], dict[str, Any
     """5 % spectra at the wall's base (``floor_spectra``, a wall above ground): the mean of
     the records' floor motions, the code's floor spectrum and the ground target, in g.  No
     series when the results have none."""
-    fs = getattr(r, "floor_spectra", None)
+    fs = r.floor_spectra
     if fs is None or not fs.periods:
         return [], {}
     series = [
@@ -155,7 +156,7 @@ def anchorage_text(built: Any) -> Text:
 def bars_table(r: AssessmentResult) -> Table | Text:
     """Per option: the bars as built (count × diameter, spacing, ratio installed vs asked,
     bar force and anchorage)."""
-    rows = [(c, getattr(c, "as_built", None)) for c in r.options]
+    rows = [(c, c.as_built) for c in r.options]
     if not any(b is not None for _, b in rows):
         return Text("No bar layout in these results.", "dim")
     t = _table("Bars as built (whole bars over the wall length)")
@@ -176,8 +177,7 @@ def bars_table(r: AssessmentResult) -> Table | Text:
             t.add_row(literal(c.name), Text("cannot be built in whole bars", "yellow"))
             continue
         spacing = f"{b.spacing:.2f}" + (" /face" if b.lines > 1 else "")
-        asked = getattr(c, "ratio_asked", None)
-        asked = b.ratio_asked if asked is None else asked
+        asked = b.ratio_asked if c.ratio_asked is None else c.ratio_asked
         t.add_row(
             literal(c.name),
             bars_text(b),
@@ -191,7 +191,7 @@ def bars_table(r: AssessmentResult) -> Table | Text:
 
 def pivot_table(r: AssessmentResult) -> Table | Text:
     """Per case: the compressed zone at the pivot (x/B), the pivot used, dropped and why."""
-    rows = [(c, getattr(c, "pivot", None)) for c in r.cases]
+    rows = [(c, c.pivot) for c in r.cases]
     if not any(p is not None for _, p in rows):
         return Text("No pivot check in these results.", "dim")
     t = _table("Masonry at the pivot: compressed zone x of 0.85·f_d")
@@ -224,17 +224,16 @@ def pivot_reason(case: str, reason: str) -> str:
 def case_details(c: CaseResult) -> Text:
     """Lines for the case summary: its bars as built and its pivot check (empty if none)."""
     out = Text()
-    b = getattr(c, "as_built", None)
+    b = c.as_built
     if b is not None:
-        asked = getattr(c, "ratio_asked", None)
-        asked = b.ratio_asked if asked is None else asked
+        asked = b.ratio_asked if c.ratio_asked is None else c.ratio_asked
         out.append(
             f"\nbars: {bars_text(b)} {b.material} at {b.spacing:.2f} m"
             + (" per face" if b.lines > 1 else "")
             + f", ρ installed {b.ratio_installed:.3f} ‰ (asked {asked:g} ‰); anchorage "
         )
         out.append_text(anchorage_text(b))
-    p = getattr(c, "pivot", None)
+    p = c.pivot
     if p is not None:
         out.append(f"\npivot: x/B = {p.depth_ratio:.3f} ({p.model_pivot}) ")
         out.append("DROPPED" if p.dropped else "holds", "bold red" if p.dropped else "green")
@@ -244,13 +243,15 @@ def case_details(c: CaseResult) -> Text:
 
 # --------------------------------------------------------------------- checks, sensitivity
 def _zeta(value: float | None, passed: bool) -> Text:
-    return Text("—", "dim") if value is None else Text(f"{value:.2f}", "green" if passed else "red")
+    return (
+        Text("—", "dim") if value is None else Text(fmt_zeta(value), "green" if passed else "red")
+    )
 
 
 def kinematic_table(r: AssessmentResult) -> Table | Text:
     """The code's checks of every case side by side (Circolare 2019 §C8.7.1): ζ_E of the
     linear, SLV, SLC, time-history and IDA checks, and the verdict."""
-    kc = getattr(r, "kinematic_checks", None)
+    kc = r.kinematic_checks
     if kc is None:
         return Text("No kinematic checks in these results.", "dim")
     where = ""

@@ -18,7 +18,7 @@ from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.widgets import DataTable, Label, Select, Static, TabPane
 
-from frp_assess.numbers import recommendation_label, recommendation_text
+from frp_assess.numbers import fmt_against, recommendation_label, recommendation_text
 from frp_assess.results.model import AssessmentResult, CaseResult, RecordResult
 from frp_assess.tui.core.text import printable
 from frp_assess.tui.literal import literal
@@ -135,7 +135,9 @@ class ResultsPane(Vertical):
         self.mark_stale(stale)
         self.query_one("#results-tabs").display = True
         self._summary(results)
-        self.query_one(RankingTable).show(results.cases, results.costs.currency)
+        self.query_one(RankingTable).show(
+            results.cases, results.costs.currency, results.model.target
+        )
         sel = self.query_one("#case-select", Select)
         with self.app.prevent(Select.Changed):
             sel.set_options([(literal(c.name), i) for i, c in enumerate(results.cases)])
@@ -181,12 +183,13 @@ class ResultsPane(Vertical):
         t = Text()
         t.append(f"Demand a_g·S = {demand:.3f} g;  wall α = {w.alpha_deg:.2f}°, ")
         t.append(f"a_RM = {w.a_rm:.3f} g;  unreinforced a_dyn = {urm.design_a_dyn:.3f} g, ")
-        t.append(f"C/D = {urm.capacity_demand:.2f}", "green" if urm.meets_target else "red")
+        cd = fmt_against(urm.capacity_demand, r.model.target, urm.meets_target)
+        t.append(f"C/D = {cd}", "green" if urm.meets_target else "red")
         t.append(f"\nDesign value: {r.model.design_value};  target C/D ≥ ")
         t.append(f"{r.model.target:g};  code check (§C8.7.1): a0* = {cc.a0_star:.3f} g ")
         t.append(f"vs {cc.demand:.3f} g → ")
         t.append("satisfied" if cc.passed else "NOT satisfied", "green" if cc.passed else "red")
-        building = getattr(r, "building", None)
+        building = r.building
         if building is not None:
             t.append("\nShaken by: ", "bold")
             t.append(printable(building.shaken_by))
@@ -215,7 +218,7 @@ class ResultsPane(Vertical):
         table = self.query_one("#records-table", DataTable)
         table.clear()
         for rec in c.records:
-            floor = getattr(rec, "floor_pga", None)
+            floor = rec.floor_pga
             table.add_row(
                 literal(rec.record),
                 f"{rec.pga:.4f}" + ("" if floor is None else f" (floor {floor:.4f})"),
@@ -235,9 +238,8 @@ class ResultsPane(Vertical):
             f"capacity/demand = {c.capacity_demand:.3f}, improvement = "
             f"{c.improvement:.3f}, FRP {c.frp_mass:.1f} kg ({c.frp_mass_per_m:.2f} kg/m)"
         )
-        fc = getattr(c, "fc", None)
-        if fc is not None and fc != 1.0:
-            t.append(f"\ncapacity/demand = design a_dyn / (FC·a_g·S) with FC = {fc:.2f}")
+        if c.fc != 1.0:
+            t.append(f"\ncapacity/demand = design a_dyn / (FC·a_g·S) with FC = {c.fc:.2f}")
         if c.lower_bound:
             t.append("\nsome record did not collapse up to C_max: lower bounds", "yellow")
         sc = c.scatter
@@ -355,7 +357,7 @@ class ResultsPane(Vertical):
         table.add_column(Text("C/D"), justify="right", no_wrap=True)
         table.add_column(Text("FRP [kg]"), justify="right", no_wrap=True)
         table.add_column(literal(f"cost [{cur}]"), justify="right", no_wrap=True)
-        built = [getattr(d, "as_built", None) for d in found]
+        built = [d.as_built for d in found]
         if any(b is not None for b in built):
             table.add_column(Text("bars as built"), no_wrap=True)
         table.add_column(Text("note"), ratio=1)

@@ -5,8 +5,6 @@ from __future__ import annotations
 
 import copy
 import io
-import json
-from pathlib import Path
 from typing import Any
 
 import pytest
@@ -14,23 +12,14 @@ import pytest
 from frp_assess.cli.output import Column, make_console, print_table, user
 from frp_assess.cli.run import print_ranking, ranking_rows
 from frp_assess.numbers import fmt_against
-from frp_assess.results.json_io import from_data
-from frp_assess.results.model import AssessmentResult
 from frp_assess.text_safety import PLACEHOLDER, plain
-
-DATA = Path(__file__).resolve().parents[1] / "report" / "data" / "results.json"
+from tests.report.test_report import raw, typed
 
 
 @pytest.fixture
 def results() -> dict[str, Any]:
     """The report's fixture as plain JSON values (tests edit a copy and read it typed)."""
-    return json.loads(DATA.read_text(encoding="utf-8"))
-
-
-def typed(data: dict[str, Any]) -> AssessmentResult:
-    result = from_data(AssessmentResult, data)
-    assert isinstance(result, AssessmentResult)
-    return result
+    return raw()
 
 
 def printed(width: int, fn: Any, *args: Any) -> str:

@@ -96,6 +96,23 @@ def test_tiny_displacements_and_large_ratios_stay_readable():
     assert row[2:] == ["79.0 mm", "0.039 mm", "> 100", "pass"]
 
 
+def test_zeta_just_below_one_is_not_rounded_to_a_pass():
+    """ζ_E = 0.997 fails (ζ_E ≥ 1 passes): shown "0.997" beside FAIL, not "1.00" (2 decimals
+    would round it across 1); 1.004 passes and stays "1.00"."""
+    case = CaseChecks(
+        "w",
+        CAPACITY,
+        LINEAR,
+        _ls("SLV", 0.078991, 0.2493, 0.997),
+        _ls("SLC", 0.1, 0.251, 1.004),
+        None,
+        None,
+    )
+    rows = checks_table(KinematicChecks("LC1", 1.35, "FC", True, 0.25, None, (case,))).rows
+    assert rows[1][4:] == ["0.997", "FAIL"]
+    assert rows[2][4:] == ["1.00", "pass"]
+
+
 def test_curves_table_in_mm_and_seconds():
     data = curves_table(CHECKS)
     assert data.rows[0][:5] == ["Unreinforced", "0", "197.5", "79.0", "1.964"]

@@ -3,14 +3,14 @@ bars as built, the pivot check, the code's kinematic checks and the sensitivity 
 
 The results are those of a real run of a small project; the fields added by issues 15-16
 (``as_built``, ``pivot``, ``kinematic_checks``) are computed by their modules for the same
-inputs and put on the result with :func:`dataclasses.replace` (or, while a field is not yet
-on the results model, on a subclass that has it), as a run that writes them will.
+inputs and put on the result with :func:`dataclasses.replace`, as a run that writes them.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, fields, make_dataclass, replace
+from dataclasses import dataclass, replace
 from pathlib import Path
+from types import SimpleNamespace
 from typing import Any
 
 import pytest
@@ -24,13 +24,21 @@ from frp_assess.assess.from_project import inputs_from_project
 from frp_assess.assess.kinematic_checks import IdaSummary, kinematic_checks
 from frp_assess.assess.pivot import case_pivot
 from frp_assess.config import load_project_text
+from frp_assess.results.checks import CaseChecks, KinematicChecks
 from frp_assess.results.model import AssessmentResult, DesignRow
 from frp_assess.tui.app import FrpAssessApp
 from frp_assess.tui.core.fragility import lognormal_cdf, pga_axis
 from frp_assess.tui.plots import PlotView, render_plot
-from frp_assess.tui.ranking_table import RankingTable
-from frp_assess.tui.result_views import bars_text, floor_spectra_plot, fragility_plot
+from frp_assess.tui.ranking_table import RANKING_COLUMNS, RankingTable
+from frp_assess.tui.result_views import (
+    bars_text,
+    floor_spectra_plot,
+    fragility_plot,
+    kinematic_table,
+)
 from frp_assess.tui.results import ResultsPane
+from tests.report.test_checks_section import CAPACITY, LINEAR, _ls
+from tests.report.test_report import raw, typed
 from tests.tui.conftest import SMALL, run_async, settle
 from tests.tui.test_app import SIZE
 
@@ -43,17 +51,6 @@ def plain(widget: Static) -> str:
     console = Console(width=240, record=True, file=open("/dev/null", "w"))  # noqa: SIM115
     console.print(widget.content)
     return console.export_text()
-
-
-def with_fields(obj: Any, **values: Any) -> Any:
-    """``obj`` with these fields set: :func:`dataclasses.replace` when its class has them,
-    else an instance of a subclass that adds them (a field not yet on the results model)."""
-    names = {f.name for f in fields(obj)}
-    if set(values) <= names:
-        return replace(obj, **values)
-    extra = [(k, Any, field(default=None)) for k in values if k not in names]
-    cls = make_dataclass(type(obj).__name__, extra, bases=(type(obj),), frozen=True)
-    return cls(**{**{f.name: getattr(obj, f.name) for f in fields(obj)}, **values})
 
 
 @dataclass(frozen=True)
@@ -75,7 +72,7 @@ def run(tmp_path_factory: pytest.TempPathFactory) -> Run:
     weak_inputs = inputs_from_project(weak, folder, "small.yaml")
     options = (None, *inputs.options)
     cases = tuple(
-        with_fields(
+        replace(
             c,
             ratio_asked=None if o is None else o.asked,
             as_built=None if o is None else option_as_built(inputs, o),
@@ -87,7 +84,7 @@ def run(tmp_path_factory: pytest.TempPathFactory) -> Run:
     )
     ida = {c.name: IdaSummary(c.mean_a_dyn, c.min_a_dyn, len(c.records)) for c in results.cases}
     checks = kinematic_checks(inputs, records=prepare_records(inputs).records, ida=ida)
-    full = with_fields(replace(results, cases=cases), kinematic_checks=checks)
+    full = replace(replace(results, cases=cases), kinematic_checks=checks)
     return Run(results, full)
 
 
@@ -164,19 +161,19 @@ def test_results_views_show_bars_pivot_checks_and_sensitivity(run: Run, small_pr
             # bars as built: n × Ød, spacing, installed vs asked, anchorage verdict
             bars = plain(q("#bars-table", Static))
             for c in r.options:
-                b = c.as_built  # type: ignore[attr-defined]
+                b = c.as_built
                 assert b is not None
                 row = next(line for line in bars.splitlines() if c.name in line)
                 assert bars_text(b) in row and f"{b.spacing:.2f}" in row
-                assert f"{b.ratio_installed:.3f} / {c.ratio_asked:g}" in row  # type: ignore[attr-defined]
+                assert f"{b.ratio_installed:.3f} / {c.ratio_asked:g}" in row
                 cone = b.anchorage.cone_ok
                 assert cone is not None and ("OK" if cone else "FAILS") in row
             # the pivot: x/B of every case, the dropped one says so and why
             pivot = plain(q("#pivot-table", Static))
-            dropped = [c for c in r.cases if c.pivot.dropped]  # type: ignore[attr-defined]
+            dropped = [c for c in r.cases if c.pivot.dropped]
             assert dropped, "0.2 MPa masonry: some option's compressed zone is too deep"
             for c in r.cases:
-                p = c.pivot  # type: ignore[attr-defined]
+                p = c.pivot
                 row = next(line for line in pivot.splitlines() if line.lstrip().startswith(c.name))
                 assert f"{p.depth_ratio:.3f}" in row
                 assert ("dropped" if p.dropped else "holds") in row
@@ -185,7 +182,7 @@ def test_results_views_show_bars_pivot_checks_and_sensitivity(run: Run, small_pr
                 )
             # the code's checks: each case's ζ_E of every check, and its verdict
             checks = plain(q("#kinematic-table", Static))
-            kc = r.kinematic_checks  # type: ignore[attr-defined]
+            kc = r.kinematic_checks
             assert f"FC = {kc.fc:.2f}" in checks
             for cc in kc.cases:
                 row = next(
@@ -203,9 +200,9 @@ def test_results_views_show_bars_pivot_checks_and_sensitivity(run: Run, small_pr
             gfrp = r.cases[1]
             row = DesignRow("GFRP", "external", 1.0, gfrp.capacity_demand, 1.0, 2.0, "")
             pane = q(ResultsPane)
-            pane.show(replace(r, design=(with_fields(row, as_built=gfrp.as_built),)), "out")  # type: ignore[attr-defined]
+            pane.show(replace(r, design=(replace(row, as_built=gfrp.as_built),)), "out")
             design = plain(q("#design-table", Static))
-            b = gfrp.as_built  # type: ignore[attr-defined]
+            b = gfrp.as_built
             assert (
                 f"{bars_text(b)} at {b.spacing:.2f} m /face, ρ {b.ratio_installed:.3f} ‰" in design
             )
@@ -213,8 +210,8 @@ def test_results_views_show_bars_pivot_checks_and_sensitivity(run: Run, small_pr
             pane.show_case(2)
             summary = plain(q("#case-summary", Static))
             c = r.cases[2]
-            assert f"bars: {bars_text(c.as_built)}" in summary  # type: ignore[attr-defined]
-            assert f"pivot: x/B = {c.pivot.depth_ratio:.3f}" in summary  # type: ignore[attr-defined]
+            assert f"bars: {bars_text(c.as_built)}" in summary
+            assert f"pivot: x/B = {c.pivot.depth_ratio:.3f}" in summary
 
     run_async(body)
 
@@ -229,14 +226,14 @@ def test_results_without_the_new_fields_show_nothing_of_them(run: Run, small_pro
             bare = replace(
                 r,
                 cases=tuple(
-                    with_fields(
+                    replace(
                         c, as_built=None, pivot=None, scatter=replace(c.scatter, fragility=None)
                     )
                     for c in r.cases
                 ),
                 sensitivity=None,
             )
-            bare = with_fields(bare, kinematic_checks=None)
+            bare = replace(bare, kinematic_checks=None)
             await _show(pilot, bare)
             q = app.query_one
             assert plain(q("#bars-table", Static)).strip() == "No bar layout in these results."
@@ -276,11 +273,11 @@ def test_dropped_options_floor_motion_and_fc_are_shown(run: Run, small_project: 
     r = run.full
     cases = []
     for c in r.cases:
-        records = tuple(with_fields(rec, floor_pga=2.0 * rec.pga) for rec in c.records)
-        dropped = c.pivot.dropped  # type: ignore[attr-defined]
-        cases.append(with_fields(c, records=records, fc=1.35, rank=None if dropped else c.rank))
+        records = tuple(replace(rec, floor_pga=2.0 * rec.pga) for rec in c.records)
+        dropped = c.pivot.dropped
+        cases.append(replace(c, records=records, fc=1.35, rank=None if dropped else c.rank))
     floor = FloorSpectraStandIn((0.0, 0.5, 1.0), (0.2, 0.6, 0.3), (0.25, 0.7, 0.2), (0.1, 0.3, 0.1))
-    shown = with_fields(
+    shown = replace(
         replace(r, cases=tuple(cases)),
         building=BuildingStandIn("the wall's base at Z = 9 m of a 3-storey building"),
         floor_spectra=floor,
@@ -298,7 +295,7 @@ def test_dropped_options_floor_motion_and_fc_are_shown(run: Run, small_project: 
             ranks = {str(table.get_row_at(i)[1]): str(table.get_row_at(i)[0]) for i in range(3)}
             assert "dropped" in ranks.values()
             for c in shown.cases[1:]:
-                assert (ranks[c.name] == "dropped") == c.pivot.dropped  # type: ignore[attr-defined]
+                assert (ranks[c.name] == "dropped") == c.pivot.dropped
             pane = q(ResultsPane)
             pane.show_case(1)
             case = shown.cases[1]
@@ -320,3 +317,34 @@ def test_dropped_options_floor_motion_and_fc_are_shown(run: Run, small_project: 
             assert "Shaken by" not in plain(q("#results-summary", Static))
 
     run_async(body)
+
+
+def test_kinematic_table_does_not_round_a_failing_zeta_to_one():
+    """ζ_E = 0.997 fails (ζ_E ≥ 1 passes): the TUI shows "0.997", not "1.00", as the report
+    does (tests/report/test_checks_section.py); 1.004 passes and shows "1.00"."""
+    case = CaseChecks(
+        "w",
+        CAPACITY,
+        LINEAR,
+        _ls("SLV", 0.079, 0.2493, 0.997),
+        _ls("SLC", 0.1, 0.251, 1.004),
+        None,
+        None,
+    )
+    checks = KinematicChecks("LC1", 1.35, "FC", True, 0.25, None, (case,))
+    table = kinematic_table(SimpleNamespace(kinematic_checks=checks))  # type: ignore[arg-type]
+    console = Console(width=240, record=True, file=open("/dev/null", "w"))  # noqa: SIM115
+    console.print(table)
+    row = next(line for line in console.export_text().splitlines() if line.strip().startswith("w "))
+    assert row.split()[1:4] == ["0.78", "0.997", "1.00"]
+
+
+def test_ranking_cd_agrees_with_meets():
+    """C/D = 0.997 against a target of 1 does not meet it: the ranking table's C/D cell reads
+    "0.997" beside "no" (not "1.00"), as the CLI and the report (numbers.fmt_against)."""
+    case = replace(typed(raw()).cases[1], capacity_demand=0.997, meets_target=False)
+    cells = {header: cell(case, 1.0) for header, _, cell in RANKING_COLUMNS}
+    assert cells["C/D"] == "0.997"
+    assert cells["meets"].plain == "no"
+    passing = replace(case, capacity_demand=1.004, meets_target=True)
+    assert {h: cell(passing, 1.0) for h, _, cell in RANKING_COLUMNS}["C/D"] == "1.00"
