@@ -21,17 +21,18 @@ PACKAGE = Path(frp_assess.__file__).parent
 #: package -> the frp_assess packages it may import ("" is frp_assess itself, for __version__)
 INTERNAL: dict[str, set[str]] = {
     "errors": set(),
+    "rules": set(),  # pure engineering formulas: nothing of frp_assess below them
     "results": {"errors"},  # the typed results (stdlib dataclasses): no numerics, no files
     "numbers": {"results"},
     "text_safety": set(),
     "io_utils": {"errors"},
     "output_set": {"errors", "io_utils"},
-    "dynamics": {"errors", "motions"},
+    "dynamics": {"errors", "motions", "rules"},
     "motions": {"errors", "io_utils"},
-    "config": {"errors", "io_utils", "dynamics", "motions"},
+    "config": {"errors", "io_utils", "rules", "dynamics", "motions"},
     "assess": {
-        "", "errors", "io_utils", "numbers", "text_safety", "dynamics", "motions", "config",
-        "results",
+        "", "errors", "io_utils", "numbers", "text_safety", "rules", "dynamics", "motions",
+        "config", "results",
     },  # fmt: skip
     "report": {"errors", "io_utils", "numbers", "text_safety", "results"},
     "study": {

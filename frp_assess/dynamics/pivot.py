@@ -32,12 +32,12 @@ from numpy.typing import NDArray
 from frp_assess.dynamics.rebars import Rebars
 from frp_assess.dynamics.wall import Wall
 from frp_assess.motions.record import G
+from frp_assess.rules.masonry import STRESS_BLOCK_FACTOR as STRESS_BLOCK_FACTOR  # re-export
+from frp_assess.rules.masonry import compressed_zone_depth
 
 PivotRule = Literal["edge", "crushing"]
 PIVOT_RULES: tuple[PivotRule, ...] = ("edge", "crushing")
 
-#: Stress of the rectangular stress block as a fraction of f_d (NTC 2018 §7.8.2.2.1).
-STRESS_BLOCK_FACTOR = 0.85
 
 
 def pivot_force(wall: Wall, rebars: Rebars | None) -> float:
@@ -59,7 +59,7 @@ def pivot_depth(wall: Wall, rebars: Rebars | None, rule: PivotRule) -> float:
         return 0.0
     if rule != "crushing":
         raise ValueError(f"pivot must be one of {PIVOT_RULES}, got {rule!r}")
-    return pivot_force(wall, rebars) / (STRESS_BLOCK_FACTOR * wall.compressive_strength)
+    return compressed_zone_depth(pivot_force(wall, rebars), wall.compressive_strength)
 
 
 @dataclass(frozen=True)
