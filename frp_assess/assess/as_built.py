@@ -181,7 +181,7 @@ def bar_strain(inputs: AssessmentInputs, material: Material) -> BarStrain:
             eta_a=None,
             partial_factor=None,
             cyclic_factor=c,
-            rupture_strain=c * material.ultimate_strain,
+            rupture_strain=inputs.rupture_strain(material),
             rule="c*eps_u: mean producer value, no design factors (bars.design_values: false)",
         )
     return BarStrain(
@@ -194,7 +194,7 @@ def bar_strain(inputs: AssessmentInputs, material: Material) -> BarStrain:
         eta_a=d.eta_a,
         partial_factor=d.partial_factor,
         cyclic_factor=d.cyclic_factor,
-        rupture_strain=d.design,
+        rupture_strain=inputs.rupture_strain(material),
         rule=(
             "c*eta_a*eps_fk/gamma_f (CNR-DT 200 R1/2013 §3.5: eta_a Table 3.2, "
             f"gamma_f = {FRP_RUPTURE_PARTIAL_FACTOR:g} Table 3.1; c = analysis.strain_factor)"

@@ -33,6 +33,7 @@ from frp_assess.dynamics.options import STRAIN_FACTOR, VERIFY
 from frp_assess.dynamics.units import rebars_from_practice, wall_from_practice
 from frp_assess.motions import ElasticSpectrum
 from frp_assess.results.pivot import MasonryResult
+from frp_assess.rules.bars import rupture_strain
 
 #: the name of case 0, the wall without bars
 UNREINFORCED = "Unreinforced"
@@ -231,21 +232,26 @@ class AssessmentInputs:
             fibre=fibre_of(material.name, material.fibre),
         )
 
-    def rupture_strain(self, material: Material) -> float:
-        """The rupture strain the model uses [-]: ε_d with design values, else c·ε_u."""
+    def strain_at_rupture(self, material: Material) -> float:
+        """The bar's strain at rupture that the cyclic factor c multiplies [-]: ε_fd =
+        η_a·ε_fk/γ_f with design values, else the mean ε_u (docs/model.md §2.1)."""
         d = self.design_strain(material)
-        return self.strain_factor * material.ultimate_strain if d is None else d.design
+        return material.ultimate_strain if d is None else d.fd
+
+    def rupture_strain(self, material: Material) -> float:
+        """The rupture strain the model uses [-]: ε_max = c·ε_fd with design values, else
+        c·ε_u (:func:`~frp_assess.rules.bars.rupture_strain`)."""
+        return rupture_strain(self.strain_at_rupture(material), self.strain_factor)
 
     def rebars(self, material: Material, position: Position, ratio: float) -> Rebars:
         """The bars of the model.  The cyclic factor c stays the model's ``strain_factor``;
-        with design values the strain it multiplies is η_a·ε_fk/γ_f instead of ε_u, so that
-        c is applied once (docs/model.md §2.1)."""
-        d = self.design_strain(material)
-        strain = (
-            material.ultimate_strain if d is None else d.eta_a * d.characteristic / d.partial_factor
-        )
+        the strain it multiplies is :meth:`strain_at_rupture`, so that c is applied once."""
         return rebars_from_practice(
-            material.elastic_modulus, strain, position, ratio, self.strain_factor
+            material.elastic_modulus,
+            self.strain_at_rupture(material),
+            position,
+            ratio,
+            self.strain_factor,
         )
 
     def model_for(self, option: Option | None) -> RockingModel:
