@@ -20,6 +20,7 @@ from frp_assess.assess.bars import (
     fibre_of,
 )
 from frp_assess.assess.masonry import masonry_strength
+from frp_assess.assess.wall_model import BarsInput, WallInput, rocking_model
 from frp_assess.dynamics import (
     IdaSettings,
     Mechanism,
@@ -30,7 +31,6 @@ from frp_assess.dynamics import (
     Wall,
 )
 from frp_assess.dynamics.options import STRAIN_FACTOR, VERIFY
-from frp_assess.dynamics.units import rebars_from_practice, wall_from_practice
 from frp_assess.motions import ElasticSpectrum
 from frp_assess.results.pivot import MasonryResult
 from frp_assess.rules.bars import rupture_strain
@@ -213,11 +213,14 @@ class AssessmentInputs:
         )
 
     @property
+    def wall_input(self) -> WallInput:
+        """The wall of the model, with f_d for the crushing pivot (assess/wall_model.py)."""
+        return WallInput(self.thickness, self.height, self.unit_weight, self.masonry_strength.f_d)
+
+    @property
     def wall(self) -> Wall:
         """The dynamics wall (SI), with f_d for the crushing pivot."""
-        return wall_from_practice(
-            self.thickness, self.height, self.unit_weight, self.masonry_strength.f_d
-        )
+        return self.wall_input.wall()
 
     def design_strain(self, material: Material) -> DesignStrain | None:
         """ε_d = c·η_a·ε_fk/γ_f of ``material`` with c = ``strain_factor`` (docs/model.md
@@ -243,10 +246,10 @@ class AssessmentInputs:
         c·ε_u (:func:`~frp_assess.rules.bars.rupture_strain`)."""
         return rupture_strain(self.strain_at_rupture(material), self.strain_factor)
 
-    def rebars(self, material: Material, position: Position, ratio: float) -> Rebars:
+    def bars_input(self, material: Material, position: Position, ratio: float) -> BarsInput:
         """The bars of the model.  The cyclic factor c stays the model's ``strain_factor``;
         the strain it multiplies is :meth:`strain_at_rupture`, so that c is applied once."""
-        return rebars_from_practice(
+        return BarsInput(
             material.elastic_modulus,
             self.strain_at_rupture(material),
             position,
@@ -254,12 +257,21 @@ class AssessmentInputs:
             self.strain_factor,
         )
 
+    def rebars(self, material: Material, position: Position, ratio: float) -> Rebars:
+        """The dynamics bars (SI) of :meth:`bars_input`."""
+        return self.bars_input(material, position, ratio).rebars()
+
+    def model_of(self, material: Material, position: Position, ratio: float) -> RockingModel:
+        """The dynamics model of the wall with bars of ``material`` at ``position`` and ρ
+        ``ratio`` [‰] (assess/wall_model.py)."""
+        bars = self.bars_input(material, position, ratio)
+        return rocking_model(self.wall_input, self.mechanism, bars, self.model)
+
     def model_for(self, option: Option | None) -> RockingModel:
         """The dynamics model of the unreinforced wall (``None``) or of an option."""
-        bars = (
-            None if option is None else self.rebars(option.material, option.position, option.ratio)
-        )
-        return RockingModel(self.wall, self.mechanism, bars, self.model)
+        if option is None:
+            return rocking_model(self.wall_input, self.mechanism, None, self.model)
+        return self.model_of(option.material, option.position, option.ratio)
 
     def case_models(self) -> list[RockingModel]:
         """The models of every case of a run: the unreinforced wall, then each option."""

@@ -23,10 +23,11 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from pathlib import Path
-from typing import Annotated, Any
+from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
 
+from frp_assess.config.library import MASONRY, did_you_mean
 from frp_assess.config.messages import Loc, schema_problems
 from frp_assess.config.problems import raise_all
 from frp_assess.config.schema import (
@@ -173,6 +174,22 @@ class StudyFile(_Strict):
     unit_weight: Number = Field(
         default=18.0, ge=5, le=30, description="masonry unit weight w [kN/m³], 5-30"
     )
+    masonry: str | None = Field(
+        default=None,
+        description="masonry type of Circolare 2019 Tab. C8.5.I whose f_m sizes the compressed "
+        "zone of the crushing pivot (LC1: minimum, LC2/LC3: mean; the unit weight stays "
+        "unit_weight): " + ", ".join(MASONRY),
+    )
+    compressive_strength: Number | None = Field(
+        default=None,
+        gt=0,
+        le=100,
+        description="compressive strength f_m of the masonry [MPa], 0-100; wins over masonry "
+        "(neither: the lowest f_m of Tab. C8.5.I, as a project)",
+    )
+    knowledge_level: Literal["LC1", "LC2", "LC3"] = Field(
+        default="LC1", description="knowledge level: f_d = f_m/FC, FC = 1.35, 1.20, 1.00"
+    )
     chunk_size: int = Field(
         default=64, ge=1, le=100_000, description="cases per chunk written to disk [-]"
     )
@@ -194,6 +211,16 @@ class StudyFile(_Strict):
             if a >= 45.0:
                 raise ValueError(f"alpha_deg: a rocking wall needs α < 45°, got {a!r}")
         return v
+
+    @field_validator("masonry")
+    @classmethod
+    def _known_masonry(cls, value: str | None) -> str | None:
+        if value is not None and value not in MASONRY:
+            raise ValueError(
+                f"unknown masonry {value!r}{did_you_mean(value, MASONRY)}; "
+                f"expected one of {', '.join(MASONRY)}"
+            )
+        return value
 
     @field_validator("position", "mechanism", "material")
     @classmethod
