@@ -21,6 +21,7 @@ from frp_assess.dynamics import Mechanism, ModelOptions, Position, Rebars, Rocki
 from frp_assess.dynamics.rebars import DEFAULT_STRAIN_FACTOR
 from frp_assess.dynamics.units import rebars_from_practice, wall_from_practice
 from frp_assess.errors import InputError
+from frp_assess.rules.geometry import slenderness_problem as slenderness_problem  # for cli, study
 from frp_assess.rules.masonry import (
     base_carries_weight,
     compressed_zone_depth,
@@ -109,9 +110,10 @@ def rocking_model(
     """The model of one case (unreinforced when ``bars`` is None).
 
     Raises:
-        InputError: on ``key``, a base that cannot carry the wall's weight (module docstring).
+        InputError: on ``key``, a wall that is not taller than thick, or a base that cannot
+            carry the wall's weight (module docstring).
     """
-    problem = base_problem(wall)
+    problem = slenderness_problem(wall.thickness, wall.height) or base_problem(wall)
     if problem is not None:
         raise InputError(problem, key=key)
     rebars = None if bars is None else bars.rebars()

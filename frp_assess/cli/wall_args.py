@@ -165,11 +165,6 @@ def build_model(args: argparse.Namespace) -> RockingModel:
     B = _positive(args.thickness, "--thickness", "m")
     H = _positive(args.height, "--height", "m")
     w = _positive(args.unit_weight, "--unit-weight", "kN/m³")
-    if B >= H:
-        raise InputError(
-            f"expected thickness < height for a rocking wall, found B = {B:g} m ≥ H = {H:g} m",
-            key="--thickness",
-        )
     wall = WallInput(B, H, w)  # no masonry strength on the command line: the edge pivot
     bar_opts = {
         "--modulus": args.modulus,

@@ -26,7 +26,7 @@ def slenderness_problem(thickness: float, height: float) -> str | None:
     if thickness < height:
         return None
     return (
-        f"expected thickness B < height H for a rocking wall, found B = {thickness:g} m "
+        f"expected thickness < height for a rocking wall, found B = {thickness:g} m "
         f">= H = {height:g} m"
     )
 

@@ -27,6 +27,7 @@ from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
 
+from frp_assess.assess.wall_model import slenderness_problem
 from frp_assess.config.library import MASONRY, did_you_mean
 from frp_assess.config.messages import Loc, schema_problems
 from frp_assess.config.problems import raise_all
@@ -236,8 +237,8 @@ class StudyFile(_Strict):
         if self.thickness is not None:
             for b in self.thickness:
                 for h in self.height:
-                    if b >= h:
-                        raise ValueError(f"thickness {b} m is not smaller than height {h} m")
+                    if (problem := slenderness_problem(b, h)) is not None:
+                        raise ValueError(problem)
         reinforced = [bool(self.ratio), bool(self.material), bool(self.position)]
         if any(reinforced[:2]) and not all(reinforced):
             raise ValueError(
