@@ -33,7 +33,7 @@ from frp_assess.dynamics import PivotRule, Position
 from frp_assess.dynamics.units import KPA_PER_GPA
 from frp_assess.results.pivot import PivotResult
 from frp_assess.rules.bars import bar_area, bar_force, lever_arm
-from frp_assess.rules.masonry import wall_weight
+from frp_assess.rules.masonry import toe_crushes, wall_weight
 
 
 def pivot_fails(
@@ -63,18 +63,19 @@ def pivot_fails(
         return None
     if rule != "crushing":
         raise ValueError(f"pivot must be 'edge' or 'crushing', got {rule!r}")
-    if depth >= thickness:
+    if not toe_crushes(depth, thickness, bar_distance):
+        return None
+    if toe_crushes(depth, thickness):
         return (
             f"x = {depth * mm:.0f} mm >= B = {thickness * mm:.0f} mm: the base cannot carry the "
             "weight and the bar force at rupture, there is no rocking mechanism"
         )
-    if bar_distance is not None and depth >= bar_distance:
-        return (
-            f"the bar, {bar_distance * mm:.0f} mm from the compressed edge, lies inside the "
-            f"compressed zone x = {depth * mm:.0f} mm: it cannot be in tension, the mechanism "
-            "does not exist"
-        )
-    return None
+    assert bar_distance is not None  # x < B: the bar's distance is the smaller bound
+    return (
+        f"the bar, {bar_distance * mm:.0f} mm from the compressed edge, lies inside the "
+        f"compressed zone x = {depth * mm:.0f} mm: it cannot be in tension, the mechanism "
+        "does not exist"
+    )
 
 
 @dataclass(frozen=True)

@@ -74,13 +74,25 @@ def force_for_depth(depth: float, design_strength: float) -> float:
     return STRESS_BLOCK_FACTOR * design_strength * depth
 
 
+def crushing_depth(thickness: float, bar_distance: float | None = None) -> float:
+    """Depth x [m] at which the toe crushes: the thickness B, or the acting bar's distance from
+    the compressed corner when smaller (B/2 centred; a bar inside the compressed zone is not in
+    tension), docs/model.md §1.1.  ``bar_distance`` [m], ``None`` unreinforced."""
+    return thickness if bar_distance is None else min(thickness, bar_distance)
+
+
+def toe_crushes(depth: float, thickness: float, bar_distance: float | None = None) -> bool:
+    """Whether a compressed zone of depth x [m] crushes the toe: x ≥ :func:`crushing_depth`."""
+    return depth >= crushing_depth(thickness, bar_distance)
+
+
 def base_carries_weight(weight: float, thickness: float, design_strength: float) -> bool:
     """Whether the base carries the wall's own weight: x_W = W/(0.85·f_d) < B.
 
     W [N/m], B [m], f_d [Pa] (infinite: always).  False is the one refusal of the module's
     outcome policy.
     """
-    return compressed_zone_depth(weight, design_strength) < thickness
+    return not toe_crushes(compressed_zone_depth(weight, design_strength), thickness)
 
 
 def weight_not_carried(weight: float, thickness: float, design_strength: float) -> str:

@@ -18,8 +18,10 @@ from frp_assess.rules.masonry import (
     base_force,
     compressed_zone_depth,
     confidence_factor,
+    crushing_depth,
     design_strength,
     force_for_depth,
+    toe_crushes,
     wall_weight,
     weight_not_carried,
 )
@@ -68,3 +70,13 @@ def test_the_base_carries_the_weight_while_x_w_is_below_b() -> None:
     assert base_carries_weight(wall_weight(18e3, 0.3, 40.0), 0.3, math.inf)
     line = weight_not_carried(wall_weight(18e3, 0.3, 4.0), 0.3, f_d)
     assert "\n" not in line and "x = W/(0.85*f_d) = 343 mm" in line and "B = 300 mm" in line
+
+
+def test_the_toe_crushes_at_the_bar_or_at_b() -> None:
+    """docs/model.md §1.1: the toe crushes when x reaches the acting bar's distance from the
+    corner (B/2 centred, B external) or B; B = 0.4 m."""
+    assert crushing_depth(0.4) == 0.4
+    assert crushing_depth(0.4, 0.2) == 0.2  # centred bar
+    assert crushing_depth(0.4, 0.4) == 0.4  # external bar
+    assert not toe_crushes(0.19, 0.4, 0.2) and toe_crushes(0.2, 0.4, 0.2)
+    assert not toe_crushes(0.39, 0.4, 0.4) and toe_crushes(0.4, 0.4)
