@@ -38,17 +38,18 @@ INTERNAL: dict[str, set[str]] = {
     "study": {
         "", "errors", "io_utils", "dynamics", "motions", "config", "assess", "report", "results",
     },  # fmt: skip
-    "api": {
+    "app": {
         "", "errors", "io_utils", "output_set", "text_safety", "dynamics", "motions", "config",
         "assess", "report", "study", "results",
     },  # fmt: skip
+    "api": {"app"},  # the former application API: a re-export of app, kept for old imports
     "tui": {
         "", "errors", "io_utils", "numbers", "text_safety", "dynamics", "motions", "config",
-        "assess", "api", "results",
+        "assess", "api", "app", "results",
     },  # fmt: skip
     "cli": {
         "", "errors", "io_utils", "numbers", "text_safety", "output_set", "dynamics", "motions",
-        "config", "assess", "report", "study", "api", "tui", "results",
+        "config", "assess", "report", "study", "api", "app", "tui", "results",
     },  # fmt: skip
     "__main__": {"cli"},
     "__init__": set(),
