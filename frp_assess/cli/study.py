@@ -50,9 +50,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from frp_assess.api import run_study
-    from frp_assess.study import load_study
-    from frp_assess.study.executors import make_executor
+    from frp_assess.app.study import load_study, make_executor, plan_and_records, run_study
 
     path = Path(args.file)
     study = load_study(path)
@@ -79,10 +77,7 @@ def run(args: argparse.Namespace) -> int:
                 bar.update(task["id"], completed=done, total=total)
 
             with console.status("generating the records"):
-                from frp_assess.study import StudyPlan, study_records
-
-                plan = StudyPlan(study)
-                records = study_records(plan)
+                plan, records = plan_and_records(study)
             console.print(
                 f"{user(study.name)}: {len(plan)} cases ({plan.n_unreinforced} unreinforced, "
                 f"{plan.n_reinforced} reinforced) × {study.records.count} records on "

@@ -11,8 +11,16 @@ import math
 from collections.abc import Callable
 from typing import Any
 
+from frp_assess.app.expert import (
+    MECHANISMS,
+    POSITIONS,
+    ModelOptions,
+    RockingModel,
+    rebars_from_practice,
+    wall_from_practice,
+)
+from frp_assess.app.records import FORMATS, UNITS
 from frp_assess.cli.arg_types import number_in
-from frp_assess.dynamics import MECHANISMS, POSITIONS, ModelOptions, RockingModel
 from frp_assess.dynamics.options import (
     FREE_VIBRATION_TAIL,
     INTEGRATION_TOLERANCE,
@@ -21,9 +29,7 @@ from frp_assess.dynamics.options import (
     STRAIN_FACTOR,
     Option,
 )
-from frp_assess.dynamics.units import rebars_from_practice, wall_from_practice
 from frp_assess.errors import InputError
-from frp_assess.motions.readers import FORMATS, UNITS
 
 #: bounds of the command-line wall (those of the project file's schema)
 THICKNESS = number_in(0, 5, low_open=True, unit="m")
