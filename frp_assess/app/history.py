@@ -12,13 +12,14 @@ import numpy as np
 from frp_assess.app.expert import simulate
 from frp_assess.assess.floor_input import floor_record
 from frp_assess.assess.inputs import AssessmentInputs
+from frp_assess.assess.results import below_collapse
 from frp_assess.dynamics import RockingModel, RockingResult
 from frp_assess.motions import Record
 
 if TYPE_CHECKING:
     from frp_assess.app.assessment import RunOutcome
 
-__all__ = ["HistoryData", "TimeHistory", "case_history", "time_history"]
+__all__ = ["HistoryData", "TimeHistory", "below_collapse", "case_history", "time_history"]
 
 
 @dataclass(frozen=True)
