@@ -1,11 +1,16 @@
 """The former application API, kept so that existing imports keep working.
 
 The application service is :mod:`frp_assess.app` (docs/architecture.md); this module only
-re-exports its names.  New code imports ``frp_assess.app.<module>``.
+re-exports its names (``run_study`` answers its old pair).  New code imports
+``frp_assess.app.<module>``.
 """
 
 from __future__ import annotations
 
+from pathlib import Path
+from typing import Any
+
+from frp_assess.app import study as _study
 from frp_assess.app.assessment import (
     CACHE_DIR,
     PairDone,
@@ -26,7 +31,14 @@ from frp_assess.app.project import (
     template_text,
 )
 from frp_assess.app.report import build_pdf, write_outputs
-from frp_assess.app.study import run_study
+from frp_assess.app.study import StudyStats
+
+
+def run_study(*args: Any, **kwargs: Any) -> tuple[StudyStats, list[Path]]:
+    """:func:`frp_assess.app.study.run_study`, answered as before: (counts, figure files)."""
+    outcome = _study.run_study(*args, **kwargs)
+    return outcome.stats, list(outcome.figures)
+
 
 __all__ = [
     "CACHE_DIR",

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import threading
 from collections.abc import Callable, Mapping
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -21,6 +22,7 @@ from frp_assess.motions import Record
 from frp_assess.motions.spectra import parse_spectrum
 from frp_assess.study import run as study_run
 from frp_assess.study.plan import StudyPlan
+from frp_assess.study.rows import SummaryRow, read_summary
 from frp_assess.study.run import Executor, StudyStats
 from frp_assess.study.schema import StudyFile, load_study, spectrum_text
 
@@ -31,13 +33,30 @@ __all__ = [
     "Executor",
     "StudyFile",
     "StudyPlan",
+    "StudyOutcome",
     "StudyStats",
+    "SummaryRow",
     "load_study",
     "make_executor",
     "plan_and_records",
+    "read_summary",
     "run_study",
     "study_problems",
 ]
+
+
+@dataclass(frozen=True)
+class StudyOutcome:
+    """A finished study."""
+
+    stats: StudyStats  #: IDAs computed and reused, chunks, seconds
+    figures: tuple[Path, ...]  #: the figure files written (study.pdf, figures/...)
+    out_dir: Path  #: where long.csv, summary.csv and study.json are
+
+    def rows(self) -> list[SummaryRow]:
+        """The study's result per case, typed (its summary.csv, read on each call: a large
+        study's rows are not held in memory by the run)."""
+        return read_summary(self.out_dir / "summary.csv")
 
 
 def make_executor(
@@ -95,10 +114,11 @@ def run_study(
     cancel: threading.Event | None = None,
     records: dict[str, list[Record]] | None = None,
     figures: bool = True,
-) -> tuple[StudyStats, list[Path]]:
+) -> StudyOutcome:
     """Run a parametric study into ``out_dir`` (chunked, cached, resumable:
     :func:`frp_assess.study.run.run_study`, on the cached runner of `run`) and, if
-    ``figures``, write its PDF; returns the run's counts and the figure files written."""
+    ``figures``, write its PDF; returns the run's counts, the figure files written and its
+    typed rows (:meth:`StudyOutcome.rows`)."""
     stats = study_run.run_study(
         study,
         out_dir,
@@ -113,4 +133,4 @@ def run_study(
         from frp_assess.study.figures import write_study_pdf
 
         written = list(write_study_pdf(out_dir))
-    return stats, written
+    return StudyOutcome(stats, tuple(written), Path(out_dir))

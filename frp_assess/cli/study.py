@@ -84,7 +84,7 @@ def run(args: argparse.Namespace) -> int:
                 f"{executor.describe()}"
             )
             try:
-                stats, written = run_study(
+                outcome = run_study(
                     study,
                     out_dir,
                     executor=executor,
@@ -98,10 +98,11 @@ def run(args: argparse.Namespace) -> int:
                 raise Cancelled("interrupted") from None
     finally:
         executor.close()
+    stats = outcome.stats
     console.print(
         f"{stats.computed} IDAs computed, {stats.reused} reused; {stats.seconds:.1f} s; "
         f"results in {user(out_dir)}/"
     )
-    for w in written:
+    for w in outcome.figures:
         console.print(f"wrote {user(w)}")
     return 0
