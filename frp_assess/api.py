@@ -13,6 +13,7 @@ from typing import Any
 from frp_assess.app import study as _study
 from frp_assess.app.assessment import (
     CACHE_DIR,
+    SOURCE_DATE_EPOCH,
     PairDone,
     Progress,
     RunStats,
@@ -21,6 +22,7 @@ from frp_assess.app.assessment import (
     missing_idas,
     prepare_records,
     run_assessment,
+    run_date,
 )
 from frp_assess.app.expert import IdaOutcome, run_ida, simulate
 from frp_assess.app.history import TimeHistory, time_history
@@ -42,6 +44,7 @@ def run_study(*args: Any, **kwargs: Any) -> tuple[StudyStats, list[Path]]:
 
 __all__ = [
     "CACHE_DIR",
+    "SOURCE_DATE_EPOCH",
     "TEMPLATE_NAME",
     "IdaOutcome",
     "PairDone",
@@ -56,6 +59,7 @@ __all__ = [
     "prepare_records",
     "project_name_from_path",
     "run_assessment",
+    "run_date",
     "run_ida",
     "run_study",
     "simulate",
