@@ -1,5 +1,6 @@
 """Time histories of a finished run: one case under one of its records at a multiplier,
-as the IDA ran it (the TUI's history viewer)."""
+as the IDA ran it (the TUI's history viewer), and the multiplier just below collapse the
+viewer offers (:func:`~frp_assess.assess.results.below_collapse`, the one the results use)."""
 
 from __future__ import annotations
 
