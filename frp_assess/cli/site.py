@@ -66,18 +66,15 @@ def as_table(hazard: SiteHazard) -> str:
     lines = [
         f"Site: latitude {h.latitude:g}°, longitude {h.longitude:g}° (nearest grid node "
         f"{h.nodes[0].distance:.1f} km away)",
-        f"V_N = {h.V_N:g} years, use class {h.use_class} (C_U = {h.C_U:g}), "
-        f"V_R = {h.V_R:g} years",
+        f"V_N = {h.V_N:g} years, use class {h.use_class} (C_U = {h.C_U:g}), V_R = {h.V_R:g} years",
         "",
-        f"{'state':<6}{'P_VR':>6}{'T_R [years]':>13}{'a_g [g]':>10}{'F0 [-]':>9}"
-        f"{'T_C* [s]':>10}",
+        f"{'state':<6}{'P_VR':>6}{'T_R [years]':>13}{'a_g [g]':>10}{'F0 [-]':>9}{'T_C* [s]':>10}",
     ]
     for s in LIMIT_STATES:
         v = h[s]
         clamp = "" if v.TR_used == v.TR else f"  (T_R outside 30-2475: {v.TR_used:g} used)"
         lines.append(
-            f"{s:<6}{P_VR[s]:>6.0%}{v.TR:>13.0f}{v.ag:>10.4f}{v.F0:>9.3f}{v.Tc_star:>10.3f}"
-            + clamp
+            f"{s:<6}{P_VR[s]:>6.0%}{v.TR:>13.0f}{v.ag:>10.4f}{v.F0:>9.3f}{v.Tc_star:>10.3f}" + clamp
         )
     return "\n".join(lines)
 

@@ -33,9 +33,7 @@ def C_U(use_class: str) -> float:  # noqa: N802
     try:
         return USE_COEFFICIENTS[use_class]
     except KeyError:
-        raise ValueError(
-            f"expected a use class I, II, III or IV, found {use_class!r}"
-        ) from None
+        raise ValueError(f"expected a use class I, II, III or IV, found {use_class!r}") from None
 
 
 def V_R(V_N: float, C_U: float) -> float:  # noqa: N802, N803
