@@ -278,13 +278,13 @@ class Ntc2018Spectrum(_Model):
 
     type: Literal["ntc2018"] = Field(description="Spectrum kind.")
     ag: Annotated[Number, Field(gt=0, le=1.5)] | None = Field(
-        None, description="a_g [g] on rock, 0 < a_g <= 1.5 (or give site)."
+        None, description="a_g [g] on rock, 0 < a_g <= 1.5."
     )
     F0: Annotated[Number, Field(gt=0, le=5.0)] | None = Field(
-        None, description="F0 [-], maximum amplification on rock (or give site)."
+        None, description="F0 [-], maximum amplification on rock."
     )
     Tc_star: Annotated[Number, Field(gt=0, le=3.0)] | None = Field(
-        None, description="T_C* [s], start of the velocity branch (or give site)."
+        None, description="T_C* [s], start of the velocity branch."
     )
     site: SiteCoordinates | None = Field(
         None,
@@ -321,13 +321,17 @@ class Ntc2018Spectrum(_Model):
         for key in NTC_SITE_KEYS[1:]:
             if getattr(self, key) is not None:
                 raise located_error(f"{key} needs site: {{latitude, longitude}}", key)
-        for key in NTC_PARAMETER_KEYS:
-            if getattr(self, key) is None:
-                desc = type(self).model_fields[key].description
-                raise located_error(
-                    f"missing required key {key!r} ({desc}); or give site: {{latitude, longitude}}",
-                    key,
-                )
+        missing = [k for k in NTC_PARAMETER_KEYS if getattr(self, k) is None]
+        if missing:
+            fields = type(self).model_fields
+            described = "; ".join(
+                f"{k}: {(fields[k].description or '').rstrip('.')}" for k in missing
+            )
+            raise located_error(
+                f"missing required key{'s' if len(missing) > 1 else ''} "
+                f"{', '.join(repr(k) for k in missing)} ({described}), or give the site's "
+                "coordinates instead: site: {latitude, longitude}"
+            )
         return self
 
     @property

@@ -92,8 +92,21 @@ def test_site_keys_without_site_refused() -> None:
 
 def test_missing_parameters_without_site_name_both_ways() -> None:
     msg = refused("    ag: 0.261\n    F0: 2.36")
-    assert "seismic.spectrum.Tc_star: missing required key 'Tc_star'" in msg
-    assert "or give site" in msg
+    assert "p.yaml:3: seismic.spectrum: missing required key 'Tc_star' (Tc_star: T_C* [s]" in msg
+    assert "or give the site's coordinates instead: site: (latitude, longitude)" in msg
+    msg = refused("    nominal_life: 50")
+    assert "nominal_life needs site" in msg
+    msg = refused("")
+    assert "missing required keys 'ag', 'F0', 'Tc_star'" in msg
+
+
+def test_validate_summary_names_the_site(capsys: pytest.CaptureFixture[str]) -> None:
+    from frp_assess.cli import main
+
+    assert main(["validate", str(PROJECTS / "facade-norcia-coordinates.yaml")]) == 0
+    out = capsys.readouterr().out
+    assert "a_g = 0.2548 g" in out
+    assert "(site 42.7927°N 13.0936°E, V_R = 50 years, SLV T_R = 475 years)" in out
 
 
 @pytest.mark.parametrize(
