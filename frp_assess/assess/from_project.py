@@ -250,7 +250,29 @@ def inputs_from_project(
         input_file=input_file,
         bars=bar_settings_of(project.bars),
     )
+    _check_base_carries_the_weight(project, inputs, file or input_file or None, lines)
     return laid_out(project, inputs, file=file or input_file or None, lines=lines)
+
+
+def _check_base_carries_the_weight(
+    project: Project,
+    inputs: AssessmentInputs,
+    file: str | None,
+    lines: Mapping[Loc, int] | None,
+) -> None:
+    """``pivot: crushing`` needs x_W = W/(0.85·f_d) < B (docs/model.md §1.1): else an
+    InputError at ``wall.compressive_strength`` (or ``wall.masonry``, whose f_m was taken)."""
+    try:
+        inputs.model_for(None)
+    except ValueError as exc:
+        given = project.wall.compressive_strength is not None
+        loc: Loc = ("wall", "compressive_strength" if given else "masonry")
+        raise InputError(
+            str(exc),
+            file=file,
+            line=None if lines is None else line_of(lines, loc),
+            key=format_path(loc),
+        ) from None
 
 
 def _print_warning(line: str) -> None:

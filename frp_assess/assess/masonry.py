@@ -40,9 +40,9 @@ from typing import Literal
 
 from frp_assess.assess.code_check import CONFIDENCE_FACTORS
 from frp_assess.dynamics import Position
-from frp_assess.dynamics.pivot import STRESS_BLOCK_FACTOR as STRESS_BLOCK_FACTOR  # the model's
 from frp_assess.errors import InputError
 from frp_assess.results.pivot import MasonryResult
+from frp_assess.rules.masonry import STRESS_BLOCK_FACTOR as STRESS_BLOCK_FACTOR  # the model's
 
 KnowledgeLevel = Literal["LC1", "LC2", "LC3"]
 

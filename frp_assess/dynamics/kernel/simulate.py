@@ -5,13 +5,15 @@ A newcomer's map:
 * The input is the record (plus ``n_tail`` zero samples).  Between two samples the ground
   acceleration is linear; steps never cross a sample, so every step sees a smooth input.
 * At rest nothing is integrated: the instant when the linear ground acceleration exceeds
-  g·tan α is solved for exactly (:func:`_uplift`) and rocking starts there.
+  g·tan α_x is solved for exactly (:func:`_uplift`) and rocking starts there.
 * Rocking: one step of the chosen method (:mod:`.steppers`), rejected and retried smaller
   while its error estimate exceeds the tolerance.  An accepted step is scanned for events on
   its dense output and each event is located on the integrator (:mod:`.events`); the jump is
   applied there (:func:`_impact`, :func:`_rupture`) and the step restarts from that instant.
+  The toe crushing (|θ| reaches θ_cr with the acting bar intact) is a collapse, as is the fall.
 * Collapse ``overturning``: after the input the wall moves freely until it falls or can no
-  longer fall (:mod:`.fate`).  ``end-of-record`` and ``first-exceedance`` judge |θ| against α.
+  longer fall (:mod:`.fate`).  ``end-of-record`` and ``first-exceedance`` judge |θ| against
+  α_x (α with the edge pivot).
 
 Everything here is numbers and arrays; the Python face is :mod:`frp_assess.dynamics.rocking`.
 """
@@ -33,6 +35,7 @@ from frp_assess.dynamics.kernel.params import (
     COLLAPSE_FIRST_EXCEEDANCE,
     COLLAPSE_OVERTURNING,
     FATE_AT_REST,
+    FATE_CRUSHED,
     FATE_EXCEEDED,
     FATE_FELL,
     FATE_STANDING,
@@ -57,7 +60,8 @@ from frp_assess.dynamics.kernel.steppers import acceleration, step
 _NO_EVENT = 0
 _IMPACT = 1
 _RUPTURE = 2
-_LIMIT = 3  #: the collapse level: π/2 (fell) or α (first exceedance)
+_LIMIT = 3  #: the collapse level: π/2 (fell) or α_x (first exceedance)
+_CRUSH = 4  #: θ_cr of the intact acting bar: the toe crushes
 #: A step that would leave less than this fraction of itself before the next sample is
 #: stretched to the sample; shorter steps divide the rest of the interval equally.
 _SLIVER = 0.01
@@ -94,10 +98,10 @@ def _uplift(
 ) -> tuple[float, float]:
     """From rest at x, the instant in [x, x_end) the wall uplifts, and its side (0: none).
 
-    It starts with s = +1 when ü_g/g < −tan α and (two-sided only) with s = −1 when
-    ü_g/g > tan α; the input is linear, so the instant is exact.
+    It starts with s = +1 when ü_g/g < −tan α_x and (two-sided only) with s = −1 when
+    ü_g/g > tan α_x; the input is linear, so the instant is exact.
     """
-    tan_a = prm.sin_a / prm.cos_a
+    tan_a = prm.tan_ax
     ux = ua + slope * x
     ue = ua + slope * x_end
     if ux < -tan_a:
@@ -205,9 +209,9 @@ def _record_sample(
 
 @njit(cache=True, nogil=True)
 def _verdict_at_end(theta: float, last_alpha_up: float, prm: KernelParams) -> tuple[int, float]:
-    """(fate, collapse time) of the α-based rules when the input ends without a decision:
-    `end-of-record` collapses when |θ| ≥ α then (at the last upward crossing of α)."""
-    if prm.collapse_mode == COLLAPSE_END_OF_RECORD and abs(theta) >= prm.alpha:
+    """(fate, collapse time) of the α_x-based rules when the input ends without a decision:
+    `end-of-record` collapses when |θ| ≥ α_x then (at the last upward crossing of α_x)."""
+    if prm.collapse_mode == COLLAPSE_END_OF_RECORD and abs(theta) >= prm.alpha_x:
         return FATE_EXCEEDED, last_alpha_up
     return FATE_STANDING, math.nan
 
@@ -274,6 +278,10 @@ def _first_event(
         u = ev.first_crossing(c0, c1, c2, c3, r1, r2, prm.theta_max, True)
         if 0.0 <= u < u_event:
             event, u_event, level = _RUPTURE, u, prm.theta_max
+    if bar_on and ymax >= prm.theta_cr:
+        u = ev.first_crossing(c0, c1, c2, c3, r1, r2, prm.theta_cr, True)
+        if 0.0 <= u < u_event:
+            event, u_event, level = _CRUSH, u, prm.theta_cr
     if ymax >= limit:
         u = ev.first_crossing(c0, c1, c2, c3, r1, r2, limit, True)
         if 0.0 <= u < u_event:
@@ -327,7 +335,7 @@ def simulate(
     n_input = n_rec + n_tail
     n_free_max = int(math.ceil(MAX_FREE_VIBRATION / dt))
     overturning = prm.collapse_mode == COLLAPSE_OVERTURNING
-    limit = prm.alpha if prm.collapse_mode == COLLAPSE_FIRST_EXCEEDANCE else 0.5 * math.pi
+    limit = prm.alpha_x if prm.collapse_mode == COLLAPSE_FIRST_EXCEEDANCE else 0.5 * math.pi
     inv_g = scale / prm.g
     adaptive = prm.method != METHOD_RK4
     # step-size exponent: 1/(q + 1), q the order of the embedded error estimate
@@ -392,6 +400,12 @@ def simulate(
                     theta = 0.0
                     omega = 0.0
                     need_a = True
+                    if prm.theta_cr <= 0.0 and (intact_pos if s > 0.0 else intact_neg):
+                        # x_W already reaches the bar: the toe crushes as the wall uplifts
+                        fate = FATE_CRUSHED
+                        collapse_time = t_i + x
+                        decided_time = collapse_time
+                        break
                 continue
 
             bar_on = intact_pos if s > 0.0 else intact_neg
@@ -434,8 +448,8 @@ def simulate(
                 peak_bar = max(peak_bar, step_max)
 
             if event == _NO_EVENT:
-                if y0 < prm.alpha <= y1:
-                    last_alpha_up = t_i + x + hh * (prm.alpha - y0) / (y1 - y0)
+                if y0 < prm.alpha_x <= y1:
+                    last_alpha_up = t_i + x + hh * (prm.alpha_x - y0) / (y1 - y0)
                 if y1 < 0.0:
                     # s·θ left its regime without a located crossing: only possible at
                     # round-off level right after an uplift; the wall is at rest.
@@ -465,8 +479,8 @@ def simulate(
             tau, om_e, _resid = ev.locate_level(
                 theta, omega, a1, hh, u_event * hh, u0, slope, s, k_s, level, prm
             )
-            if y0 < prm.alpha <= level:
-                last_alpha_up = t_i + x + tau * (prm.alpha - y0) / (level - y0)
+            if y0 < prm.alpha_x <= level:
+                last_alpha_up = t_i + x + tau * (prm.alpha_x - y0) / (level - y0)
             x = x + tau
             t_event = t_i + x
             theta = s * level
@@ -482,6 +496,11 @@ def simulate(
                     rupture_side[n_ruptures] = int(s)
                 n_ruptures += 1
                 omega, intact_pos, intact_neg = _rupture(om_e, s, intact_pos, intact_neg, prm)
+            elif event == _CRUSH:
+                fate = FATE_CRUSHED
+                collapse_time = t_event
+                decided_time = t_event
+                break
             else:
                 fate = FATE_FELL if level >= 0.5 * math.pi else FATE_EXCEEDED
                 collapse_time = t_event
