@@ -5,11 +5,11 @@ A newcomer's map:
 * The input is the record (plus ``n_tail`` zero samples).  Between two samples the ground
   acceleration is linear; steps never cross a sample, so every step sees a smooth input.
 * At rest nothing is integrated: the instant when the linear ground acceleration exceeds
-  g·tan α_x is solved for exactly (:func:`_uplift`) and rocking starts there.
+  g·tan α_x is solved for exactly (:func:`.jumps.uplift`) and rocking starts there.
 * Rocking: one step of the chosen method (:mod:`.steppers`), rejected and retried smaller
   while its error estimate exceeds the tolerance.  An accepted step is scanned for events on
   its dense output and each event is located on the integrator (:mod:`.events`); the jump is
-  applied there (:func:`_impact`, :func:`_rupture`) and the step restarts from that instant.
+  applied there (:mod:`.jumps`) and the step restarts from that instant.
   The toe crushing (|θ| reaches θ_cr with the acting bar intact) is a collapse, as is the fall.
 * Collapse ``overturning``: after the input the wall moves freely until it falls or can no
   longer fall (:mod:`.fate`).  ``end-of-record`` and ``first-exceedance`` judge |θ| against
@@ -28,9 +28,9 @@ from numba import njit
 
 from frp_assess.dynamics.kernel import events as ev
 from frp_assess.dynamics.kernel.fate import cannot_fall, remaining_peak
+from frp_assess.dynamics.kernel.jumps import impact, rupture, uplift
 from frp_assess.dynamics.kernel.params import (
     BAR_NONE,
-    BAR_SHARED,
     COLLAPSE_END_OF_RECORD,
     COLLAPSE_FIRST_EXCEEDANCE,
     COLLAPSE_OVERTURNING,
@@ -44,8 +44,6 @@ from frp_assess.dynamics.kernel.params import (
     METHOD_DOPRI5,
     METHOD_RK4,
     MIN_STEP_FRACTION,
-    REST_VELOCITY,
-    RUPTURE_ENERGY_TRANSFER,
     STATUS_EVENT_OVERFLOW,
     STATUS_FREE_VIBRATION_UNDECIDED,
     STATUS_OK,
@@ -90,60 +88,6 @@ def history_length(n_input: int, dt: float, collapse_mode: int) -> int:
     if collapse_mode != COLLAPSE_OVERTURNING:
         return n_input
     return n_input + int(math.ceil(MAX_FREE_VIBRATION / dt)) + 1
-
-
-@njit(cache=True, nogil=True)
-def _uplift(
-    ua: float, slope: float, x: float, x_end: float, prm: KernelParams
-) -> tuple[float, float]:
-    """From rest at x, the instant in [x, x_end) the wall uplifts, and its side (0: none).
-
-    It starts with s = +1 when ü_g/g < −tan α_x and (two-sided only) with s = −1 when
-    ü_g/g > tan α_x; the input is linear, so the instant is exact.
-    """
-    tan_a = prm.tan_ax
-    ux = ua + slope * x
-    ue = ua + slope * x_end
-    if ux < -tan_a:
-        return x, 1.0
-    if (not prm.one_sided) and ux > tan_a:
-        return x, -1.0
-    if ue < -tan_a:
-        return x + (-tan_a - ux) / slope, 1.0
-    if (not prm.one_sided) and ue > tan_a:
-        return x + (tan_a - ux) / slope, -1.0
-    return x_end, 0.0
-
-
-@njit(cache=True, nogil=True)
-def _impact(omega: float, s: float, prm: KernelParams) -> tuple[float, float, bool]:
-    """Jump at θ = 0: (θ'₊, new s, at rest).  Two-sided: the pivot changes; one-sided: rebound."""
-    if prm.one_sided:
-        omega_new = -prm.e_impact * omega
-        s_new = s
-    else:
-        omega_new = prm.e_impact * omega
-        s_new = -s
-    if abs(omega_new) < REST_VELOCITY * prm.p:
-        return 0.0, s_new, True
-    return omega_new, s_new, False
-
-
-@njit(cache=True, nogil=True)
-def _rupture(
-    omega: float, s: float, intact_pos: bool, intact_neg: bool, prm: KernelParams
-) -> tuple[float, bool, bool]:
-    """Jump at θ_max: (θ'₊, bar for s = +1 intact, bar for s = −1 intact)."""
-    if prm.bar_mode == BAR_SHARED:
-        intact_pos = False
-        intact_neg = False
-    elif s > 0.0:
-        intact_pos = False
-    else:
-        intact_neg = False
-    if prm.rupture_mode == RUPTURE_ENERGY_TRANSFER:  # Eq. 12
-        omega = math.copysign(math.sqrt(omega * omega + 2.0 * prm.rupture_energy), omega)
-    return omega, intact_pos, intact_neg
 
 
 @njit(cache=True, nogil=True)
@@ -393,7 +337,7 @@ def simulate(
         events = 0
         while x < dt:
             if resting:
-                x, side = _uplift(ua, slope, x, dt, prm)
+                x, side = uplift(ua, slope, x, dt, prm)
                 if side != 0.0:
                     resting = False
                     s = side
@@ -489,13 +433,13 @@ def simulate(
             if event == _IMPACT:
                 n_impacts += 1
                 theta = 0.0
-                omega, s, resting = _impact(om_e, s, prm)
+                omega, s, resting = impact(om_e, s, prm)
             elif event == _RUPTURE:
                 if n_ruptures < rupture_time.shape[0]:
                     rupture_time[n_ruptures] = t_event
                     rupture_side[n_ruptures] = int(s)
                 n_ruptures += 1
-                omega, intact_pos, intact_neg = _rupture(om_e, s, intact_pos, intact_neg, prm)
+                omega, intact_pos, intact_neg = rupture(om_e, s, intact_pos, intact_neg, prm)
             elif event == _CRUSH:
                 fate = FATE_CRUSHED
                 collapse_time = t_event
