@@ -27,6 +27,7 @@ from frp_assess.assess.inputs import (
     Option,
     RecordFile,
 )
+from frp_assess.assess.wall_model import base_problem
 from frp_assess.config import MASONRY, FrpMaterial, LoadedProject, Project, load_project
 from frp_assess.config.messages import Loc, format_path, line_of
 from frp_assess.config.problems import problems_of, raise_all
@@ -250,29 +251,15 @@ def inputs_from_project(
         input_file=input_file,
         bars=bar_settings_of(project.bars),
     )
-    _check_base_carries_the_weight(project, inputs, file or input_file or None, lines)
-    return laid_out(project, inputs, file=file or input_file or None, lines=lines)
-
-
-def _check_base_carries_the_weight(
-    project: Project,
-    inputs: AssessmentInputs,
-    file: str | None,
-    lines: Mapping[Loc, int] | None,
-) -> None:
-    """``pivot: crushing`` needs x_W = W/(0.85·f_d) < B (docs/model.md §1.1): else an
-    InputError at ``wall.compressive_strength`` (or ``wall.masonry``, whose f_m was taken)."""
-    try:
-        inputs.model_for(None)
-    except ValueError as exc:
-        given = project.wall.compressive_strength is not None
-        loc: Loc = ("wall", "compressive_strength" if given else "masonry")
+    problem = base_problem(inputs.wall_input)
+    if problem is not None:  # the one refusal of the masonry at the base (rules/masonry.py)
         raise InputError(
-            str(exc),
-            file=file,
-            line=None if lines is None else line_of(lines, loc),
-            key=format_path(loc),
-        ) from None
+            problem,
+            file=file or input_file or None,
+            line=None if lines is None else line_of(lines, ("wall", "thickness")),
+            key="wall.thickness",
+        )
+    return laid_out(project, inputs, file=file or input_file or None, lines=lines)
 
 
 def _print_warning(line: str) -> None:

@@ -20,13 +20,13 @@ from frp_assess.assess.masonry import (
     DEFAULT_PIVOT_LIMIT,
     STRESS_BLOCK_FACTOR,
     PivotCheck,
-    bar_force,
-    bar_lever_arm,
     pivot_check,
-    wall_weight,
 )
 from frp_assess.dynamics import PivotRule
+from frp_assess.dynamics.units import KPA_PER_GPA
 from frp_assess.results.pivot import PivotResult
+from frp_assess.rules.bars import bar_area, bar_force, lever_arm
+from frp_assess.rules.masonry import toe_crushes, wall_weight
 
 
 @dataclass(frozen=True)
@@ -41,6 +41,7 @@ class CasePivot:
         model_pivot: the model the case's IDA runs with: ``crushing`` when the base reaction
             is in the equation (a finite f_d), else ``edge``.
         weight_depth: x_W = W/(0.85·f_d·1 m) [m], the stress block under the weight alone.
+        thickness: B [m].
     """
 
     case: str
@@ -49,6 +50,7 @@ class CasePivot:
     bar_distance: float | None
     model_pivot: PivotRule
     weight_depth: float
+    thickness: float
 
     def line(self) -> str:
         """One line for the report: the numbers at the bar's rupture force, then what they
@@ -60,7 +62,9 @@ class CasePivot:
             f"x/B = {c.depth_ratio:.3f}"
         )
         if self.model_pivot == "crushing":
-            if self.bar_distance is not None and c.depth >= self.bar_distance:
+            if self.bar_distance is not None and toe_crushes(
+                c.depth, self.thickness, self.bar_distance
+            ):
                 return (
                     f"{head}: the toe crushes before the bar breaks (x reaches the bar, "
                     f"{self.bar_distance * 1e3:.0f} mm from the corner; pivot: crushing)"
@@ -96,15 +100,16 @@ def case_pivot(
 ) -> CasePivot:
     """The pivot check of the unreinforced wall (``None``) or of one option."""
     b = inputs.thickness
-    weight = wall_weight(inputs.unit_weight, b, inputs.height)
+    weight = wall_weight(inputs.unit_weight, b, inputs.height)  # [kN/m]
     f_d = inputs.masonry_strength.f_d
     rule = inputs.model.pivot
     if option is None:
         force, distance = 0.0, None
     else:
         strain = inputs.rupture_strain(option.material)  # ε_max the model uses [-]
-        force = bar_force(option.ratio, b, option.material.elastic_modulus, strain)
-        distance = bar_lever_arm(option.position, b)
+        modulus = option.material.elastic_modulus * KPA_PER_GPA  # [kPa]: T in kN/m
+        force = bar_force(modulus, bar_area(option.ratio, b), strain)
+        distance = lever_arm(option.position, b)
     check = pivot_check(weight, force, b, f_d, limit)
     model = inputs.model_for(option)
     return CasePivot(
@@ -114,6 +119,7 @@ def case_pivot(
         bar_distance=distance,
         model_pivot="crushing" if model.base_reaction.weight_depth > 0.0 else "edge",
         weight_depth=pivot_check(weight, 0.0, b, f_d, limit).depth,
+        thickness=b,
     )
 
 

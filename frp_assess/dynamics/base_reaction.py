@@ -31,7 +31,11 @@ from numpy.typing import NDArray
 from frp_assess.dynamics.rebars import Rebars
 from frp_assess.dynamics.wall import Wall
 from frp_assess.motions.record import G
-from frp_assess.rules.masonry import compressed_zone_depth
+from frp_assess.rules.masonry import (
+    base_carries_weight,
+    compressed_zone_depth,
+    weight_not_carried,
+)
 
 PivotRule = Literal["edge", "crushing"]
 PIVOT_RULES: tuple[PivotRule, ...] = ("edge", "crushing")
@@ -57,20 +61,16 @@ class BaseReaction:
     def __post_init__(self) -> None:
         if self.rule not in PIVOT_RULES:
             raise ValueError(f"pivot must be one of {PIVOT_RULES}, got {self.rule!r}")
-        x_w, b = self.weight_depth, self.wall.thickness
-        if not x_w < b:
-            f_mpa = self.wall.compressive_strength / 1e6
-            raise ValueError(
-                f"the base cannot carry the wall's weight: x_W = W/(0.85·f_d) = {x_w:.4g} m "
-                f"is not smaller than the thickness B = {b:g} m (f_d = {f_mpa:.4g} MPa); "
-                "a stronger masonry or a thicker wall is needed"
-            )
+        w = self.wall
+        if self.rule == "crushing" and not base_carries_weight(
+            self.weight, w.thickness, w.compressive_strength
+        ):
+            raise ValueError(weight_not_carried(self.weight, w.thickness, w.compressive_strength))
 
     @property
     def weight(self) -> float:
         """W = w·B·H [N/m]."""
-        w = self.wall
-        return w.unit_weight * w.thickness * w.height
+        return self.wall.weight
 
     @property
     def weight_depth(self) -> float:
