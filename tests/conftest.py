@@ -1,6 +1,12 @@
-"""Shared fixtures: seeded synthetic ground motions (no files, no network)."""
+"""Shared fixtures: seeded synthetic ground motions (no files, no network); the ``tui`` marker
+of tests/tui/; the numba cache warmed once before pytest-xdist's workers start."""
 
 from __future__ import annotations
+
+import contextlib
+import io
+import tempfile
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -27,3 +33,39 @@ def synthetic_record(
 @pytest.fixture
 def record_factory():
     return synthetic_record
+
+
+TUI_TESTS = Path(__file__).parent / "tui"
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    """Every test under tests/tui/ carries the ``tui`` marker (``-m "not tui"`` skips them)."""
+    for item in items:
+        if item.path.is_relative_to(TUI_TESTS):
+            item.add_marker(pytest.mark.tui)
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    """With pytest-xdist (``-n``), compile the numba kernels once in the controller, before
+    the workers start: each worker then loads them from the on-disk cache instead of all of
+    them compiling the same functions at once (wasted CPU, and racing writes of the cache
+    index).  Workers (they have ``workerinput``) and serial runs do nothing here."""
+    if hasattr(config, "workerinput") or not config.pluginmanager.hasplugin("xdist"):
+        return
+    if not config.getoption("numprocesses", None) or config.getoption("collectonly"):
+        return
+    warm_numba_cache()
+
+
+def warm_numba_cache() -> None:
+    """Run the golden gable (tests/golden/projects/building-crushing.yaml, about a second
+    once compiled) through the CLI, quietly: it calls every cached kernel (IDA, time
+    histories, response spectra, the floor filter, the crushing pivot)."""
+    from tests.golden.golden import run_project
+
+    with (
+        tempfile.TemporaryDirectory(prefix="frp-numba-warm-") as tmp,
+        contextlib.redirect_stdout(io.StringIO()),
+        contextlib.redirect_stderr(io.StringIO()),
+    ):
+        run_project("building-crushing", Path(tmp) / "out", jobs=1)

@@ -8,14 +8,12 @@ from __future__ import annotations
 from frp_assess.dynamics.base_reaction import PIVOT_RULES, BaseReaction, PivotRule
 from frp_assess.dynamics.batch import IdaTask, default_jobs, run_batch
 from frp_assess.dynamics.ida import IdaPoint, IdaResult, IdaSettings, ida
+from frp_assess.dynamics.options import COLLAPSE_RULES, RUPTURE_RULES, CollapseRule
 from frp_assess.dynamics.rebars import POSITIONS, Position, Rebars
 from frp_assess.dynamics.restitution import housner_two_sided, one_sided, velocity_ratio
 from frp_assess.dynamics.rocking import (
-    COLLAPSE_RULES,
     DEFAULT_TOLERANCE,
     FAILURE_MODES,
-    RUPTURE_RULES,
-    CollapseRule,
     FailureMode,
     Fate,
     History,

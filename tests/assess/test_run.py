@@ -101,6 +101,7 @@ def test_run_writes_consistent_results(tmp_path):
     assert results.governing.runs[1].collapsed is False
 
 
+@pytest.mark.slow
 def test_rerun_is_served_from_cache_with_same_numbers(tmp_path):
     inputs = small_inputs()
     first, s1 = run_assessment(inputs, tmp_path, pdf=False, created="x")
@@ -132,6 +133,7 @@ class PairRecorder:
                     self.lagging.append((len(self.pairs), done))
 
 
+@pytest.mark.slow
 def test_case_progress_names_every_case_record_pair_once(tmp_path):
     """case_progress gets each (case, record) of the IDA stage exactly once, before the
     overall count that includes it: on a fresh run, on a partly cached run (after a change

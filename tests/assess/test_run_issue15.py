@@ -23,6 +23,7 @@ def _run(tmp_path, **kw):
     return results
 
 
+@pytest.mark.slow
 def test_fc_in_the_verdict_fails_a_case_that_passes_without_it(tmp_path):
     off = _run(tmp_path, code_check=CodeCheckSettings(fc_in_ida=False))
     urm_off = off.cases[0]
@@ -42,6 +43,7 @@ def test_fc_in_the_verdict_fails_a_case_that_passes_without_it(tmp_path):
         assert b.meets_target == (b.capacity_demand >= target)
 
 
+@pytest.mark.slow
 def test_knowledge_level_sets_the_fc_of_the_verdict(tmp_path):
     lc3 = _run(tmp_path, code_check=CodeCheckSettings(knowledge_level="LC3"))
     # LC3: FC = 1.00 (Circolare 2019 Tab. C8.5.IV)

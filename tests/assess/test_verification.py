@@ -5,6 +5,8 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+import pytest
+
 from frp_assess.api import run_assessment
 from frp_assess.dynamics import ida
 from frp_assess.dynamics.rocking import DEFAULT_TOLERANCE
@@ -43,6 +45,7 @@ def test_verify_repeats_every_ida_at_a_tighter_tolerance(tmp_path):
     )
 
 
+@pytest.mark.slow
 def test_tolerance_is_part_of_the_cache_key(tmp_path):
     inputs = small_inputs()
     _, first = run_assessment(inputs, tmp_path, jobs=2, pdf=False, write=False)

@@ -158,6 +158,7 @@ def test_read_only_out_folder(
 # --- the disk fills up while writing (a file size limit makes every write beyond it fail) ----
 
 
+@pytest.mark.slow
 def test_full_disk_during_run_keeps_the_previous_set(tmp_path: Path) -> None:
     project = tiny_project(tmp_path)
     out = tmp_path / "out"
@@ -184,6 +185,7 @@ def test_full_disk_during_run_keeps_the_previous_set(tmp_path: Path) -> None:
     assert output_set(after) == output_set(before)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("command", ["simulate", "report", "records generate"])
 def test_full_disk_in_other_writers(tmp_path: Path, command: str) -> None:
     if command == "simulate":

@@ -24,6 +24,7 @@ def piped_into_head(argv: list[str]) -> tuple[int, str, str]:
     return proc.wait(timeout=300), head.stdout.decode(), err
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     "argv",
     [["schema"], ["--help"], ["run", "PROJECT", "--no-pdf", "--jobs", "1"]],

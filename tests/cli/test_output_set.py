@@ -31,6 +31,7 @@ def assert_valid_set(out: Path, *, pdf: bool) -> dict:
     return results
 
 
+@pytest.mark.slow
 def test_kill_9_mid_run_then_rerun_gives_the_same_results(tmp_path: Path) -> None:
     project = tiny_project(tmp_path)
     reference = run_cli("run", str(project), "--out", str(tmp_path / "ref"), "--jobs", "1")
@@ -61,6 +62,7 @@ def test_kill_9_mid_run_then_rerun_gives_the_same_results(tmp_path: Path) -> Non
     assert_valid_set(out, pdf=True)
 
 
+@pytest.mark.slow
 def test_two_runs_into_one_folder_at_once(tmp_path: Path) -> None:
     project = tiny_project(tmp_path)
     out = tmp_path / "shared"

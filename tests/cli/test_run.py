@@ -164,6 +164,7 @@ def test_run_writes_the_report_and_report_rebuilds_it_identically(tmp_path):
     assert (tmp_path / "again.pdf").read_bytes() == pdf
 
 
+@pytest.mark.slow
 def test_paper_case_just_below_history_survives(tmp_path):
     """Regression: in projects/paper-case.yaml the governing record collapses at C and also at
     C·(1 - tol) (the response is not monotonic in C); the report's "just below" history must

@@ -72,6 +72,7 @@ def _brute_force(acc: np.ndarray, dt: float, period: float, xi: float) -> float:
     return w * w * float(np.max(np.abs(sol.y[0])))
 
 
+@pytest.mark.slow
 def test_agrees_with_brute_force_ode():
     """Random record; periods below and above 10·dt (sub-stepping) and damping 2 %, 5 %."""
     rng = np.random.default_rng(42)

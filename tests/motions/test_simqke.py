@@ -98,6 +98,7 @@ def test_generator_rejects_bad_arguments():
         generate_artificial(s, count=0)
 
 
+@pytest.mark.slow
 def test_default_set_of_seven_passes_for_the_presets():
     """Issue 3 defaults (7 records, 25 s, dt = 0.005 s, 10 s stationary) against A1-A3."""
     for name in ("A1", "A2", "A3"):
@@ -109,6 +110,7 @@ def test_default_set_of_seven_passes_for_the_presets():
         assert 1.0 <= float(recs[0].meta["set_scale_factor"]) < 1.15
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("spectrum", SPECTRA, ids=lambda s: s.name)
 def test_generator_passes_ec8_and_ntc_for_20_seeds(spectrum):
     """Issue 3: both codes' checks pass for presets A1-A3, EC8 types 1/2 on all grounds and

@@ -47,6 +47,7 @@ def test_cli_study_runs_and_reports_errors(tmp_path, capsys, monkeypatch):
     assert "bad.yaml:5: colour: unknown key" in err and len(err.strip().splitlines()) == 1
 
 
+@pytest.mark.slow
 def test_dask_and_local_give_identical_numbers(tmp_path, tiny_study, records):
     pytest.importorskip("dask")
     pytest.importorskip("distributed")

@@ -58,6 +58,7 @@ def row_error(app: FrpAssessApp, path: tuple[str, ...]) -> str | None:
     return row.error
 
 
+@pytest.mark.slow
 def test_open_edit_derived_values_and_validation_messages(small_project: Path):
     async def body() -> None:
         app = FrpAssessApp(small_project)
@@ -113,6 +114,7 @@ def test_open_edit_derived_values_and_validation_messages(small_project: Path):
     run_async(body)
 
 
+@pytest.mark.slow
 def test_retrofit_table_add_duplicate_remove_and_errors(small_project: Path):
     async def body() -> None:
         app = FrpAssessApp(small_project)
@@ -158,6 +160,7 @@ def test_retrofit_table_add_duplicate_remove_and_errors(small_project: Path):
     run_async(body)
 
 
+@pytest.mark.slow
 def test_run_to_the_end_matches_batch_mode(small_project: Path, tmp_path: Path):
     async def body() -> dict[str, Any]:
         app = FrpAssessApp(small_project)
@@ -214,6 +217,7 @@ def test_run_to_the_end_matches_batch_mode(small_project: Path, tmp_path: Path):
     assert (out / "report.pdf").read_bytes().startswith(b"%PDF")  # as `frp-assess run` writes
 
 
+@pytest.mark.slow
 def test_cancel_a_run_keeps_the_ui_responsive(big_project: Path):
     async def body() -> None:
         app = FrpAssessApp(big_project, jobs=1)
@@ -246,6 +250,7 @@ def test_cancel_a_run_keeps_the_ui_responsive(big_project: Path):
     run_async(body)
 
 
+@pytest.mark.slow
 def test_save_and_reload_gives_the_same_project(small_project: Path, tmp_path: Path):
     """load -> save -> load gives the same project; saving keeps the file's comments and
     leaves an unchanged file byte for byte as it was."""
@@ -280,6 +285,7 @@ def test_save_and_reload_gives_the_same_project(small_project: Path, tmp_path: P
     run_async(body)
 
 
+@pytest.mark.slow
 def test_new_project_asks_for_a_file_name(tmp_path: Path, monkeypatch: pytest.MonkeyPatch):
     monkeypatch.chdir(tmp_path)
     target = tmp_path / "sub" / "new wall.yaml"
@@ -307,6 +313,7 @@ def test_new_project_asks_for_a_file_name(tmp_path: Path, monkeypatch: pytest.Mo
     run_async(body)
 
 
+@pytest.mark.slow
 def test_export_pdf_and_help(small_project: Path, tmp_path: Path):
     export = tmp_path / "exported"
 
@@ -350,6 +357,7 @@ def test_export_pdf_and_help(small_project: Path, tmp_path: Path):
     assert (export / "report.pdf").read_bytes().startswith(b"%PDF")
 
 
+@pytest.mark.slow
 def test_invalid_file_opens_with_the_error_next_to_the_field(tmp_path: Path):
     path = tmp_path / "bad.yaml"
     path.write_text(
@@ -372,6 +380,7 @@ def test_invalid_file_opens_with_the_error_next_to_the_field(tmp_path: Path):
     run_async(body)
 
 
+@pytest.mark.slow
 def test_quit_asks_when_there_are_unsaved_changes(small_project: Path):
     from frp_assess.tui.dialogs import ConfirmQuit
 
@@ -392,6 +401,7 @@ def test_quit_asks_when_there_are_unsaved_changes(small_project: Path):
     run_async(body)
 
 
+@pytest.mark.slow
 def test_opening_a_project_shows_its_last_run(small_project: Path):
     """Results are not lost between sessions: opening a project that was run before shows
     that run's ranking (rebuilt from the cache, nothing recomputed or rewritten), and the
@@ -417,6 +427,7 @@ def test_opening_a_project_shows_its_last_run(small_project: Path):
     assert (out / "results.json").stat().st_mtime_ns == stamp
 
 
+@pytest.mark.slow
 def test_a_late_focus_message_does_not_switch_the_tab(small_project: Path):
     """The tab is changed on purpose only: the focus message of a field of the Wall tab that
     is handled after the user went to another tab leaves that tab shown (and the focus
@@ -437,6 +448,7 @@ def test_a_late_focus_message_does_not_switch_the_tab(small_project: Path):
     run_async(body)
 
 
+@pytest.mark.slow
 def test_building_block_switched_on_validated_and_saved(small_project: Path):
     """A wall above the ground floor: the Wall tab's building fields, the loader's located
     message under Z, and the block saved into the file (and left out when switched off)."""

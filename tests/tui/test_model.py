@@ -219,6 +219,7 @@ def test_case_progress_counts_every_pair_once(tmp_path):
         assert [(c.done, c.total) for c in tracker.counts()] == [(3, 3)] * 3
 
 
+@pytest.mark.slow
 def test_load_previous_rebuilds_the_last_run_only_when_it_matches(tmp_path):
     """Opening a project shows its last run again, rebuilt from the cache without writing; a
     project changed since (an IDA not in the cache) or never run gives None."""

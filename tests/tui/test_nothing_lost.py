@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from textual.widgets import Input, Select
 
 from frp_assess.assess.from_project import bar_settings_of
@@ -52,6 +53,7 @@ def test_without_paths_removes_keys_and_the_blocks_they_empty():
     assert without_paths(["not", "a", "mapping"], [("a",)]) == {}
 
 
+@pytest.mark.slow
 def test_save_keeps_the_bars_block_as_written(tmp_path: Path):
     path = tmp_path / "wall.yaml"
     path.write_text(SMALL + BARS, encoding="utf-8")
@@ -75,6 +77,7 @@ def test_save_keeps_the_bars_block_as_written(tmp_path: Path):
     assert after.bars == before.bars and after.project.notes == "north facade"
 
 
+@pytest.mark.slow
 def test_other_blocks_of_a_variant_go_when_the_variant_changes(tmp_path: Path):
     """Carrying the file's keys does not resurrect a block the user switched off."""
     path = tmp_path / "wall.yaml"
@@ -97,6 +100,7 @@ def test_other_blocks_of_a_variant_go_when_the_variant_changes(tmp_path: Path):
     assert saved.design is None and saved.bars.exposure == "internal"
 
 
+@pytest.mark.slow
 def test_a_run_from_the_tui_uses_the_projects_bars(tmp_path: Path):
     """With ``whole_bars: false`` the model takes the ratios asked (1 and 2 ‰); with the
     default whole bars it would take the installed ones (1.005... and 2.01... ‰ here)."""
@@ -117,6 +121,7 @@ def test_a_run_from_the_tui_uses_the_projects_bars(tmp_path: Path):
     run_async(body)
 
 
+@pytest.mark.slow
 def test_fields_for_pivot_strength_fc_diameter_and_design_strain(tmp_path: Path):
     """The keys of issue 16 have fields: a file's values show in them, edits reach the project
     and the save (every value below is away from the schema's default)."""

@@ -125,6 +125,7 @@ def test_option_hint_and_labels() -> None:
         option_field(("a", "w"), "W", word, labels={"c": "?"})
 
 
+@pytest.mark.slow
 def test_the_analysis_tab_shows_and_checks_the_declared_range(small_project: Path) -> None:
     """Driven with Pilot: the step ratio's row shows the declared range, its help line is the
     declaration's, and 1.005 (below 1.01, above the old hint's ``> 1``) is refused on the field

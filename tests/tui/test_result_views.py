@@ -138,6 +138,7 @@ async def _show(pilot: Any, results: AssessmentResult) -> ResultsPane:
     return pane
 
 
+@pytest.mark.slow
 def test_results_views_show_bars_pivot_checks_and_sensitivity(run: Run, small_project: Path):
     r = run.full
 
@@ -216,6 +217,7 @@ def test_results_views_show_bars_pivot_checks_and_sensitivity(run: Run, small_pr
     run_async(body)
 
 
+@pytest.mark.slow
 def test_results_without_the_new_fields_show_nothing_of_them(run: Run, small_project: Path):
     r = run.plain
 
@@ -266,6 +268,7 @@ class FloorSpectraStandIn:
     ground: tuple[float, ...]
 
 
+@pytest.mark.slow
 def test_dropped_options_floor_motion_and_fc_are_shown(run: Run, small_project: Path):
     """A wall above ground: the summary says what shook it, each record's floor PGA and the
     floor spectra show; an option dropped by the pivot check is marked in the ranking; the

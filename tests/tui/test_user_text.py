@@ -9,6 +9,7 @@ import math
 import re
 from pathlib import Path
 
+import pytest
 from rich.text import Text
 from textual.widgets import Input, TabbedContent
 
@@ -69,6 +70,7 @@ def test_literal_and_safe_never_read_markup_and_keep_styles():
     ]
 
 
+@pytest.mark.slow
 def test_names_with_markup_show_literally(tmp_path: Path):
     path = write_project(tmp_path)
     project = load_project(path).project

@@ -58,6 +58,7 @@ def test_peak_rotation_matches_reference(name, rule):
             assert ours.impacts == ref["impacts"]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("rule", ["overturning"])
 @pytest.mark.parametrize(
     "name", ["URM one-sided", "CFRP external one-sided", "GFRP external two-sided"]
