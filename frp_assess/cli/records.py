@@ -29,6 +29,7 @@ from frp_assess.motions.record import Record
 from frp_assess.motions.simqke import generate_artificial
 from frp_assess.motions.spectra import SPECTRUM_HELP, ElasticSpectrum, parse_spectrum
 from frp_assess.motions.writers import write_at2
+from frp_assess.output_set import check_out_dir
 
 #: bounds of the arguments (those of the project file's schema)
 COUNT = whole_number_in(1, 100)
@@ -118,6 +119,7 @@ def _positive(value: float, key: str) -> None:
 
 def run_generate(args: argparse.Namespace) -> int:
     spectrum = parse_spectrum(args.spectrum)
+    check_out_dir(Path(args.out))
     for key in ("duration", "dt", "stationary", "t1"):
         _positive(getattr(args, key), f"--{key}")
     if args.count < 1:

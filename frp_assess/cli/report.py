@@ -34,7 +34,7 @@ def run(args: argparse.Namespace) -> int:
     results = load_results(results_dir)  # InputError -> one line, exit 2
     try:
         story = build_story(results)  # a value that breaks the contract fails here
-        if out.resolve().parent == results_dir.resolve():
+        if out.parent.resolve() == results_dir.resolve():  # never follow a linked report.pdf
             # report.pdf is a member of the run's output set: replace it under the lock
             with FolderLock(results_dir, key="RESULTS_DIR"):
                 build_report(results, out, story=story)
