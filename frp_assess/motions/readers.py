@@ -63,6 +63,13 @@ MAX_RECORD_BYTES = 50_000_000
 MAX_SAMPLES = 2_000_000
 #: smallest time step [s] (as the project file's; a smaller one is a unit or header mistake)
 MIN_DT = 1e-4
+#: smallest and largest peak [g] of a record that is read at all.  Outside them no units
+#: make sense of the file (a PGA of 1e-6 g is below any instrument's noise; 1e4 g is 10⁴ times
+#: any recorded earthquake, even a file in cm/s² read as g stays below it) and scaling such a
+#: record loses its digits; inside, a peak outside the range of practice is a warning
+#: (frp_assess.motions.plausibility).
+MIN_PEAK_G = 1e-6
+MAX_PEAK_G = 1e4
 #: a data line of a table: digits, signs, exponents, points, commas, semicolons, blanks
 _DATA_LINE_RE = re.compile(r"^[\s0-9.,;eEdD+-]*[0-9][\s0-9.,;eEdD+-]*$")
 _DECIMAL_COMMA_RE = re.compile(r"[0-9],[0-9]")
@@ -527,6 +534,13 @@ def _make(
         raise RecordFormatError("the record holds non-finite values", file=str(path))
     if not np.any(acc):
         raise RecordFormatError("the record holds only zeros", file=str(path))
+    peak_g = float(np.max(np.abs(acc))) / G
+    if not MIN_PEAK_G <= peak_g <= MAX_PEAK_G:
+        raise RecordFormatError(
+            f"expected a peak acceleration between {MIN_PEAK_G:g} g and {MAX_PEAK_G:g} g, "
+            f"found {peak_g:.3g} g (check the file and its units)",
+            file=str(path),
+        )
     meta = {"format": kind, **meta}
     return Record(
         name=name or path.stem, dt=dt, acc=acc, source=f"{kind} file {path.name}", meta=meta
