@@ -332,9 +332,7 @@ def compliance_result(seismic: SeismicInput) -> Compliance:
     )
 
 
-def code_check_result(
-    check: KinematicCheck, mass: float, above_ground: bool = False
-) -> CodeCheck:
+def code_check_result(check: KinematicCheck, mass: float, above_ground: bool = False) -> CodeCheck:
     """The linear check of results.json; ``above_ground``: its demand is a_Z/q."""
     at_height = (
         " Above ground the demand is a_Z/q, a_Z the peak acceleration of the floor at the "
@@ -494,7 +492,7 @@ def build_results(
         numerical_check=None
         if numerical_check is None
         else numerical_check_result(numerical_check, cases, seismic),
-        input_warnings=tuple(seismic.warnings),
+        input_warnings=(*inputs.warnings, *seismic.warnings),
         # false: the records fail the code's spectrum-compatibility checks; the CLI, TUI and
         # report then call the rank-1 option "best ranked", never "recommended"
         input_code_compliant=bool(seismic.compliance.passed),
