@@ -14,6 +14,7 @@ import json
 import math
 import os
 import re
+import sys
 import threading
 from collections.abc import Callable, Sequence
 from dataclasses import asdict, dataclass
@@ -333,12 +334,28 @@ def _is_plain_file_name(name: str) -> bool:
 
 
 def build_pdf(results: AssessmentResult, path: Path) -> bool:
-    """Build the PDF report if the report package is installed; returns whether it did."""
+    """Build the PDF report if the report package is installed; returns whether it did.
+
+    A report that cannot be laid out (a table too wide for the page: 100 records, a name of
+    hundreds of characters) does not throw the analysis away: one warning line, no
+    report.pdf, and the rest of the set is written (issue 25).
+    """
     try:
-        from frp_assess.report.document import build_report
+        from reportlab.platypus.doctemplate import LayoutError
+
+        from frp_assess.report.document import CONTRACT_ERRORS, build_report
     except ImportError:
         return False
-    build_report(results, path)
+    try:
+        build_report(results, path)
+    except (LayoutError, *CONTRACT_ERRORS) as exc:
+        reason = plain(str(exc).splitlines()[0] if str(exc) else type(exc).__name__)[:160]
+        print(
+            f"frp-assess: warning: report.pdf not written: the report could not be laid out "
+            f"({reason}); the other results are complete",
+            file=sys.stderr,
+        )
+        return False
     return True
 
 
