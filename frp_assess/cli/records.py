@@ -18,7 +18,13 @@ from rich.console import Console
 from rich.table import Table
 
 from frp_assess.cli.arg_types import number_in, whole_number_in
-from frp_assess.config.schema import MAX_RECORD_DURATION, MAX_SEED, MIN_TIME_STEP
+from frp_assess.config.schema import (
+    MAX_RECORD_DURATION,
+    MAX_SEED,
+    MIN_SPECTRUM_G,
+    MIN_TIME_STEP,
+    T1_RANGE,
+)
 from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_write_text
 from frp_assess.motions.compliance import DEFAULT_T1, ComplianceReport, check_compliance
@@ -36,13 +42,25 @@ COUNT = whole_number_in(1, 100)
 SEED = whole_number_in(0, MAX_SEED)
 DURATION = number_in(0, MAX_RECORD_DURATION, low_open=True, unit="s")
 TIME_STEP = number_in(MIN_TIME_STEP, 0.05, unit="s")
-T1 = number_in(0, 10, low_open=True, unit="s")
+T1 = number_in(*T1_RANGE, unit="s")
 
 T1_HELP = (
     f"fundamental period T1 of the structure [s] for the check ranges (EC8 0.2T1-2T1, NTC "
     f"0.15 s-max(2 s, 2T1)); default {DEFAULT_T1:g} s, a choice for a rocking wall, whose "
     "apparent period grows with the amplitude"
 )
+
+
+def spectrum_arg(text: str) -> ElasticSpectrum:
+    """The spectrum of ``--spectrum``, refused (one line) when its a_g*S is below the
+    project file's smallest, :data:`~frp_assess.config.schema.MIN_SPECTRUM_G`."""
+    spectrum = parse_spectrum(text)
+    if not spectrum.pga_g >= MIN_SPECTRUM_G:
+        raise InputError(
+            f"expected a spectrum with a_g*S >= {MIN_SPECTRUM_G:g} g, found {spectrum.pga_g:g} g",
+            key="--spectrum",
+        )
+    return spectrum
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -118,7 +136,7 @@ def _positive(value: float, key: str) -> None:
 
 
 def run_generate(args: argparse.Namespace) -> int:
-    spectrum = parse_spectrum(args.spectrum)
+    spectrum = spectrum_arg(args.spectrum)
     check_out_dir(Path(args.out))
     for key in ("duration", "dt", "stationary", "t1"):
         _positive(getattr(args, key), f"--{key}")
@@ -166,7 +184,7 @@ def run_generate(args: argparse.Namespace) -> int:
 
 
 def run_check(args: argparse.Namespace) -> int:
-    spectrum = parse_spectrum(args.spectrum)
+    spectrum = spectrum_arg(args.spectrum)
     _positive(args.t1, "--t1")
     records: list[Record] = [
         read_record(f, format=args.format, units=args.units, dt=args.dt) for f in args.files

@@ -121,6 +121,10 @@ THICKNESS_RANGE = (0.05, 5.0)
 HEIGHT_RANGE = (0.5, 50.0)
 MODULUS_RANGE = (1.0, 1000.0)
 STRAIN_RANGE = (1e-4, 0.1)
+#: reference period T1 [s] of the compatibility checks (also the records command's --t1): the
+#: checks' ranges start at 0.2*T1, below T1 = 0.05 s they leave the spectra's periods (and
+#: T1 = 1e-300 never ended)
+T1_RANGE = (0.05, 10.0)
 #: periods [s] up to which a table's ordinates must reach MIN_SPECTRUM_G
 TABLE_BAND = 2.0
 #: bounds on the work one project asks for (refused before any computation, see each field)
@@ -500,11 +504,10 @@ class SeismicSpec(_Model):
         default_factory=_default_records,
         description="Accelerograms (default: 7 artificial, seed 1, 25 s, dt 0.005 s).",
     )
-    # the checks' ranges start at 0.2*T1: below T1 = 0.05 s they leave the spectra's periods
     t1: Number = Field(
         1.0,
-        ge=0.05,
-        le=10,
+        ge=T1_RANGE[0],
+        le=T1_RANGE[1],
         description="Reference period T1 [s] of the compatibility checks, 0.05-10.",
     )
 

@@ -204,3 +204,34 @@ def test_the_ends_of_the_ranges_compute(
     assert code in (0, 1), err  # 1: the records fail the compliance checks (short, one)
     assert "Traceback" not in err
     assert (out / "results.json").is_file()
+
+
+@pytest.mark.parametrize(
+    ("args", "expect"),
+    [
+        (["records", "check", "{rec}", "--spectrum", "A2", "--t1", "1e-300"], "--t1"),
+        (
+            ["records", "generate", "--spectrum", "ec8:type=1,ground=B,ag=1e-300"],
+            "expected a spectrum with a_g*S >= 0.001 g",
+        ),
+    ],
+    ids=["records-t1-1e-300", "records-ag-1e-300"],
+)
+def test_the_records_command_shares_the_ranges(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], args: list[str], expect: str
+) -> None:
+    """--t1 1e-300 never ended (check periods of 2e-301 s); a_g = 1e-300 made zero records."""
+    rec = tmp_path / "r.txt"
+    rec.write_text("".join(f"{0.01 * k:.2f} {0.1 * (-1) ** k}\n" for k in range(300)))
+    out = tmp_path / "out"
+    full = [a.replace("{rec}", str(rec)) for a in args]
+    if full[1] == "generate":
+        full += ["--count", "1", "--out", str(out)]
+    try:
+        code = main(full)
+    except SystemExit as exc:  # argparse's own refusal of a bad argument
+        code = int(str(exc.code))
+    assert code == 2
+    err = capsys.readouterr().err
+    assert expect in err and "Traceback" not in err
+    assert not out.exists()
