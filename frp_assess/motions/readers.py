@@ -32,6 +32,7 @@ import stat
 from pathlib import Path
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from frp_assess.errors import InputError
 from frp_assess.motions.record import G, Record
@@ -295,7 +296,7 @@ def read_at2(path: str | Path, *, units: str = "g", name: str | None = None) -> 
             file=str(path),
             line=4,
         )
-    return _make(path, name, dt, np.asarray(values) * factor, "PEER AT2", {"units": units})
+    return _make(path, name, dt, _in_si(values, factor, path), "PEER AT2", {"units": units})
 
 
 def read_esm(path: str | Path, *, units: str = "g", name: str | None = None) -> Record:
@@ -359,7 +360,7 @@ def read_esm(path: str | Path, *, units: str = "g", name: str | None = None) -> 
     for key in ("EVENT_NAME", "EVENT_ID", "STATION_CODE", "STREAM"):
         if header.get(key, ("", 0))[0]:
             meta[key.lower()] = header[key][0]
-    acc = np.asarray(values) * unit_factor(used_units)
+    acc = _in_si(values, unit_factor(used_units), path)
     return _make(path, name, dt, acc, "ESM ASCII", meta)
 
 
@@ -423,7 +424,7 @@ def read_two_column(path: str | Path, *, units: str = "g", name: str | None = No
         path,
         name,
         _check_dt(float(dt), path, lines_of[1]),
-        np.asarray(a) * factor,
+        _in_si(a, factor, path),
         "two-column",
         meta,
     )
@@ -461,7 +462,7 @@ def read_one_column(
     meta = {"units": units}
     if dialect:
         meta["read_as"] = dialect
-    return _make(path, name, float(dt), np.asarray(values) * factor, "one-column", meta)
+    return _make(path, name, float(dt), _in_si(values, factor, path), "one-column", meta)
 
 
 def detect_format(path: str | Path) -> str:
@@ -523,6 +524,21 @@ def read_record(
             file=str(path),
         )
     return record
+
+
+def _in_si(values: ArrayLike, factor: float, path: Path) -> np.ndarray:
+    """The samples as read times the units' factor [m/s²]; a peak beyond :data:`MAX_PEAK_G`
+    is refused before the product can overflow (1e308 in g is not a finite m/s²)."""
+    raw = np.asarray(values, dtype=float)
+    peak = float(np.max(np.abs(raw))) if raw.size else 0.0
+    peak_g = peak * factor / G  # a Python float: inf on overflow, never a warning
+    if peak_g > MAX_PEAK_G:
+        raise RecordFormatError(
+            f"expected a peak acceleration between {MIN_PEAK_G:g} g and {MAX_PEAK_G:g} g, "
+            f"found {peak_g:.3g} g (check the file and its units)",
+            file=str(path),
+        )
+    return raw * factor
 
 
 def _make(

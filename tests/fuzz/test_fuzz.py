@@ -26,6 +26,8 @@ from tests.fuzz.strategies import RECORD_NAME, budget, project_text, record_file
 RECORD = "".join(f"{0.01 * i:.2f} {0.2 * (-1) ** i * (i % 7) / 6:.4f}\n" for i in range(301))
 
 ERROR = "frp-assess: error: "
+#: a numpy warning (overflow, invalid value) is a line the user was not meant to see
+pytestmark = pytest.mark.filterwarnings("error::RuntimeWarning")
 
 
 def cli(*args: str) -> tuple[int, str]:
