@@ -341,14 +341,14 @@ def build_pdf(results: AssessmentResult, path: Path) -> bool:
     report.pdf, and the rest of the set is written (issue 25).
     """
     try:
-        from reportlab.platypus.doctemplate import LayoutError
-
-        from frp_assess.report.document import CONTRACT_ERRORS, build_report
+        from frp_assess.report.document import build_report
     except ImportError:
         return False
     try:
         build_report(results, path)
-    except (LayoutError, *CONTRACT_ERRORS) as exc:
+    except (OSError, MemoryError):  # a full disk is not the report's fault: the set fails
+        raise
+    except Exception as exc:  # reportlab's LayoutError, a table's negative width, ...
         reason = plain(str(exc).splitlines()[0] if str(exc) else type(exc).__name__)[:160]
         print(
             f"frp-assess: warning: report.pdf not written: the report could not be laid out "
