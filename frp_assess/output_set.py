@@ -7,6 +7,14 @@ A results folder holds the output set of one run — ``results.json``, ``results
 
 - **Checked first** (:func:`check_out_dir`): a folder that is a file, lies under a file, is a
   device (``/dev/null``) or cannot be written is refused with one line before any work.
+- **Missing parent folder** (the rule of every command with an output path): the output
+  itself, the results folder or the file, may be new and is created; the folder that holds
+  it must exist.  ``--out a/b/res`` with no ``a/b`` is refused with one line naming ``a/b``
+  (a typing mistake is not silently turned into a tree of new folders).
+- **No links followed** (:func:`refuse_links`): a symbolic link in the folder named like
+  one of the tool's own entries (:data:`OWN_NAMES`, a staging folder, a temporary file) is
+  refused with one line before any work: writing through it would write, replace or delete
+  outside the folder.  The ``.lock`` file is opened with ``O_NOFOLLOW`` as well.
 - **Locked** (:class:`FolderLock`): writing a set takes an exclusive ``flock`` on ``.lock``
   in the folder (the file holds the pid of the holder); ``frp-assess run`` holds it from
   before the IDA until its set is written.
@@ -45,6 +53,10 @@ from frp_assess.errors import InputError
 SET_NAMES: tuple[str, ...] = ("results.csv", "spectra.csv", "records", "report.pdf", "results.json")
 LOCK_NAME = ".lock"
 STAGING_PREFIX = ".staging-"
+#: the IDA cache folder inside a results folder (as frp_assess.api.CACHE_DIR)
+CACHE_NAME = ".cache"
+#: every entry the tool makes in a results folder (beside staging folders and temporary files)
+OWN_NAMES: tuple[str, ...] = (LOCK_NAME, CACHE_NAME, *SET_NAMES)
 
 #: folders locked by this process -> the thread holding the lock (re-entrant in that thread)
 _held: dict[Path, int] = {}
@@ -70,11 +82,63 @@ def _writable(directory: Path) -> bool:
         return False
 
 
+def _is_own_name(name: str) -> bool:
+    """Whether ``name`` is an entry the tool makes in a results folder: one of
+    :data:`OWN_NAMES`, a staging folder or a temporary file of an atomic write."""
+    if name in OWN_NAMES or name.startswith(STAGING_PREFIX):
+        return True
+    return name.startswith(".") and name.endswith(".tmp")
+
+
+def refuse_links(directory: Path, key: str = "--out") -> None:
+    """One :class:`InputError` line if ``directory`` holds a symbolic link named like one of
+    the tool's own entries (:func:`_is_own_name`); nothing if it does not exist yet.
+
+    The tool never writes, replaces or deletes through a link it did not make: such a folder
+    is refused before any work, and the user removes the link (or chooses another folder).
+    """
+    try:
+        entries = sorted(os.scandir(directory), key=lambda e: e.name)
+    except OSError:
+        return
+    for entry in entries:
+        if _is_own_name(entry.name) and entry.is_symlink():
+            raise InputError(
+                f"{Path(directory) / entry.name} is a symbolic link; frp-assess writes its own "
+                f"{entry.name} there and never follows a link it did not make: remove the link "
+                "or choose another folder",
+                key=key,
+            )
+
+
+def missing_parent(path: Path) -> Path | None:
+    """The missing folder that should hold ``path`` (the parent of the output), or None if
+    it exists (or lies under a file, which the callers say in their own words)."""
+    parent = Path(path).parent
+    if os.path.lexists(parent):
+        return None
+    existing = _nearest_existing(parent)
+    return parent if existing.is_dir() else None
+
+
+def check_parent(path: Path, key: str = "--out") -> None:
+    """One :class:`InputError` line if the folder that should hold ``path`` does not exist
+    (the rule of every command with an output path: see the module docstring)."""
+    parent = missing_parent(path)
+    if parent is not None:
+        raise InputError(
+            f"the folder {parent} does not exist; create it first (frp-assess creates only "
+            f"{Path(path).name}, not the folders above it)",
+            key=key,
+        )
+
+
 def check_out_dir(path: Path, key: str = "--out") -> Path:
     """``path`` if it can hold a results folder, else one :class:`InputError` line saying why.
 
-    Nothing is created: a folder that does not exist yet is fine if its nearest existing
-    parent is a writable folder.
+    Nothing is created: a folder that does not exist yet is fine if its parent is a writable
+    folder (a missing parent is refused, :func:`check_parent`).  An existing folder holding a
+    symbolic link named like one of the tool's entries is refused (:func:`refuse_links`).
     """
     path = Path(path)
     shown = str(path)
@@ -92,6 +156,8 @@ def check_out_dir(path: Path, key: str = "--out") -> Path:
     if not _writable(existing):
         where = "" if existing == path else f" (its parent {existing})"
         raise InputError(f"{shown}{where} is not writable", key=key)
+    check_parent(path, key)
+    refuse_links(path, key)
     return path
 
 
@@ -117,9 +183,10 @@ class FolderLock:
                 "to finish or choose another folder",
                 key=self.key,
             )
+        refuse_links(d, self.key)
         try:
             d.mkdir(parents=True, exist_ok=True)
-            fd = os.open(d / LOCK_NAME, os.O_RDWR | os.O_CREAT, 0o644)
+            fd = os.open(d / LOCK_NAME, os.O_RDWR | os.O_CREAT | os.O_NOFOLLOW, 0o644)
         except OSError as exc:
             raise InputError(
                 f"cannot use {d} as the results folder: {exc.strerror}", key=self.key
@@ -141,6 +208,11 @@ class FolderLock:
         self._fd = fd
         with _held_guard:
             _held[real] = threading.get_ident()
+        try:
+            refuse_links(d, self.key)  # a link made between the check and the lock
+        except InputError:
+            self.__exit__(None, None, None)
+            raise
         remove_leftovers(d)
         return self
 
@@ -249,6 +321,7 @@ def check_out_file(path: Path, key: str = "--out") -> Path:
     existing = _nearest_existing(parent)
     if not existing.is_dir():
         raise InputError(f"{path} lies under {existing}, which is a file, not a folder", key=key)
+    check_parent(path, key)
     if not _writable(existing):
         raise InputError(f"{path}: {existing} is not writable", key=key)
     return path

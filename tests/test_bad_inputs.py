@@ -168,7 +168,7 @@ ROWS: list[Row] = [
     validate(
         "bars-catalogue-area",
         BASE + "bars:\n  catalogue:\n    - {material: GFRP, diameter: 12, area: -1}\n",
-        "expected a number in (0, 2000], found -1",
+        "expected a number in [0.5, 2000], found -1",
         18,
         "bars.catalogue[0].area",
     ),
@@ -418,7 +418,7 @@ ROWS: list[Row] = [
             "mechanism: sideways",
             sub("height: 3.0", "height: .inf", sub("thickness: 0.3", "thickness: -1")),
         ),
-        "expected a number in (0, 5], found -1",
+        "expected a number in [0.05, 5], found -1",
         3,
         "wall.thickness",
         problems=3,
@@ -1104,7 +1104,7 @@ ROWS: list[Row] = [
     validate(
         "compressive-strength-zero",
         sub("  masonry: rubble-stone\n", "  masonry: rubble-stone\n  compressive_strength: 0\n"),
-        "expected a number in (0, 100], found 0",
+        "expected a number in [0.1, 100], found 0",
         7,
         "wall.compressive_strength",
     ),

@@ -8,6 +8,7 @@ run into a folder the user picks (the TUI's export).
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -69,12 +70,28 @@ def _is_plain_file_name(name: str) -> bool:
 
 
 def build_pdf(results: AssessmentResult, path: Path) -> bool:
-    """Build the PDF report if the report package is installed; returns whether it did."""
+    """Build the PDF report if the report package is installed; returns whether it did.
+
+    A report that cannot be laid out (a table too wide for the page: 100 records, a name of
+    hundreds of characters) does not throw the analysis away: one warning line, no
+    report.pdf, and the rest of the set is written (issue 25).
+    """
     try:
         from frp_assess.report.document import build_report
     except ImportError:
         return False
-    build_report(results, path)
+    try:
+        build_report(results, path)
+    except (OSError, MemoryError):  # a full disk is not the report's fault: the set fails
+        raise
+    except Exception as exc:  # reportlab's LayoutError, a table's negative width, ...
+        reason = plain(str(exc).splitlines()[0] if str(exc) else type(exc).__name__)[:160]
+        print(
+            f"frp-assess: warning: report.pdf not written: the report could not be laid out "
+            f"({reason}); the other results are complete",
+            file=sys.stderr,
+        )
+        return False
     return True
 
 
@@ -113,7 +130,7 @@ def rebuild_report(results_dir: Path, out: Path | None = None) -> Path:
     results = load_results(results_dir)  # InputError -> one line, exit 2
     try:
         story = build_story(results)  # a value that breaks the contract fails here
-        if out.resolve().parent == results_dir.resolve():
+        if out.parent.resolve() == results_dir.resolve():  # never follow a linked report.pdf
             with FolderLock(results_dir, key="RESULTS_DIR"):
                 build_report(results, out, story=story)
         else:

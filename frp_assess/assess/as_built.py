@@ -88,6 +88,31 @@ def choose_layout(
             installs the ratio within the spacing rule (key ``ratio``); the message says what
             can be installed.
     """
+    lay = _choose_layout(bars, thickness, length, material, position, ratio, diameter)
+    if lay.ratio_installed > MAX_INSTALLED_RATIO:  # the model's range (dynamics.rebars)
+        raise InputError(
+            f"{ratio:g} ‰ is built as {lay.ratio_installed:.3g} ‰ (the fewest bars "
+            f"Ø{lay.diameter:g} within bars.max_spacing = {bars.max_spacing:g} m on a wall "
+            f"{thickness:g} m thick), more than the model's {MAX_INSTALLED_RATIO:g} ‰; widen "
+            "bars.max_spacing or use smaller bars",
+            key="ratio",
+        )
+    return lay
+
+
+#: the largest ratio [‰] the rocking model takes (frp_assess.dynamics.rebars.Rebars)
+MAX_INSTALLED_RATIO = 20.0
+
+
+def _choose_layout(
+    bars: BarSettings,
+    thickness: float,
+    length: float,
+    material: str,
+    position: Position,
+    ratio: float,
+    diameter: float | None = None,
+) -> BarLayout:
     sizes = sizes_for(bars, material)
     if diameter is not None:
         try:

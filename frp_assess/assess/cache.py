@@ -198,14 +198,18 @@ class IdaCache:
     An entry is used only if it is a regular file (not a folder, symlink or device) of at
     most :data:`MAX_ENTRY_BYTES` that :func:`parse_entry` accepts; anything else is removed
     with one warning line (``warn``, default stderr) and the IDA is computed again.  A
-    ``.cache`` that is not a folder is replaced by one, with a warning.
+    ``.cache`` that is not a folder, or is a symbolic link (never followed), is replaced by
+    an empty folder, with a warning.
     """
 
     def __init__(self, directory: Path | None, warn: Callable[[str], None] | None = None) -> None:
         self.directory = directory
         self.warn = warn or _warn_stderr
         if directory is not None:
-            if os.path.lexists(directory) and not directory.is_dir():
+            if directory.is_symlink():  # never follow it: the cache would be written elsewhere
+                self.warn(f"{directory} is a symbolic link; replacing it with an empty cache")
+                _remove(directory)
+            elif os.path.lexists(directory) and not directory.is_dir():
                 self.warn(f"{directory} is not a folder; replacing it with an empty cache")
                 _remove(directory)
             directory.mkdir(parents=True, exist_ok=True)

@@ -30,6 +30,7 @@ from frp_assess.assess.inputs import (
 from frp_assess.assess.wall_model import base_problem
 from frp_assess.config import MASONRY, FrpMaterial, LoadedProject, Project, load_project
 from frp_assess.config.messages import Loc, format_path, line_of
+from frp_assess.config.plausibility import project_warnings
 from frp_assess.config.problems import problems_of, raise_all
 from frp_assess.config.schema import (
     BarsSpec,
@@ -284,13 +285,15 @@ def load_inputs(
     if warn is not None:
         for line in loaded.warnings:
             warn(line)
-    return inputs_from_project(
+    inputs = inputs_from_project(
         loaded.project,
         loaded.base_dir,
         str(loaded.path.name),
         lines=loaded.lines,
         file=str(loaded.path),
     )
+    warnings = tuple(w.text() for w in project_warnings(loaded.project))
+    return replace(inputs, warnings=warnings) if warnings else inputs
 
 
 def layout_problems(loaded: LoadedProject) -> list[InputError]:

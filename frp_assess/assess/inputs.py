@@ -203,6 +203,9 @@ class AssessmentInputs:
     building: Building | None = None
     project: dict[str, str] = field(default_factory=dict)
     input_file: str = ""
+    #: the project's values outside the range of practice, ``key: message`` each
+    #: (:mod:`frp_assess.config.plausibility`); stored in results.json's input_warnings
+    warnings: tuple[str, ...] = ()
     bars: BarSettings = BarSettings(design_values=False, whole_bars=False)
     #: the site's hazard when the spectrum is given by coordinates (docs/site-hazard.md), and
     #: the limit state whose a_g, F0, T_C* make ``spectrum``

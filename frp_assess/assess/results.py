@@ -502,7 +502,7 @@ def build_results(
         numerical_check=None
         if numerical_check is None
         else numerical_check_result(numerical_check, cases, seismic),
-        input_warnings=tuple(seismic.warnings),
+        input_warnings=(*inputs.warnings, *seismic.warnings),
         # false: the records fail the code's spectrum-compatibility checks; the CLI, TUI and
         # report then call the rank-1 option "best ranked", never "recommended"
         input_code_compliant=bool(seismic.compliance.passed),

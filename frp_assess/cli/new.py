@@ -9,6 +9,7 @@ from frp_assess.app.project import new_project_text
 from frp_assess.cli.output import plain_line
 from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_write_text
+from frp_assess.output_set import check_parent
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -29,6 +30,7 @@ def run(args: argparse.Namespace) -> int:
         raise InputError(f"{path} already exists; use --force to overwrite it")
     if path.is_dir():
         raise InputError(f"{path} is a directory")
+    check_parent(path, key="NAME.yaml")
     text = new_project_text(path)
     try:
         atomic_write_text(path, text)

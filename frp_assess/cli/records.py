@@ -28,15 +28,22 @@ from frp_assess.app.records import (
     read_records,
 )
 from frp_assess.cli.arg_types import number_in, whole_number_in
-from frp_assess.config.schema import MAX_RECORD_DURATION, MAX_SEED, MIN_TIME_STEP
+from frp_assess.config.schema import (
+    MAX_RECORD_DURATION,
+    MAX_SEED,
+    MIN_SPECTRUM_G,
+    MIN_TIME_STEP,
+    T1_RANGE,
+)
 from frp_assess.errors import InputError
+from frp_assess.output_set import check_out_dir
 
 #: bounds of the arguments (those of the project file's schema)
 COUNT = whole_number_in(1, 100)
 SEED = whole_number_in(0, MAX_SEED)
 DURATION = number_in(0, MAX_RECORD_DURATION, low_open=True, unit="s")
 TIME_STEP = number_in(MIN_TIME_STEP, 0.05, unit="s")
-T1 = number_in(0, 10, low_open=True, unit="s")
+T1 = number_in(*T1_RANGE, unit="s")
 
 T1_HELP = (
     f"fundamental period T1 of the structure [s] for the check ranges (EC8 0.2T1-2T1, NTC "
@@ -117,8 +124,21 @@ def _positive(value: float, key: str) -> None:
         raise InputError(f"expected a number > 0, found {value:g}", key=key)
 
 
+def spectrum_arg(text: str) -> ElasticSpectrum:
+    """The spectrum of ``--spectrum``, refused (one line) when its a_g*S is below the
+    project file's smallest, :data:`~frp_assess.config.schema.MIN_SPECTRUM_G`."""
+    spectrum = parse_spectrum(text)
+    if not spectrum.pga_g >= MIN_SPECTRUM_G:
+        raise InputError(
+            f"expected a spectrum with a_g*S >= {MIN_SPECTRUM_G:g} g, found {spectrum.pga_g:g} g",
+            key="--spectrum",
+        )
+    return spectrum
+
+
 def run_generate(args: argparse.Namespace) -> int:
-    spectrum = parse_spectrum(args.spectrum)
+    spectrum = spectrum_arg(args.spectrum)
+    check_out_dir(Path(args.out))
     for key in ("duration", "dt", "stationary", "t1"):
         _positive(getattr(args, key), f"--{key}")
     if args.count < 1:
@@ -152,7 +172,7 @@ def run_generate(args: argparse.Namespace) -> int:
 
 
 def run_check(args: argparse.Namespace) -> int:
-    spectrum = parse_spectrum(args.spectrum)
+    spectrum = spectrum_arg(args.spectrum)
     _positive(args.t1, "--t1")
     records, warnings = read_records(args.files, format=args.format, units=args.units, dt=args.dt)
     for warning in warnings:

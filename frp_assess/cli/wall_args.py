@@ -22,6 +22,14 @@ from frp_assess.app.expert import (
 )
 from frp_assess.app.records import FORMATS, UNITS
 from frp_assess.cli.arg_types import number_in
+from frp_assess.config.schema import (
+    HEIGHT_RANGE,
+    MAX_RATIO,
+    MIN_RATIO,
+    MODULUS_RANGE,
+    STRAIN_RANGE,
+    THICKNESS_RANGE,
+)
 from frp_assess.dynamics.options import (
     FREE_VIBRATION_TAIL,
     INTEGRATION_TOLERANCE,
@@ -33,12 +41,12 @@ from frp_assess.dynamics.options import (
 from frp_assess.errors import InputError
 
 #: bounds of the command-line wall (those of the project file's schema)
-THICKNESS = number_in(0, 5, low_open=True, unit="m")
-HEIGHT = number_in(0, 50, low_open=True, unit="m")
+THICKNESS = number_in(*THICKNESS_RANGE, unit="m")
+HEIGHT = number_in(*HEIGHT_RANGE, unit="m")
 UNIT_WEIGHT = number_in(5, 30, unit="kN/m³")
-MODULUS = number_in(0, 1000, low_open=True, unit="GPa")
-STRAIN = number_in(0, 1, low_open=True)
-RATIO = number_in(0, 20, low_open=True, unit="‰")
+MODULUS = number_in(*MODULUS_RANGE, unit="GPa")
+STRAIN = number_in(*STRAIN_RANGE)
+RATIO = number_in(MIN_RATIO, MAX_RATIO, unit="‰")
 
 
 def add_model_arguments(parser: argparse.ArgumentParser) -> None:

@@ -19,6 +19,7 @@ import yaml
 from pydantic import ValidationError
 
 from frp_assess.config.messages import Loc, format_path, line_of, schema_problems
+from frp_assess.config.plausibility import project_warnings
 from frp_assess.config.problems import raise_all
 from frp_assess.config.schema import Project
 from frp_assess.config.yaml_source import parse_yaml, read_text_file
@@ -35,7 +36,8 @@ class LoadedProject:
         base_dir: directory that relative record paths are resolved against.
         lines: 1-based line of each key path of the YAML data.
         warnings: one line each (``file:line: key: message``) for what is valid but probably
-            not meant, such as the template's placeholders left unchanged.
+            not meant: the template's placeholders left unchanged, values outside the range of
+            practice (:mod:`frp_assess.config.plausibility`).
     """
 
     project: Project
@@ -142,7 +144,10 @@ def load_parsed(
         path=Path(name),
         base_dir=base,
         lines=lines,
-        warnings=placeholder_warnings(project, name, lines),
+        warnings=(
+            *placeholder_warnings(project, name, lines),
+            *(w.located(name, lines) for w in project_warnings(project)),
+        ),
     )
 
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import datetime as _dt
 import functools
+import math
 from pathlib import PurePath
 from typing import Annotated, Any, Literal, get_args
 
@@ -75,6 +76,12 @@ MAX_RATIO = 20.0
 #: the largest bar diameter [mm] and area [mm²] accepted
 MAX_BAR_DIAMETER = 50.0
 MAX_BAR_AREA = 2000.0
+MIN_BAR_DIAMETER = 1.0
+#: smallest ratio [‰] of an option: below it the bars carry nothing measurable (the
+#: plausibility warning starts at 0.1 ‰)
+MIN_RATIO = 0.001
+#: smallest spacing between bar axes [m]: two drilled holes need about 20 mm between axes
+MIN_SPACING = 0.02
 #: exposure of the bars (CNR-DT 200 R1/2013 Table 3.2) and fibres of its η_a
 Exposure = Literal["internal", "external", "aggressive"]
 Fibre = Literal["glass", "carbon", "aramid", "basalt"]
@@ -106,6 +113,27 @@ FreeText = Annotated[str, BeforeValidator(_to_text)]
 #: an integer of the file (a float such as 7.0 or 1e400 is refused)
 WholeNumber = Annotated[int, Strict()]
 
+#: The range of every number below is the range the model is valid for (refused outside, with
+#: the file's line); each bound is written once, on its field, with its unit and its reason.
+#: Values inside the range but outside the range of practice give a warning instead
+#: (frp_assess.config.plausibility).
+#: smallest a_g [g] of a code spectrum and smallest largest ordinate of a table [g]: below
+#: 0.001 g there is no seismic action to assess, and records scaled to it lose their digits
+MIN_SPECTRUM_G = 0.001
+#: ranges shared with the command line's wall and bar options (cli/wall_args.py), [low, high]:
+#: thickness B [m] (below 50 mm no masonry leaf stands, a brick on edge is 55-60 mm), height H
+#: [m] (below 0.5 m the wall is a block, not a rocking panel), E [GPa] and eps_u [-] of a bar
+#: (FRP bars: 30-250 GPa, 0.005-0.035; a bar softer than 1 GPa or breaking at 0.01 % is none)
+THICKNESS_RANGE = (0.05, 5.0)
+HEIGHT_RANGE = (0.5, 50.0)
+MODULUS_RANGE = (1.0, 1000.0)
+STRAIN_RANGE = (1e-4, 0.1)
+#: reference period T1 [s] of the compatibility checks (also the records command's --t1): the
+#: checks' ranges start at 0.2*T1, below T1 = 0.05 s they leave the spectra's periods (and
+#: T1 = 1e-300 never ended)
+T1_RANGE = (0.05, 10.0)
+#: periods [s] up to which a table's ordinates must reach MIN_SPECTRUM_G
+TABLE_BAND = 2.0
 #: bounds on the work one project asks for (refused before any computation, see each field)
 MAX_OPTIONS = 2000  #: retrofit options after the sweeps are expanded
 MAX_RECORD_DURATION = 600.0  #: [s] longest artificial record
@@ -188,15 +216,22 @@ class ProjectInfo(_Model):
 class WallSpec(_Model):
     """The masonry wall, a rigid rocking block (docs/model.md §1)."""
 
-    thickness: Number = Field(gt=0, le=5, description="Thickness B [m], 0 < B <= 5, < height.")
-    height: Number = Field(
-        gt=0, le=50, description="Height H [m] above the rocking base, 0 < H <= 50."
+    thickness: Number = Field(  # the ranges' reasons: at THICKNESS_RANGE
+        ge=THICKNESS_RANGE[0],
+        le=THICKNESS_RANGE[1],
+        description="Thickness B [m], 0.05 <= B <= 5, < height.",
     )
+    height: Number = Field(
+        ge=HEIGHT_RANGE[0],
+        le=HEIGHT_RANGE[1],
+        description="Height H [m] above the rocking base, 0.5 <= H <= 50.",
+    )
+    # below 0.1 m no bar fits: a length shorter than one bar spacing has no layout
     length: Number = Field(
         1.0,
-        gt=0,
+        ge=0.1,
         le=1000,
-        description="Length L [m] of the wall, for quantities and costs, 0 < L <= 1000 "
+        description="Length L [m] of the wall, for quantities and costs, 0.1 <= L <= 1000 "
         "(default 1).",
     )
     masonry: str | None = Field(
@@ -208,11 +243,12 @@ class WallSpec(_Model):
     unit_weight: Number | None = Field(
         None, ge=5.0, le=30.0, description="Unit weight w [kN/m3], 5-30; wins over masonry."
     )
+    # the weakest masonry of Tab. C8.5.I has 1.0 MPa; below 0.1 MPa no wall carries itself
     compressive_strength: Number | None = Field(
         None,
-        gt=0,
+        ge=0.1,
         le=100,
-        description="Compressive strength f_m of the masonry [MPa], 0-100; wins over the "
+        description="Compressive strength f_m of the masonry [MPa], 0.1-100; wins over the "
         "masonry type's value of Tab. C8.5.I (LC1: minimum, LC2/LC3: mean).  Divided by FC of "
         "code_check.knowledge_level, it sizes the compressed zone at the pivot.",
     )
@@ -278,14 +314,16 @@ class Ntc2018Spectrum(_Model):
     NTC reference grid, NTC 2018 §3.2 and NTC 2008 Allegati A/B; docs/site-hazard.md)."""
 
     type: Literal["ntc2018"] = Field(description="Spectrum kind.")
-    ag: Annotated[Number, Field(gt=0, le=1.5)] | None = Field(
-        None, description="a_g [g] on rock, 0 < a_g <= 1.5."
+    ag: Annotated[Number, Field(ge=MIN_SPECTRUM_G, le=1.5)] | None = Field(
+        None, description=f"a_g [g] on rock, {MIN_SPECTRUM_G:g} <= a_g <= 1.5."
     )
-    F0: Annotated[Number, Field(gt=0, le=5.0)] | None = Field(
-        None, description="F0 [-], maximum amplification on rock."
+    # F0 is an amplification of the ground motion: at least 1 (NTC's grid: 2.2-3)
+    F0: Annotated[Number, Field(ge=1.0, le=5.0)] | None = Field(
+        None, description="F0 [-], maximum amplification on rock, 1-5."
     )
-    Tc_star: Annotated[Number, Field(gt=0, le=3.0)] | None = Field(
-        None, description="T_C* [s], start of the velocity branch."
+    # T_C* of the NTC grid is 0.15-0.6 s; below 0.05 s the plateau vanishes
+    Tc_star: Annotated[Number, Field(ge=0.05, le=3.0)] | None = Field(
+        None, description="T_C* [s], start of the velocity branch, 0.05-3."
     )
     site: SiteCoordinates | None = Field(
         None,
@@ -381,7 +419,11 @@ class Ec8Spectrum(_Model):
     """EN 1998-1 §3.2.2.2 elastic spectrum."""
 
     type: Literal["ec8"] = Field(description="Spectrum kind.")
-    ag: Number = Field(gt=0, le=1.5, description="a_g [g] on type A ground, 0 < a_g <= 1.5.")
+    ag: Number = Field(
+        ge=MIN_SPECTRUM_G,
+        le=1.5,
+        description=f"a_g [g] on type A ground, {MIN_SPECTRUM_G:g} <= a_g <= 1.5.",
+    )
     ground: GroundType = Field(description="Ground type A-E (Table 3.2/3.3).")
     spectrum_type: Literal[1, 2] = Field(1, description="1 (M_s > 5.5) or 2.")
     damping: Number = Field(0.05, gt=0, lt=1, description="Viscous damping ratio [-] (0.05).")
@@ -417,6 +459,16 @@ class TableSpectrum(_Model):
                 f"found {len(self.accelerations)}",
                 "accelerations",
             )
+        for i, (t, se) in enumerate(zip(self.periods, self.accelerations, strict=True)):
+            # Se(T0) is the a_g*S the records are scaled to; up to 2 s it shapes the records
+            if (i == 0 or t <= TABLE_BAND) and se < MIN_SPECTRUM_G:
+                raise located_error(
+                    f"expected Se >= {MIN_SPECTRUM_G:g} g at the first period and at every "
+                    f"period up to {TABLE_BAND:g} s (the band the records are made for), "
+                    f"found {se:g} at T = {t:g} s",
+                    "accelerations",
+                    i,
+                )
         for i in range(1, len(self.periods)):
             if self.periods[i] <= self.periods[i - 1]:
                 raise located_error(
@@ -561,7 +613,10 @@ class SeismicSpec(_Model):
         description="Accelerograms (default: 7 artificial, seed 1, 25 s, dt 0.005 s).",
     )
     t1: Number = Field(
-        1.0, gt=0, le=10, description="Reference period T1 [s] of the compatibility checks."
+        1.0,
+        ge=T1_RANGE[0],
+        le=T1_RANGE[1],
+        description="Reference period T1 [s] of the compatibility checks, 0.05-10.",
     )
 
 
@@ -573,9 +628,17 @@ class MaterialSpec(_Model):
     elastic_modulus, ultimate_strain, density and price.
     """
 
-    elastic_modulus: Number | None = Field(None, gt=0, le=1000, description="E [GPa].")
-    ultimate_strain: Number | None = Field(None, gt=0, lt=1, description="eps_u [-].")
-    density: Number | None = Field(None, gt=0, le=10000, description="Density [kg/m3].")
+    # FRP bars: E 30-250 GPa, eps_u 0.005-0.035, density 1400-2600 kg/m3; the ranges are
+    # what any bar material can be (see MODULUS_RANGE; no bar is lighter than 100 kg/m3)
+    elastic_modulus: Number | None = Field(
+        None, ge=MODULUS_RANGE[0], le=MODULUS_RANGE[1], description="E [GPa], 1-1000."
+    )
+    ultimate_strain: Number | None = Field(
+        None, ge=STRAIN_RANGE[0], le=STRAIN_RANGE[1], description="eps_u [-], 0.0001-0.1."
+    )
+    density: Number | None = Field(
+        None, ge=100, le=10000, description="Density [kg/m3], 100-10000."
+    )
     price: Number | None = Field(
         None, ge=0, le=1e6, description="Indicative price [currency/kg], 0-1e6."
     )
@@ -586,8 +649,8 @@ class MaterialSpec(_Model):
     )
     characteristic_strain: Number | None = Field(
         None,
-        gt=0,
-        lt=1,
+        ge=STRAIN_RANGE[0],
+        le=STRAIN_RANGE[1],
         description="Characteristic rupture strain eps_fk [-] (5 % fractile, producer's data "
         "sheet); default eps_u*(1 - 1.645*0.10) (docs/model.md §2.1).",
     )
@@ -604,9 +667,16 @@ class BarSizeSpec(_Model):
     """A bar size added to the built-in catalogue (nominal diameters 6-16 mm, area pi*d^2/4)."""
 
     material: str = Field(description="Material: a library key or one of 'materials'.")
-    diameter: Number = Field(gt=0, le=MAX_BAR_DIAMETER, description="Nominal diameter d [mm].")
+    # no bar is thinner than 1 mm (the catalogue starts at 6 mm)
+    diameter: Number = Field(
+        ge=MIN_BAR_DIAMETER,
+        le=MAX_BAR_DIAMETER,
+        description=f"Nominal diameter d [mm], {MIN_BAR_DIAMETER:g}-{MAX_BAR_DIAMETER:g}.",
+    )
     area: Number = Field(
-        gt=0, le=MAX_BAR_AREA, description="Nominal area [mm2] (the producer's data sheet)."
+        ge=0.5,
+        le=MAX_BAR_AREA,
+        description=f"Nominal area [mm2] (the producer's data sheet), 0.5-{MAX_BAR_AREA:g}.",
     )
     source: FreeText = Field(
         "user input",
@@ -618,18 +688,22 @@ class BarSizeSpec(_Model):
 class AnchorageSpec(_Model):
     """Bond of the bars in resin-filled holes, for the anchorage length and the pull-out cone."""
 
+    # a bond below 0.01 MPa anchors nothing (lengths of kilometres); the resin needs a
+    # clearance of at least 0.1 mm around the bar
     hole_clearance: Number = Field(
-        gt=0, le=50, description="Hole diameter minus bar diameter [mm] (d_h = d + clearance)."
+        ge=0.1,
+        le=50,
+        description="Hole diameter minus bar diameter [mm] (d_h = d + clearance), 0.1-50.",
     )
     bond_bar: Number = Field(
-        gt=0, le=50, description="Bond strength bar-resin tau_b [MPa] (producer's tests)."
+        ge=0.01, le=50, description="Bond strength bar-resin tau_b [MPa] (producer's tests)."
     )
     bond_masonry: Number = Field(
-        gt=0, le=10, description="Bond strength resin-masonry tau_m [MPa] (pull-out tests)."
+        ge=0.01, le=10, description="Bond strength resin-masonry tau_m [MPa] (pull-out tests)."
     )
     tensile_strength: Number | None = Field(
         None,
-        gt=0,
+        ge=0.001,
         le=10,
         description="Tensile strength f_t of the masonry for the pull-out cone [MPa] "
         "(default 1.5*tau_0d of wall.masonry and the knowledge level).",
@@ -655,10 +729,16 @@ class BarsSpec(_Model):
         "ratio asked, smeared (the paper).",
     )
     min_spacing: Number = Field(
-        0.10, gt=0, le=10, description="Smallest spacing between bar axes [m] (0.10)."
+        0.10,
+        ge=MIN_SPACING,
+        le=10,
+        description=f"Smallest spacing between bar axes [m], {MIN_SPACING:g}-10 (0.10).",
     )
     max_spacing: Number = Field(
-        1.0, gt=0, le=10, description="Largest spacing between bar axes [m] (1.0)."
+        1.0,
+        ge=MIN_SPACING,
+        le=10,
+        description=f"Largest spacing between bar axes [m], {MIN_SPACING:g}-10 (1.0).",
     )
     catalogue: list[BarSizeSpec] = Field(
         default_factory=list,
@@ -692,7 +772,7 @@ class BarsSpec(_Model):
 
 
 # -------------------------------------------------------------------------- interventions
-Ratio = Annotated[Number, Field(gt=0, le=MAX_RATIO)]
+Ratio = Annotated[Number, Field(ge=MIN_RATIO, le=MAX_RATIO)]
 
 
 class Intervention(_Model):
@@ -706,10 +786,12 @@ class Intervention(_Model):
     )
     material: str = Field(description="Material: a library key or one of 'materials'.")
     position: Position = Field(description="centred (one bar) | external (one on each face).")
-    ratio: Ratio = Field(description="Ratio rho [per mille] of the active bars, 0 < rho <= 20.")
+    ratio: Ratio = Field(
+        description=f"Ratio rho [per mille] of the active bars, {MIN_RATIO:g}-{MAX_RATIO:g}."
+    )
     diameter: Number | None = Field(
         None,
-        gt=0,
+        ge=MIN_BAR_DIAMETER,
         le=MAX_BAR_DIAMETER,
         description="Bar diameter d [mm], from the catalogue (default: the size installing "
         "the least ratio within the spacing rule).",
@@ -721,7 +803,9 @@ class SweepAxes(_Model):
 
     material: list[str] = Field(min_length=1, description="Materials (library or 'materials').")
     position: list[Position] = Field(min_length=1, description="Positions: centred, external.")
-    ratio: list[Ratio] = Field(min_length=1, description="Ratios [per mille], 0 < rho <= 20.")
+    ratio: list[Ratio] = Field(
+        min_length=1, description=f"Ratios [per mille], {MIN_RATIO:g}-{MAX_RATIO:g}."
+    )
 
 
 class Sweep(_Model):
@@ -825,11 +909,12 @@ class AnalysisSpec(ModelOptionsSpec):
         default_factory=IntegrationSpec, description="Time integration."
     )
     ida: IdaSpec = Field(default_factory=IdaSpec, description="IDA rule.")
+    # a required capacity/demand below 0.01 accepts any wall
     target: Number = Field(
         1.0,
-        gt=0,
+        ge=0.01,
         le=10,
-        description="Required mean capacity/demand, mean a_dyn/(a_g*S), 0-10 (1.0).",
+        description="Required mean capacity/demand, mean a_dyn/(a_g*S), 0.01-10 (1.0).",
     )
 
 
@@ -844,7 +929,8 @@ class DesignSpec(_Model):
         description="Positions (both by default).",
     )
     ratio_range: tuple[Ratio, Ratio] = Field(
-        (0.5, 5.0), description="Search range [per mille], 0 < low < high <= 20."
+        (0.5, 5.0),
+        description=f"Search range [per mille], {MIN_RATIO:g} <= low < high <= {MAX_RATIO:g}.",
     )
     resolution: Number = Field(
         0.05, ge=0.001, le=1, description="Resolution [per mille], 0.001-1 (0.05)."
@@ -855,6 +941,13 @@ class DesignSpec(_Model):
         lo, hi = self.ratio_range
         if not lo < hi:
             raise located_error(f"expected low < high, found [{lo:g}, {hi:g}]", "ratio_range")
+        res = self.resolution  # the search runs on the multiples of the resolution
+        if math.floor(hi / res + 1e-9) < math.ceil(lo / res - 1e-9):
+            raise located_error(
+                f"expected a range holding a multiple of the resolution {res:g} ‰, found "
+                f"[{lo:g}, {hi:g}]",
+                "ratio_range",
+            )
         return self
 
 
@@ -897,23 +990,31 @@ class BuildingSpec(_Model):
     """Where the wall stands in the building: its base moves with the floor at Z
     (first mode only, Circolare 2019 §C7.2.3; docs/model.md §9)."""
 
+    # one storey is at least 2 m high
     height: Number = Field(
-        gt=0, le=200, description="H_b [m], height of the building above the foundation, 0-200."
+        ge=2,
+        le=200,
+        description="H_b [m], height of the building above the foundation, 2-200.",
     )
     storeys: WholeNumber = Field(ge=1, le=60, description="n, number of storeys, 1-60.")
     wall_base: Number = Field(
         ge=0,
         description="Z [m], height of the wall's rocking base above the foundation, 0 <= Z < H_b.",
     )
+    # below 0.02 s the floor moves as the ground (the default for H_b = 2 m is 0.08 s)
     period: Number | None = Field(
         None,
-        gt=0,
+        ge=0.02,
         le=5,
-        description="T1 [s], fundamental period of the building, 0-5; default "
+        description="T1 [s], fundamental period of the building, 0.02-5; default "
         "0.05*H_b^0.75 (Circolare 2019 eq. C7.3.2, masonry).",
     )
+    # below 0.5 % no building is damped (steel frames have about 2 %)
     damping: Number = Field(
-        0.05, gt=0, le=0.3, description="xi of the building's first mode [-], 0-0.3 (0.05)."
+        0.05,
+        ge=0.005,
+        le=0.3,
+        description="xi of the building's first mode [-], 0.005-0.3 (0.05).",
     )
 
     @model_validator(mode="after")

@@ -196,9 +196,10 @@ STRAIN_FACTOR: Option[float] = Option(
     flag="--strain-factor",
     default=DEFAULT_STRAIN_FACTOR,
     help="Cyclic reduction c of the bars' ultimate strain, eps_max = c*eps_u",
-    low=0.0,
+    # below 0.01 the bars break at the first rocking (the unreinforced wall, and a strain
+    # limit that underflows); in practice 0.5-1
+    low=0.01,
     high=1.0,
-    low_open=True,
 )
 VERIFY: Option[bool] = Option(
     key="verify",

@@ -32,6 +32,7 @@ import stat
 from pathlib import Path
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from frp_assess.errors import InputError
 from frp_assess.motions.record import G, Record
@@ -63,6 +64,13 @@ MAX_RECORD_BYTES = 50_000_000
 MAX_SAMPLES = 2_000_000
 #: smallest time step [s] (as the project file's; a smaller one is a unit or header mistake)
 MIN_DT = 1e-4
+#: smallest and largest peak [g] of a record that is read at all.  Outside them no units
+#: make sense of the file (a PGA of 1e-6 g is below any instrument's noise; 1e4 g is 10⁴ times
+#: any recorded earthquake, even a file in cm/s² read as g stays below it) and scaling such a
+#: record loses its digits; inside, a peak outside the range of practice is a warning
+#: (frp_assess.motions.plausibility).
+MIN_PEAK_G = 1e-6
+MAX_PEAK_G = 1e4
 #: a data line of a table: digits, signs, exponents, points, commas, semicolons, blanks
 _DATA_LINE_RE = re.compile(r"^[\s0-9.,;eEdD+-]*[0-9][\s0-9.,;eEdD+-]*$")
 _DECIMAL_COMMA_RE = re.compile(r"[0-9],[0-9]")
@@ -288,7 +296,7 @@ def read_at2(path: str | Path, *, units: str = "g", name: str | None = None) -> 
             file=str(path),
             line=4,
         )
-    return _make(path, name, dt, np.asarray(values) * factor, "PEER AT2", {"units": units})
+    return _make(path, name, dt, _in_si(values, factor, path), "PEER AT2", {"units": units})
 
 
 def read_esm(path: str | Path, *, units: str = "g", name: str | None = None) -> Record:
@@ -352,7 +360,7 @@ def read_esm(path: str | Path, *, units: str = "g", name: str | None = None) -> 
     for key in ("EVENT_NAME", "EVENT_ID", "STATION_CODE", "STREAM"):
         if header.get(key, ("", 0))[0]:
             meta[key.lower()] = header[key][0]
-    acc = np.asarray(values) * unit_factor(used_units)
+    acc = _in_si(values, unit_factor(used_units), path)
     return _make(path, name, dt, acc, "ESM ASCII", meta)
 
 
@@ -416,7 +424,7 @@ def read_two_column(path: str | Path, *, units: str = "g", name: str | None = No
         path,
         name,
         _check_dt(float(dt), path, lines_of[1]),
-        np.asarray(a) * factor,
+        _in_si(a, factor, path),
         "two-column",
         meta,
     )
@@ -454,7 +462,7 @@ def read_one_column(
     meta = {"units": units}
     if dialect:
         meta["read_as"] = dialect
-    return _make(path, name, float(dt), np.asarray(values) * factor, "one-column", meta)
+    return _make(path, name, float(dt), _in_si(values, factor, path), "one-column", meta)
 
 
 def detect_format(path: str | Path) -> str:
@@ -518,6 +526,21 @@ def read_record(
     return record
 
 
+def _in_si(values: ArrayLike, factor: float, path: Path) -> np.ndarray:
+    """The samples as read times the units' factor [m/s²]; a peak beyond :data:`MAX_PEAK_G`
+    is refused before the product can overflow (1e308 in g is not a finite m/s²)."""
+    raw = np.asarray(values, dtype=float)
+    peak = float(np.max(np.abs(raw))) if raw.size else 0.0
+    peak_g = peak * factor / G  # a Python float: inf on overflow, never a warning
+    if peak_g > MAX_PEAK_G:
+        raise RecordFormatError(
+            f"expected a peak acceleration between {MIN_PEAK_G:g} g and {MAX_PEAK_G:g} g, "
+            f"found {peak_g:.3g} g (check the file and its units)",
+            file=str(path),
+        )
+    return raw * factor
+
+
 def _make(
     path: Path, name: str | None, dt: float, acc: np.ndarray, kind: str, meta: dict[str, str]
 ) -> Record:
@@ -527,6 +550,13 @@ def _make(
         raise RecordFormatError("the record holds non-finite values", file=str(path))
     if not np.any(acc):
         raise RecordFormatError("the record holds only zeros", file=str(path))
+    peak_g = float(np.max(np.abs(acc))) / G
+    if not MIN_PEAK_G <= peak_g <= MAX_PEAK_G:
+        raise RecordFormatError(
+            f"expected a peak acceleration between {MIN_PEAK_G:g} g and {MAX_PEAK_G:g} g, "
+            f"found {peak_g:.3g} g (check the file and its units)",
+            file=str(path),
+        )
     meta = {"format": kind, **meta}
     return Record(
         name=name or path.stem, dt=dt, acc=acc, source=f"{kind} file {path.name}", meta=meta

@@ -137,7 +137,7 @@ def test_ida_json(record_file, capsys):
     "argv,fragment",
     [
         (["--thickness", "-0.4", "--height", "3", "--mechanism", "one-sided"], "--thickness"),
-        (["--thickness", "3", "--height", "0.4", "--mechanism", "one-sided"], "thickness < height"),
+        (["--thickness", "3", "--height", "0.6", "--mechanism", "one-sided"], "thickness < height"),
         ([*WALL_ARGS, *BAR_ARGS[:-1], "25"], "--ratio"),
         ([*WALL_ARGS, "--modulus", "46"], "missing"),
         ([*WALL_ARGS, "--restitution", "bouncy"], "--restitution"),

@@ -267,6 +267,7 @@ def test_cli_report_exit_codes(
     assert main(["report", str(results_dir)]) == 0
     assert (results_dir / "report.pdf").read_bytes().startswith(b"%PDF")
     out = tmp_path / "elsewhere" / "r.pdf"
+    out.parent.mkdir()  # the folder must exist (README: the missing-parent rule)
     assert main(["report", str(results_dir), "--out", str(out)]) == 0
     assert out.read_bytes() == (results_dir / "report.pdf").read_bytes()
     capsys.readouterr()

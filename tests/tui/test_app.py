@@ -108,7 +108,7 @@ def test_open_edit_derived_values_and_validation_messages(small_project: Path):
             assert "a_g·S = 0.3" in plain(app.query_one("#spectrum-info", Static))
             await type_into(pilot, "#f-seismic-spectrum-ag-parameters-control", "2")
             assert row_error(app, ("seismic", "spectrum", "ag")) == (
-                "expected a number in (0, 1.5], found 2"
+                "expected a number in [0.001, 1.5], found 2"
             )
 
     run_async(body)
@@ -139,9 +139,9 @@ def test_retrofit_table_add_duplicate_remove_and_errors(small_project: Path):
             assert isinstance(ratio, Input) and ratio.value == "2"
             await type_into(pilot, f"#{ratio.id}", "25")
             row = next(r for r in editor.form_rows("option") if r.spec.path == ("ratio",))
-            assert row.error == "expected a number in (0, 20], found 25"
+            assert row.error == "expected a number in [0.001, 20], found 25"
             assert str(app.problems[0]) == (
-                "interventions[1].ratio: expected a number in (0, 20], found 25"
+                "interventions[1].ratio: expected a number in [0.001, 20], found 25"
             )
             await type_into(pilot, f"#{ratio.id}", "1.5")
             assert app.problems == []
