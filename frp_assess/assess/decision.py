@@ -45,7 +45,7 @@ DECISION_RULE = (
     "≥ {target:g} (a lower bound passes only if the bound reaches it) and the time-history "
     "check of Circolare 2019 §C8.7.1.2.1.9 at SLV and SLC with the same model, at FC·a_g·S "
     "(d0 of the unreinforced wall never exceeded, mean peak ≤ d_SLV, ≤ d_SLC). The governing "
-    "check is the one with the smallest margin (capacity/demand, ≥ 1 passes). Recommended: "
+    "check is the one with the smallest margin (capacity/demand, ≥ 1 passes). The recommendation: "
     "the cheapest passing option, design-mode answers included; when none passes, none is "
     "recommended and the closest (largest governing margin) is named. The linear and "
     "nonlinear static kinematic checks are supporting checks, not deciding."
@@ -152,17 +152,18 @@ def verdict(ev: Evidence) -> Verdict:
     if ev.peaks is not None:
         checks.append(time_history_deciding_check(ev.peaks, ev.d0, ev.d_slv, TH_SLV))
         checks.append(time_history_deciding_check(ev.peaks, ev.d0, ev.d_slc, TH_SLC))
-    if ev.dropped:
-        checks.append(
+    if ev.dropped:  # first: it governs (margin 0) even where a time history gives 0 too
+        checks.insert(
+            0,
             DecidingCheck(
                 name=PIVOT_CHECK,
                 margin=0.0,
                 passed=False,
                 lower_bound=False,
                 detail="the base cannot carry the weight and the bar force: no rocking mechanism",
-            )
+            ),
         )
-    gov = min(checks, key=lambda c: _margin_key(c.margin))
+    gov = min(checks, key=lambda c: _margin_key(c.margin))  # the first of equal margins
     return Verdict(
         checks=tuple(checks),
         passes=all(c.passed for c in checks),

@@ -17,6 +17,8 @@ from dataclasses import asdict, dataclass, replace
 
 from frp_assess.assess.decision import (
     DECISION_RULE,
+    IDA_CHECK,
+    PIVOT_CHECK,
     Decision,
     Evidence,
     Verdict,
@@ -109,8 +111,8 @@ def evidence(
 def decided_case(case: CaseResult, v: Verdict, rank: int | None, recommended: bool) -> CaseResult:
     """``case`` with its verdict; meets_target is the IDA check's own verdict (false when
     the pivot check drops the option)."""
-    ida = v.checks[0]
-    dropped = any(c.name == "pivot check" for c in v.checks)
+    ida = next(c for c in v.checks if c.name == IDA_CHECK)
+    dropped = any(c.name == PIVOT_CHECK for c in v.checks)
     return replace(
         case,
         deciding_checks=v.checks,
@@ -369,13 +371,15 @@ def robustness(
     if len(set(exact)) >= 2:
         censored = [b for a, b in zip(summary.a_dyn, summary.a_dyn_bound, strict=True) if a is None]
         p = fit_lognormal_fragility(exact, censored).probability(design_intensity)
+    # with one record there is nothing to leave out
+    picks = leave_one_out(ev) if len(names) > 1 else []
     loo = [
         LeaveOneOut(
             record=name,
             recommended=None if k is None else cases[k].name,
             survives=k == decision.recommended,
         )
-        for name, k in zip(names, leave_one_out(ev), strict=True)
+        for name, k in zip(names, picks, strict=False)
     ]
     name = cases[focus].name
     survives = all(r.survives for r in loo) and all(o.passes for o in outcomes)
@@ -386,7 +390,9 @@ def robustness(
             "(lognormal fit to the records' collapse accelerations)"
         )
     lost = [r for r in loo if not r.survives]
-    if decision.recommended is None:
+    if decision.recommended is None and decision.verdicts[0].passes:
+        parts.append("the unreinforced wall passes every deciding check; no option is needed")
+    elif decision.recommended is None:
         gained = [r for r in loo if r.recommended is not None]
         parts.append(
             "nothing passes; leaving out one record "
