@@ -289,8 +289,7 @@ def design_search(
         )
 
     def model(k: int) -> RockingModel:
-        bars = inputs.rebars(material, position, model_ratio(k))
-        return RockingModel(inputs.wall, inputs.mechanism, bars, inputs.model)
+        return inputs.model_of(material, position, model_ratio(k))
 
     def evaluate(k: int) -> CaseSummary:
         if k not in cache:
