@@ -3,6 +3,9 @@
 * An option weaker than its bare wall (improvement < 1): its failure mode (the field
   ``failure_mode`` of the case or of its records, where the dynamics give it) and why — its
   a_RM below the bare wall's, or bars that break before the wall would tip.
+* A record that topples the wall at the design intensity although the IDA put its first
+  collapse above it: the response is not monotone in the intensity (collapse windows fall
+  between the IDA's steps), and the time-history check, run at that intensity, sees it.
 * q < 1 (a_dyn below a_RM): impossible for a rigid block at ground level (it cannot fall
   before it rocks, and it rocks only once the base acceleration exceeds a_RM, so a_dyn =
   C·PGA ≥ a_RM); above ground it is the ground-terms convention (the floor amplifies the
@@ -55,9 +58,20 @@ def remark(
     model: RockingModel,
     bare: RockingModel,
     above_ground: bool,
+    falls_inside_ida: int = 0,
 ) -> str | None:
-    """One sentence for an odd result of ``case`` (module docstring), or None."""
+    """One sentence for an odd result of ``case`` (module docstring), or None;
+    ``falls_inside_ida``: records that topple the wall at the design intensity although their
+    IDA collapse lies above it."""
     parts = []
+    if falls_inside_ida:
+        parts.append(
+            f"{falls_inside_ida} record{'s' if falls_inside_ida > 1 else ''} "
+            f"{'topple' if falls_inside_ida > 1 else 'topples'} the wall "
+            "at the design intensity although the IDA placed the first collapse above it: the "
+            "response is not monotone in the intensity (collapse windows between the IDA's "
+            "steps), so the time-history check governs"
+        )
     if not case.is_unreinforced and case.improvement < 1.0 - SLACK:
         mode = failure_mode(case)
         parts.append(

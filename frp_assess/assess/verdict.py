@@ -108,6 +108,18 @@ def evidence(
     )
 
 
+def falls_inside(ev: Evidence) -> int:
+    """Records that topple the wall at the design intensity although their IDA a_dyn (or its
+    lower bound) reaches it."""
+    if ev.peaks is None:
+        return 0
+    return sum(
+        1
+        for a, p in zip(ev.a_dyn, ev.peaks, strict=True)
+        if not math.isfinite(p) and a >= ev.demand
+    )
+
+
 def decided_case(case: CaseResult, v: Verdict, rank: int | None, recommended: bool) -> CaseResult:
     """``case`` with its verdict; meets_target is the IDA check's own verdict (false when
     the pivot check drops the option)."""
@@ -250,7 +262,9 @@ def assess_and_decide(
     cases = tuple(
         replace(
             decided_case(c, v, rank_of.get(i), i == decision.recommended),
-            remark=remark(c, raw[0], models[i], models[0], inputs.building is not None),
+            remark=remark(
+                c, raw[0], models[i], models[0], inputs.building is not None, falls_inside(ev[i])
+            ),
         )
         for i, (c, v) in enumerate(zip(raw, decision.verdicts, strict=True))
     )
@@ -411,13 +425,19 @@ def robustness(
     else:
         parts.append(f"{name} stays recommended whichever record is left out")
     failing = [o for o in outcomes if not o.passes]
+    others = sum(1 for i, v in enumerate(decision.verdicts) if v.passes and i not in (0, focus))
+    takeover_none = (
+        "no other option passes even as assessed"
+        if others == 0
+        else "none of the next passing options passes under it"
+    )
     if decision.recommended is not None:
         if failing:
             parts.append(
                 "under "
                 + "; ".join(
                     f"{o.variant} it fails ({o.governing_check}); "
-                    + (f"{o.takes_over} takes over" if o.takes_over else "no tried option passes")
+                    + (f"{o.takes_over} takes over" if o.takes_over else takeover_none)
                     for o in failing
                 )
             )

@@ -58,3 +58,12 @@ def test_q_below_one_is_an_error_at_ground_level_and_explained_above_it():
     assert ground is not None and "impossible" in ground and "q = 0.80 < 1" in ground
     above = remark(case(1.2, mean_q=0.8), URM, ok, BARE, True)  # type: ignore[arg-type]
     assert above is not None and "ground terms" in above and "impossible" not in above
+
+
+def test_a_fall_inside_the_ida_capacity_is_explained():
+    """One record topples the wall at FC·a_g·S while the IDA put its first collapse above:
+    the non-monotone response is named (the golden building-crushing run has two)."""
+    ok = SimpleNamespace(a_rm_g=0.115, theta_max=math.inf, alpha=0.117)
+    text = remark(case(1.2), URM, ok, BARE, False, falls_inside_ida=1)  # type: ignore[arg-type]
+    assert text is not None and text.startswith("1 record topples the wall")
+    assert "not monotone" in text
