@@ -50,7 +50,8 @@ def _fixture_results() -> AssessmentResult:
 
 def test_recommendation_says_when_no_retrofit_is_needed():
     """The printed recommendation does not present an option as required when the unreinforced
-    wall (case 0) already meets the target; it names the option only as extra margin."""
+    wall (case 0) already passes; it names the option only as extra margin.  (The fixture's
+    cases are undecided, ``passes`` None: the IDA's meets_target stands in for the verdict.)"""
     base = _fixture_results()
 
     def results(urm_ok: bool, rec: str | None) -> AssessmentResult:
@@ -58,7 +59,10 @@ def test_recommendation_says_when_no_retrofit_is_needed():
         return replace(base, recommended=rec, cases=(urm, *base.cases[1:]))
 
     assert recommendation_text(results(False, "GFRP external 1‰")) == "GFRP external 1‰"
-    assert recommendation_text(results(False, None)) == "none of the options meets the target"
+    assert (
+        recommendation_text(results(False, None))
+        == "none of the options passes every deciding check"
+    )
     ok = recommendation_text(results(True, "GFRP centred 1‰"))
     assert ok.startswith("no retrofit needed") and "extra margin: GFRP centred 1‰" in ok
     assert "extra margin" not in recommendation_text(results(True, None))
@@ -86,7 +90,9 @@ def test_no_retrofit_needed_says_what_contradicts_it():
             model=replace(base.model, target=1.0),
         )
 
-    assert recommendation_text(results(True, 2.0, 0.1, 1e-6)).endswith("meets the target")
+    assert recommendation_text(results(True, 2.0, 0.1, 1e-6)).endswith(
+        "passes every deciding check"
+    )
     failing = recommendation_text(results(False, 2.0, 0.1, 1e-6))
     assert "kinematic check of Circolare 2019 §C8.7.1 is NOT satisfied" in failing
     assert "probability of collapse at the demand is 25%" in recommendation_text(
