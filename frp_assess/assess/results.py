@@ -32,6 +32,7 @@ from frp_assess.assess.pivot import case_pivot
 from frp_assess.assess.quantities import built_quantity
 from frp_assess.assess.runner import CaseSummary, DesignResult, design_value_rule
 from frp_assess.assess.seismic import SeismicInput
+from frp_assess.assess.site_result import site_result
 from frp_assess.assess.statistics import fit_lognormal_fragility, record_statistics
 from frp_assess.assess.verification import NumericalCheck
 from frp_assess.dynamics import RockingModel
@@ -499,6 +500,7 @@ def build_results(
         decision_rule=decision_rule,
         closest=closest,
         robustness=robustness,
+        site=site_result(inputs.site, inputs.site_limit_state),
     )
 
 
