@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 
 from frp_assess.results.checks import CaseChecks
-from frp_assess.results.model import AssessmentResult
+from frp_assess.results.model import AssessmentResult, CaseResult
 
 #: most decimals :func:`fmt_against` shows before giving up on separating value and threshold
 MAX_DECIMALS = 6
@@ -31,6 +31,44 @@ def fmt_against(value: float, threshold: float, meets: bool | None, decimals: in
         if (float(text) >= threshold) == bool(meets):
             return text
     return text
+
+
+def fmt_capacity(case: CaseResult, target: float) -> str:
+    """capacity/demand of a case: "≥ 1.08" when it is a lower bound (records without
+    collapse up to C_max), else :func:`fmt_against` the target (its decimals agree with the
+    IDA check, ``capacity_demand ≥ target``)."""
+    cd = case.capacity_demand
+    if case.lower_bound:
+        return f"≥ {fmt_against(cd, target, cd >= target)}"
+    return fmt_against(cd, target, cd >= target)
+
+
+def fmt_margin(margin: float | None, lower_bound: bool = False) -> str:
+    """A deciding check's margin (capacity/demand, passes at ≥ 1): "≥ " before a lower
+    bound, "unbounded" for None (nothing moved), "> 100" from 100 up."""
+    if margin is None:
+        return "unbounded"
+    text = fmt_zeta(margin)
+    return f"≥ {text}" if lower_bound and not text.startswith(">") else text
+
+
+def verdict_text(case: CaseResult) -> str:
+    """ "passes: <governing check> <margin>", "fails: <governing check> <margin>" (the
+    decision's governing check, the one with the smallest margin), or "—" when undecided
+    (an older file)."""
+    if case.passes is None:
+        return "—"
+    if case.passes:
+        return (
+            f"passes: {case.governing_check} "
+            f"{fmt_margin(case.governing_margin, case.governing_lower_bound)}"
+        )
+    if case.governing_margin == 0.0 and (case.governing_check or "").startswith("time history"):
+        return f"fails: {case.governing_check} (a record makes the wall fall)"
+    return (
+        f"fails: {case.governing_check} "
+        f"{fmt_margin(case.governing_margin, case.governing_lower_bound)}"
+    )
 
 
 #: ζ_E at or above this is shown as "> 100" (a wall that barely moves under the design records)
@@ -115,34 +153,61 @@ def recommendation_label(results: AssessmentResult) -> str:
 
 
 def recommendation_text(results: AssessmentResult) -> str:
-    """One line saying what to do: the recommended option, or that no retrofit is needed.
+    """One line saying what to do: the recommended option (it passes every deciding check,
+    :mod:`frp_assess.assess.decision`), that no retrofit is needed, or that none passes and
+    which one comes closest.
 
-    ``recommended`` is the cheapest option meeting the target even when the unreinforced wall
-    already meets it; this says so instead of presenting that option as required.
+    ``recommended`` is the cheapest passing option even when the unreinforced wall already
+    passes; this says so instead of presenting that option as required.
     """
     rec = results.recommended
-    if results.cases[0].meets_target:
-        text = "no retrofit needed: the unreinforced wall already meets the target"
+    urm = results.cases[0]
+    urm_ok = urm.passes if urm.passes is not None else urm.meets_target
+    if urm_ok:
+        text = "no retrofit needed: the unreinforced wall passes every deciding check"
         caveats = no_retrofit_caveats(results)
         if caveats:
             text += " (but " + "; ".join(caveats) + ")"
         return text + (f" (cheapest option for extra margin: {rec})" if rec else "")
-    return rec or "none of the options meets the target"
+    if rec:
+        case = results.case(rec)
+        if case is None or case.governing_check is None:
+            return rec
+        return (
+            f"{rec} (passes every deciding check; governing: {case.governing_check}, "
+            f"margin {fmt_margin(case.governing_margin, case.governing_lower_bound)})"
+        )
+    closest = results.case(results.closest)
+    if closest is None:
+        return "none of the options passes every deciding check"
+    return (
+        "none of the options passes every deciding check; the closest is "
+        f"{closest.name} ({closest.governing_check} "
+        f"{fmt_margin(closest.governing_margin, closest.governing_lower_bound)})"
+    )
 
 
 # --- the code's kinematic checks, in one line per case ----------------------------------------
 
 
-def check_verdicts(checks: CaseChecks) -> list[tuple[str, bool]]:
+def check_verdicts(checks: CaseChecks, labelled: bool = False) -> list[tuple[str, bool]]:
     """(name, passed) of every check made on one case, in the order of the report's table:
-    linear, nonlinear SLV, nonlinear SLC, time history, IDA (the last two when made)."""
+    linear, nonlinear SLV, nonlinear SLC, time history, IDA (the last two when made).
+
+    ``labelled``: the names say what each check is in the decision (docs/results-json.md,
+    "The decision"): the linear and nonlinear static checks "(supporting)", the time history
+    at SLV and at SLC and the IDA deciding; without it, the report's short names (one time
+    history, at SLV)."""
+    sup = " (supporting)" if labelled else ""
     out = [
-        ("linear", checks.linear.passed),
-        ("nonlinear SLV", checks.slv.passed),
-        ("nonlinear SLC", checks.slc.passed),
+        (f"linear{sup}", checks.linear.passed),
+        (f"nonlinear SLV{sup}", checks.slv.passed),
+        (f"nonlinear SLC{sup}", checks.slc.passed),
     ]
     if checks.time_history is not None:
-        out.append(("time history", checks.time_history.passed))
+        out.append(("time history SLV" if labelled else "time history", checks.time_history.passed))
+    if labelled and checks.time_history_slc is not None:
+        out.append(("time history SLC", checks.time_history_slc.passed))
     if checks.ida is not None:
         out.append(("IDA", checks.ida.passed))
     return out
@@ -153,9 +218,10 @@ def checks_failed(checks: CaseChecks) -> list[str]:
     return [name for name, ok in check_verdicts(checks) if not ok]
 
 
-def checks_line(checks: CaseChecks) -> str:
-    """ "passes …; fails …" for one case (a list is left out when empty)."""
-    verdicts = check_verdicts(checks)
+def checks_line(checks: CaseChecks, labelled: bool = False) -> str:
+    """ "passes …; fails …" for one case (a list is left out when empty); ``labelled``: as
+    :func:`check_verdicts`."""
+    verdicts = check_verdicts(checks, labelled)
     passed = [n for n, ok in verdicts if ok]
     failed = [n for n, ok in verdicts if not ok]
     parts = []
@@ -166,21 +232,23 @@ def checks_line(checks: CaseChecks) -> str:
     return "; ".join(parts)
 
 
-def checks_summary(results: AssessmentResult) -> list[tuple[str, str]]:
+def checks_summary(results: AssessmentResult, labelled: bool = False) -> list[tuple[str, str]]:
     """(label, :func:`checks_line`) for the unreinforced wall and the rank-1 option (the
-    recommended or best ranked one), when the results hold the code's checks; else []."""
+    recommended one, else the closest), when the results hold the code's checks; else []."""
     kc = results.kinematic_checks
     if kc is None or not kc.cases:
         return []
     by_name = {c.case: c for c in kc.cases}
-    out = [(kc.cases[0].case, checks_line(kc.cases[0]))]
+    out = [(kc.cases[0].case, checks_line(kc.cases[0], labelled))]
     best = next((c for c in results.cases if c.rank == 1), None)
     if best is not None and best.name in by_name:
         if results.recommended == best.name and results.input_code_compliant:
             label = f"{best.name} (recommended)"
+        elif results.recommended is None and results.input_code_compliant:
+            label = f"{best.name} (closest, not recommended)"
         elif results.input_code_compliant:
             label = f"{best.name} (best ranked)"
         else:
             label = f"{best.name} (best ranked, {NOT_COMPLIANT})"
-        out.append((label, checks_line(by_name[best.name])))
+        out.append((label, checks_line(by_name[best.name], labelled)))
     return out

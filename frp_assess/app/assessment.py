@@ -15,36 +15,25 @@ import datetime as _dt
 import os
 import threading
 from collections.abc import Callable, Sequence
-from dataclasses import asdict, dataclass
+from dataclasses import dataclass
 from pathlib import Path
 
 from frp_assess.app.report import write_outputs
 from frp_assess.assess.cache import IdaCache, cache_file, record_digest, task_key
-from frp_assess.assess.code_check import simple_overturning_check
 from frp_assess.assess.floor_input import floor_record, floor_spectra
 from frp_assess.assess.from_project import inputs_from_project, load_inputs
 from frp_assess.assess.inputs import UNREINFORCED, AssessmentInputs, Material
-from frp_assess.assess.kinematic_checks import (
-    IdaSummary,
-    floor_ratio,
-    ida_confidence_factor,
-    kinematic_checks,
-)
+from frp_assess.assess.kinematic_checks import floor_ratio, ida_confidence_factor, linear_check
 from frp_assess.assess.results import (
     below_collapse,
     build_results,
-    case_result,
     history_run,
-    rank_cases,
 )
 from frp_assess.assess.runner import (
-    DesignResult,
     IdaRunner,
-    design_search,
-    summarise,
 )
 from frp_assess.assess.seismic import SeismicInput, build_records
-from frp_assess.assess.sensitivity import sensitivity
+from frp_assess.assess.verdict import assess_and_decide
 from frp_assess.assess.verification import verify
 from frp_assess.config import Project
 from frp_assess.errors import Cancelled, InputError
@@ -54,8 +43,6 @@ from frp_assess.results.model import (
     AssessmentResult,
     CaseResult,
     Governing,
-    Sensitivity,
-    SensitivityRow,
 )
 
 __all__ = [
@@ -163,7 +150,6 @@ def run_assessment(
         seismic = build_records(inputs)
         report("records", 1, 1)
     records = seismic.records
-    names = [r.name for r in records]
     demand = inputs.spectrum.pga_g
     runner = IdaRunner(records, inputs, IdaCache(out_dir / CACHE_DIR), jobs=jobs, cancel=cancel)
 
@@ -180,13 +166,6 @@ def run_assessment(
             inputs.ida.tolerance,
             progress=lambda d, n: report("verify", d, n),
         )
-    # q = a_dyn / a_RM of each case's own model (about its pivot: docs/model.md §1.1)
-    summaries = [
-        summarise(r, inputs.ida.max_multiplier, m.a_rm_g)
-        for m, r in zip(models, all_results, strict=True)
-    ]
-    urm_design = summaries[0].design_a_dyn
-    options = [None, *inputs.options]
     # FC divides the IDA capacity (code_check.fc_in_ida): capacity/demand = a_dyn/(FC·a_g·S)
     fc = ida_confidence_factor(inputs.code_check)
     # the floor spectra at the wall's base, once (a wall above ground only)
@@ -196,49 +175,22 @@ def run_assessment(
         else floor_spectra(records, inputs.spectrum, inputs.building, floors=runner.motions)
     )
     floor_pga = None if spectra is None else spectra.floor_pga
-    cases, recommended = rank_cases(
-        [
-            case_result(inputs, o, m, s, names, demand, urm_design, fc=fc, floor_pga=floor_pga)
-            for o, m, s in zip(options, models, summaries, strict=True)
-        ],
-        inputs.target,
-    )
-    report("sensitivity", 0, 1)
-    focus = next((i for i, c in enumerate(cases) if c.rank == 1), 0)
-    # the same cache, its own counts: RunStats reports the assessment's IDAs
-    sens_runner = IdaRunner(records, inputs, runner.cache, jobs=jobs, cancel=cancel)
-    conventions = Sensitivity(
-        case=cases[focus].name,
-        rows=tuple(
-            SensitivityRow(**asdict(row))
-            for row in sensitivity(
-                sens_runner, models[focus], fc * demand, inputs.ida.max_multiplier
-            )
-        ),
-    )
-    report("sensitivity", 1, 1)
-
-    design: list[DesignResult] | None = None
-    if inputs.design is not None:
-        pairs = [(m, p) for m in inputs.design.materials for p in inputs.design.positions]
-        design = []
-        for k, (mat, pos) in enumerate(pairs):
-            report("design", k, len(pairs))
-            design.append(design_search(runner, inputs, mat, pos, fc * demand))
-        report("design", len(pairs), len(pairs))
-
-    report("checks", 0, 1)
-    # the code's checks; the IDA's a_dyn passed in, only the time-history check runs the model
-    checks = kinematic_checks(
+    # design mode, the code checks, the one decision rule and how firm it is
+    # (frp_assess.assess.verdict); the design answers join the cases
+    decided = assess_and_decide(
         inputs,
-        records=records,
-        ida={
-            c.name: IdaSummary(s.mean_a_dyn, s.min_a_dyn, len(records))
-            for c, s in zip(cases, summaries, strict=True)
-        },
-        building=inputs.building,
+        runner,
+        # the same cache, its own counts: RunStats reports the assessment's IDAs
+        IdaRunner(records, inputs, runner.cache, jobs=jobs, cancel=cancel),
+        records,
+        models,
+        all_results,
+        fc=fc,
+        floor_pga=floor_pga,
+        report=report,
     )
-    report("checks", 1, 1)
+    inputs, cases, recommended = decided.inputs, decided.cases, decided.recommended
+    all_results = decided.results
     governing = governing_histories(inputs, cases, records, all_results, recommended)
     materials: dict[str, Material] = {}
     for o in inputs.options:
@@ -252,21 +204,24 @@ def run_assessment(
         cases=cases,
         recommended=recommended,
         # above ground the linear check's demand is a_Z, the floor's peak acceleration at Z
-        check=simple_overturning_check(
-            inputs.thickness,
-            inputs.height,
+        check=linear_check(
+            models[0],
             demand * floor_ratio(inputs.spectrum, inputs.building),
             inputs.code_check.knowledge_level,
             inputs.code_check.behaviour_factor,
         ),
-        design=design,
+        design=decided.design,
         governing=governing,
         materials=materials,
         created=created,
         numerical_check=numerical_check,
-        sensitivity=conventions,
+        sensitivity=decided.sensitivity,
         floor_spectra=spectra,
-        kinematic_checks=checks,
+        kinematic_checks=decided.checks,
+        design_cases=decided.design_cases,
+        decision_rule=decided.decision_rule,
+        closest=decided.closest,
+        robustness=decided.robustness,
     )
     if write:
         report("writing", 0, 1)

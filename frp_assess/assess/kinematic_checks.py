@@ -4,16 +4,26 @@ Circolare 2019 §C8.7.1 (docs/model.md, "Displacement-based checks"), assembled 
 clause functions of :mod:`frp_assess.assess.kinematic_nonlinear` and
 :mod:`frp_assess.assess.code_check`:
 
-* the linear check a0* ≥ demand/q (§C8.7.1.2.1.7), the same for every option (the bars are
-  unstressed at rest);
-* the nonlinear static SLV and SLC checks on the capacity curve of the wall *with its bars*
-  (they enter through the internal work of elastic elements, the K·sin θ of Eq. 10): d0 is
-  the bare wall's, d_SLV = min(0.40·d0, the displacement where a bar rupture drops the
-  capacity by more than 50 %), demand from the elastic displacement spectrum at 8 % / 10 %
-  damping, a_g,SLV not below a_g,SLD;
-* the time-history check of §C8.7.1.2.1.9: the rocking model (the same one the IDA runs)
-  under every record at the design intensity, d0 never exceeded, mean peak ≤ d_SLV;
+Every check uses the wall model the IDA runs (docs/model.md §1.1): its α0 = a_RM/g (the
+moment balance about the pivot, the base reaction included), its restraint term K and its
+bar rupture rotation θ_max; the block turns about its base corner, so displacements keep the
+wall's geometry.
+
+* the linear check a0* ≥ demand/q (§C8.7.1.2.1.7), with α0 of the model: the bars, unstressed
+  at rest, do not change α0, so it differs between options only where their models' α0 do;
+* the nonlinear static SLV and SLC checks on the capacity curve of that model *with its
+  bars* (the K·sin θ of Eq. 10): d0 is the bare wall's (where its restoring moment vanishes:
+  the bars break brittly and are not surely present up to collapse), d_SLV = min(0.40·d0,
+  the displacement where a bar rupture drops the capacity by more than 50 %), demand from the
+  elastic displacement spectrum at 8 % / 10 % damping, a_g,SLV not below a_g,SLD;
+* the time-history check of §C8.7.1.2.1.9 at SLV and at SLC: the rocking model under every
+  record at the design intensity (×FC when FC enters the dynamics), d0 never exceeded, mean
+  peak ≤ d_SLV (≤ d_SLC); the project gives one spectrum, so both limit states are checked at
+  its intensity (the SLC check is then implied by the SLV one);
 * the IDA's ζ_E = a_dyn/(FC·a_g·S), mean and least favourable record.
+
+The time-history checks and the IDA decide (:mod:`frp_assess.assess.decision`); the linear
+and nonlinear static checks are supporting checks.
 
 A wall above ground (Circolare 2019 §C7.2.3) takes its demand from the floor spectrum
 (eq. C8.7.1.12) and, in the time-history check, its base motion from the floor filter of
@@ -34,9 +44,10 @@ from typing import Protocol
 import numpy as np
 from numpy.typing import NDArray
 
-from frp_assess.assess.code_check import simple_overturning_check
+from frp_assess.assess.code_check import KinematicCheck, simple_overturning_check
 from frp_assess.assess.inputs import AssessmentInputs, CodeCheckSettings
 from frp_assess.assess.kinematic_nonlinear import (
+    CapacityCurve,
     DisplacementSpectrum,
     LimitStateCheck,
     capacity_curve,
@@ -255,16 +266,18 @@ def base_motions(
 # --- the checks of one case ----------------------------------------------------------------
 
 
-def edge_rotation(theta: float, model: RockingModel) -> float:
-    """The rotation [rad] of the code's rigid block about its edge that is as far from
-    tipping as ``theta`` is about the model's pivot: θ·α/α'.
-
-    With ``pivot: crushing`` the model turns about a pivot x/2 inside the base and tips at
-    α' < α (docs/model.md §1.1), while the capacity curve, d0 and d_SLV of the code's checks
-    are those of the block about its edge (d_C(α) = B/2); the same fraction of the way to
-    tipping keeps the comparison on one geometry (θ = α' gives d0).  Identity for the edge
-    pivot."""
-    return theta * model.wall.alpha / model.alpha
+def model_capacity_curve(model: RockingModel, fc: float) -> CapacityCurve:
+    """The capacity curve of the model the IDA runs (docs/model.md §1.1): its slenderness α
+    (tan α = a_RM/g, the base reaction included), its K and its θ_max, the block turning
+    about its base corner (d_C of the wall's geometry)."""
+    return capacity_curve(
+        model.wall,
+        model.rebars,
+        fc=fc,
+        slenderness=model.alpha,
+        stiffness=model.K,
+        rupture_rotation=model.theta_max,
+    )
 
 
 def peak_displacements(
@@ -273,14 +286,59 @@ def peak_displacements(
     scale: float = 1.0,
 ) -> tuple[float, ...]:
     """Peak displacement d_C [m] of the control point under each motion times ``scale``
-    (the free vibration after the record included), on the code's edge geometry
-    (:func:`edge_rotation`); inf where the collapse rule says the wall fell."""
+    (the free vibration after the record included), the block turning about its base corner
+    (:func:`~frp_assess.assess.kinematic_nonlinear.control_displacement` of the peak
+    rotation); inf where the collapse rule says the wall fell."""
     peaks = []
     for acc, dt in motions:
         res = model.run(acc, dt, scale)
-        theta = edge_rotation(res.max_rotation, model)
-        peaks.append(math.inf if res.collapsed else control_displacement(theta, model.wall))
+        peaks.append(
+            math.inf if res.collapsed else control_displacement(res.max_rotation, model.wall)
+        )
     return tuple(peaks)
+
+
+def linear_check(
+    model: RockingModel, a_z: float, knowledge_level: str, behaviour_factor: float
+) -> KinematicCheck:
+    """The linear check a0* = α0·g/(e*·FC) ≥ a_Z/q (Circolare 2019 §C8.7.1.2.1.7, eq.
+    C8.7.1.9) with α0 = a_RM/g of the model the IDA runs (its moment balance about the pivot,
+    the base reaction included; the bars, unstressed at rest, do not change it); e* = 1 for
+    one block.  ``a_z`` [g]: a_g·S at ground level, the floor's peak acceleration above it."""
+    # α0 = (B − x)/H of the moment balance (x = 0 about the edge): the clause's B/H with the
+    # lever width the model's a_RM/g gives, B − x = (a_RM/g)·H
+    height = model.wall.height
+    return simple_overturning_check(
+        model.a_rm_g * height, height, a_z, knowledge_level, behaviour_factor
+    )
+
+
+def time_history_result(
+    peaks: Sequence[float], d0: float, d_limit: float, scale: float, limit_state: str
+) -> TimeHistoryResult:
+    """The §C8.7.1.2.1.9 check of ``peaks`` [m] against d0 and d_limit [m], as results."""
+    th = time_history_check(peaks, d0, d_limit)
+    margin: float | None
+    if not math.isfinite(th.max_peak):
+        margin = 0.0
+    elif th.max_peak == 0.0:
+        margin = None
+    else:
+        margin = min(th.d_limit / th.mean_peak, th.d0 / th.max_peak)
+    return TimeHistoryResult(
+        scale=scale,
+        peaks=tuple(_optional(p) for p in th.peaks),
+        mean_peak=_optional(th.mean_peak),
+        max_peak=_optional(th.max_peak),
+        d0=th.d0,
+        d_limit=th.d_limit,
+        d0_respected=th.d0_respected,
+        mean_respected=th.mean_respected,
+        ratio=_optional(th.ratio) if math.isfinite(th.mean_peak) else 0.0,
+        passed=th.passed,
+        limit_state=limit_state,
+        margin=margin,
+    )
 
 
 def _optional(x: float) -> float | None:
@@ -328,20 +386,17 @@ def case_checks(
         ida: the IDA's a_dyn of this case; None: no IDA line.
     """
     fc = confidence_factor(settings.knowledge_level)
-    wall = model.wall
-    curve = capacity_curve(wall, model.rebars, fc=fc)
+    curve = model_capacity_curve(model, fc)
     # a_g,SLD = a0*/(a_Z per unit a_g·S) (eq. C8.7.1.8), in g: a0* is in m/s²
     sld = curve.a0 / G / floor_ratio_value
     slv = limit_state_check(curve, "SLV", sd, a_g, a_g_sld_value=sld)
     slc = limit_state_check(curve, "SLC", sd, a_g, a_g_sld_value=sld)
-    lin = simple_overturning_check(
-        wall.thickness,
-        wall.height,
-        a_g * floor_ratio_value,
-        settings.knowledge_level,
-        settings.behaviour_factor,
+    lin = linear_check(
+        model, a_g * floor_ratio_value, settings.knowledge_level, settings.behaviour_factor
     )
-    linear = LinearCheck(lin.a0_star, lin.demand, lin.behaviour_factor, lin.ratio, lin.passed)
+    linear = LinearCheck(
+        lin.a0_star, lin.demand, lin.behaviour_factor, lin.ratio, lin.passed, lin.alpha0
+    )
     capacity = CapacitySummary(
         e_star=curve.e_star,
         m_star=curve.m_star,
@@ -352,22 +407,12 @@ def case_checks(
         rupture_displacement=_optional(curve.rupture_displacement),
         rupture_limit=_optional(curve.rupture_limit),
     )
-    time_history = None
+    time_history = time_history_slc = None
     if motions is not None:
         scale = fc if settings.fc_in_ida else 1.0
-        th = time_history_check(peak_displacements(model, motions, scale), curve.d0, slv.d_limit)
-        time_history = TimeHistoryResult(
-            scale=scale,
-            peaks=tuple(_optional(p) for p in th.peaks),
-            mean_peak=_optional(th.mean_peak),
-            max_peak=_optional(th.max_peak),
-            d0=th.d0,
-            d_limit=th.d_limit,
-            d0_respected=th.d0_respected,
-            mean_respected=th.mean_respected,
-            ratio=_optional(th.ratio) if math.isfinite(th.mean_peak) else 0.0,
-            passed=th.passed,
-        )
+        peaks = peak_displacements(model, motions, scale)
+        time_history = time_history_result(peaks, curve.d0, slv.d_limit, scale, "SLV")
+        time_history_slc = time_history_result(peaks, curve.d0, slc.d_limit, scale, "SLC")
     ida_result = None
     if ida is not None:
         ida_result = ida_check(ida, a_g, ida_confidence_factor(settings))
@@ -379,6 +424,7 @@ def case_checks(
         slc=_limit_state(slc, sld),
         time_history=time_history,
         ida=ida_result,
+        time_history_slc=time_history_slc,
     )
 
 

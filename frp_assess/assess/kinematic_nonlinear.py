@@ -186,6 +186,11 @@ class CapacityCurve:
     One block, its weight at the centroid, the centroid as control point: e* = 1, M* = m and
     d = d_C (eqs. C8.7.1.3-C8.7.1.5).  The arrays run from θ = 0 to θ = α (the bare wall's
     d0); a rupture of the bars inside that range appears as two points at the same d.
+
+    ``slenderness`` is the α of the restoring moment of the model the IDA runs (tan α = a_RM/g:
+    the block's B/H at its edge, (B − x)/H with the base reaction moved inward by x/2); None:
+    the wall's own α.  The block turns about its base corner, so d_C(θ) keeps the wall's
+    geometry (:func:`control_displacement`) while the moment balance uses ``slenderness``.
     """
 
     wall: Wall
@@ -196,22 +201,30 @@ class CapacityCurve:
     m_star: float  #: M* [kg per metre of wall]
     d: NDArray[np.float64]  #: spectral displacement d [m]
     a: NDArray[np.float64]  #: spectral acceleration a [m/s²]
+    slenderness: float | None = None  #: α of the restoring moment [rad]; None: the wall's
+
+    @property
+    def alpha(self) -> float:
+        """α [rad] of the restoring moment: θ where the bare wall's capacity vanishes."""
+        return self.wall.alpha if self.slenderness is None else self.slenderness
 
     @property
     def d0(self) -> float:
         """d0 [m]: where a = 0 on the curve of the actions surely present up to collapse, the
-        bare wall's (brittle bars do not last to collapse, §C8.7.1.2.1.6): R·sin α = B/2."""
-        return control_displacement(self.wall.alpha, self.wall)
+        bare wall's (brittle bars do not last to collapse, §C8.7.1.2.1.6): d_C(α), R·sin α =
+        B/2 for the block about its edge."""
+        return control_displacement(self.alpha, self.wall)
 
     @property
     def a0(self) -> float:
-        """a0* = α0·g/(e*·FC) [m/s²], the spectral acceleration that activates rocking."""
-        return spectral_acceleration(math.tan(self.wall.alpha), self.e_star, self.fc)
+        """a0* = α0·g/(e*·FC) [m/s²], the spectral acceleration that activates rocking
+        (α0 = tan α: the bars, unstressed at rest, do not change it)."""
+        return spectral_acceleration(math.tan(self.alpha), self.e_star, self.fc)
 
     @property
     def rupture_displacement(self) -> float:
         """d [m] at which the acting bar breaks (inf if it never does before θ = α)."""
-        if self.rupture_rotation >= self.wall.alpha:
+        if self.rupture_rotation >= self.alpha:
             return math.inf
         return control_displacement(self.rupture_rotation, self.wall)
 
@@ -220,9 +233,7 @@ class CapacityCurve:
         displacement itself the bar still holds: the value just before it breaks)."""
         theta = rotation_at(d, self.wall)
         k = self.stiffness if d <= self.rupture_displacement else 0.0
-        return spectral_acceleration(
-            static_multiplier(theta, self.wall.alpha, k), self.e_star, self.fc
-        )
+        return spectral_acceleration(static_multiplier(theta, self.alpha, k), self.e_star, self.fc)
 
     @property
     def a_max(self) -> float:
@@ -238,13 +249,20 @@ class CapacityCurve:
         if not math.isfinite(d_r):
             return math.inf
         after = spectral_acceleration(
-            static_multiplier(self.rupture_rotation, self.wall.alpha, 0.0), self.e_star, self.fc
+            static_multiplier(self.rupture_rotation, self.alpha, 0.0), self.e_star, self.fc
         )
         return d_r if after < (1.0 - RUPTURE_DROP) * self.a_max else math.inf
 
 
 def capacity_curve(
-    wall: Wall, rebars: Rebars | None = None, *, fc: float = 1.35, points: int = 401
+    wall: Wall,
+    rebars: Rebars | None = None,
+    *,
+    fc: float = 1.35,
+    points: int = 401,
+    slenderness: float | None = None,
+    stiffness: float | None = None,
+    rupture_rotation: float | None = None,
 ) -> CapacityCurve:
     """The capacity curve a(d) of the wall and its bars (Circolare 2019 §C8.7.1.2.1.2-3).
 
@@ -256,26 +274,34 @@ def capacity_curve(
         rebars: its bars (None: unreinforced).
         fc: confidence factor FC [-].
         points: number of rotations sampled in [0, α].
+        slenderness, stiffness, rupture_rotation: α [rad], K [-] and θ_max [rad] of the
+            model the IDA runs (:func:`frp_assess.assess.kinematic_checks.model_capacity_curve`
+            passes the model's); None: the paper's values of the block about its edge.
     """
     if points < 2:
         raise ValueError(f"need at least 2 points, got {points!r}")
-    k = 0.0 if rebars is None else rebars.stiffness_term(wall)
-    theta_max = math.inf if rebars is None else rebars.rupture_rotation(wall)
+    k = (
+        stiffness
+        if stiffness is not None
+        else (0.0 if rebars is None else rebars.stiffness_term(wall))
+    )
+    theta_max = rupture_rotation
+    if theta_max is None:
+        theta_max = math.inf if rebars is None else rebars.rupture_rotation(wall)
+    alpha = wall.alpha if slenderness is None else slenderness
     e_star = participating_mass_fraction([1.0], [1.0])  # one block: e* = 1
     m_star = participating_mass([wall.mass * G], [1.0])  # = m
-    theta = np.linspace(0.0, wall.alpha, points)
-    if theta_max < wall.alpha:
+    theta = np.linspace(0.0, alpha, points)
+    if theta_max < alpha:
         theta = np.sort(np.concatenate([theta[theta != theta_max], [theta_max, theta_max]]))
     intact = np.ones(theta.size, dtype=bool)
-    if theta_max < wall.alpha:
+    if theta_max < alpha:
         intact = theta < theta_max
         intact[np.searchsorted(theta, theta_max)] = True  # the first of the two rupture points
-    mult = np.where(
-        intact, static_multiplier(theta, wall.alpha, k), static_multiplier(theta, wall.alpha)
-    )
+    mult = np.where(intact, static_multiplier(theta, alpha, k), static_multiplier(theta, alpha))
     a = mult * G / (e_star * fc)
     d = control_displacement(theta, wall)
-    return CapacityCurve(wall, k, theta_max, fc, e_star, m_star, d, a)
+    return CapacityCurve(wall, k, theta_max, fc, e_star, m_star, d, a, slenderness)
 
 
 # --- the limit states (Circolare 2019 §C8.7.1.2.1.6 and .8) ------------------------------------

@@ -10,7 +10,7 @@ import json
 import math
 from collections import Counter
 from collections.abc import Sequence
-from dataclasses import asdict, replace
+from dataclasses import asdict
 from typing import Any
 
 import numpy as np
@@ -18,6 +18,7 @@ import numpy as np
 from frp_assess import __version__
 from frp_assess.assess.as_built import design_as_built, option_as_built
 from frp_assess.assess.code_check import KinematicCheck
+from frp_assess.assess.decision import RANKING_RULE
 from frp_assess.assess.floor_input import FloorSpectra
 from frp_assess.assess.inputs import (
     UNREINFORCED,
@@ -30,7 +31,6 @@ from frp_assess.assess.inputs import (
 from frp_assess.assess.kinematic_checks import ida_capacity_demand
 from frp_assess.assess.pivot import case_pivot
 from frp_assess.assess.quantities import built_quantity
-from frp_assess.assess.ranking import RANKING_RULE, Rankable, rank_options
 from frp_assess.assess.runner import CaseSummary, DesignResult, design_value_rule
 from frp_assess.assess.seismic import SeismicInput
 from frp_assess.assess.site_result import site_result
@@ -72,6 +72,7 @@ from frp_assess.results.model import (
     SpectrumResult,
     WallResult,
 )
+from frp_assess.results.verdict import Robustness
 
 #: most points stored per time history in results.json
 MAX_HISTORY_POINTS = 2500
@@ -153,7 +154,8 @@ def case_result(
     fc: float = 1.0,
     floor_pga: Sequence[float] | None = None,
 ) -> CaseResult:
-    """One case, unranked (``rank`` None: :func:`rank_cases` ranks them).
+    """One case, undecided and unranked (``rank`` None, ``passes`` None: the decision,
+    :func:`frp_assess.assess.verdict.assess_and_decide`, fills them).
 
     ``demand`` is a_g·S [g]; ``fc`` the confidence factor dividing the IDA capacity
     (:func:`~frp_assess.assess.kinematic_checks.ida_confidence_factor`), so capacity/demand =
@@ -211,6 +213,7 @@ def case_result(
         frp_mass_per_m=q_mass_m,
         frp_mass=q_mass,
         frp_cost=cost,
+        # the IDA check alone; the decision sets it again (false for a dropped option)
         meets_target=cd >= inputs.target,
         rank=None,
         ratio_asked=option.asked if option else None,
@@ -278,23 +281,6 @@ def floor_spectra_result(spectra: FloorSpectra) -> FloorSpectraResult:
     )
 
 
-def rank_cases(
-    cases: Sequence[CaseResult], target: float
-) -> tuple[tuple[CaseResult, ...], str | None]:
-    """The cases with ``rank`` set on every option (not the unreinforced wall, the first),
-    and the name of the rank-1 option if it meets ``target`` (else None).  Every option is
-    ranked: none is dropped for the masonry at its base (docs/model.md §1.1).
-    Pure: ``cases`` are not changed."""
-    items = [
-        Rankable(i, c.capacity_demand, c.frp_cost, c.frp_mass) for i, c in enumerate(cases) if i > 0
-    ]
-    order = rank_options(items, target)
-    rank_of = {idx: rank for rank, idx in enumerate(order, start=1)}
-    ranked = tuple(replace(c, rank=rank_of.get(i)) for i, c in enumerate(cases))
-    best = ranked[order[0]] if order else None
-    return ranked, best.name if best is not None and best.meets_target else None
-
-
 def below_collapse(collapse: float, survivor: float | None, tolerance: float) -> float:
     """The multiplier of the "just below collapse" time history.
 
@@ -344,7 +330,8 @@ def compliance_result(seismic: SeismicInput) -> Compliance:
 
 
 def code_check_result(check: KinematicCheck, mass: float, above_ground: bool = False) -> CodeCheck:
-    """The linear check of results.json; ``above_ground``: its demand is a_Z/q."""
+    """The linear check of results.json (of the unreinforced wall's model); ``above_ground``:
+    its demand is a_Z/q."""
     at_height = (
         " Above ground the demand is a_Z/q, a_Z the peak acceleration of the floor at the "
         "wall's base (Circolare 2019 eq. C7.2.7, first mode; §C8.7.1.2.1.7)."
@@ -362,16 +349,24 @@ def code_check_result(check: KinematicCheck, mass: float, above_ground: bool = F
         demand=check.demand,
         ratio=check.ratio,
         passed=check.passed,
-        note="Passive unbonded bars carry no load at rest: they do not change alpha0, "
-        "so this check is the same for every retrofit option." + at_height,
+        note="alpha0 = a_RM/g of the model the IDA runs (its moment balance about the pivot, "
+        "the base reaction included). Passive unbonded bars carry no load at rest: they do "
+        "not change alpha0, but each option's own model may (see kinematic_checks). A "
+        "supporting check: the IDA and the time-history checks decide." + at_height,
     )
 
 
-def design_rows(inputs: AssessmentInputs, found: Sequence[DesignResult]) -> tuple[DesignRow, ...]:
+def design_rows(
+    inputs: AssessmentInputs,
+    found: Sequence[DesignResult],
+    cases: Sequence[str | None] | None = None,
+) -> tuple[DesignRow, ...]:
     """Design mode's answers; mass [kg] and cost [currency] are those of the bars as built
-    (bond lengths counted) when the answer has a layout, else of the smeared ratio."""
+    (bond lengths counted) when the answer has a layout, else of the smeared ratio;
+    ``cases``: the case each answer is in the results (None: none)."""
     out = []
-    for d in found:
+    names = list(cases) if cases is not None else [None] * len(found)
+    for d, case in zip(found, names, strict=True):
         built = design_as_built(inputs, d)
         mass: float | None = None
         cost: float | None = None
@@ -388,6 +383,7 @@ def design_rows(inputs: AssessmentInputs, found: Sequence[DesignResult]) -> tupl
                 frp_cost=cost,
                 message=d.message,
                 as_built=built,
+                case=case,
             )
         )
     return tuple(out)
@@ -436,6 +432,10 @@ def build_results(
     sensitivity: Sensitivity | None = None,
     floor_spectra: FloorSpectra | None = None,
     kinematic_checks: KinematicChecks | None = None,
+    design_cases: Sequence[str | None] | None = None,
+    decision_rule: str = "",
+    closest: str | None = None,
+    robustness: Robustness | None = None,
 ) -> AssessmentResult:
     """The whole result, from the ranked ``cases`` and the rest of the assessment
     (``floor_spectra`` for a wall above ground, :func:`frp_assess.assess.floor_input.floor_spectra`;
@@ -496,8 +496,11 @@ def build_results(
         cases=tuple(cases),
         ranking_rule=RANKING_RULE.format(target=inputs.target),
         recommended=recommended,
-        retrofit_required=not cases[0].meets_target,
-        design=None if design is None else design_rows(inputs, design),
+        # the unreinforced wall fails the decision (or, undecided, the IDA's target)
+        retrofit_required=not (
+            cases[0].passes if cases[0].passes is not None else cases[0].meets_target
+        ),
+        design=None if design is None else design_rows(inputs, design, design_cases),
         governing=governing,
         numerical_check=None
         if numerical_check is None
@@ -511,6 +514,9 @@ def build_results(
         floor_spectra=None if floor_spectra is None else floor_spectra_result(floor_spectra),
         masonry_strength=inputs.masonry_strength,
         kinematic_checks=kinematic_checks,
+        decision_rule=decision_rule,
+        closest=closest,
+        robustness=robustness,
         site=site_result(inputs.site, inputs.site_limit_state),
     )
 

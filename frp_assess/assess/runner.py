@@ -203,7 +203,8 @@ class DesignResult:
 def bisect_boundary(lo: int, hi: int, on_lo_side: Callable[[int], bool]) -> tuple[int, int]:
     """Narrow the grid indices ``lo`` < ``hi`` (``lo`` on one side of a monotone predicate,
     ``hi`` on the other) to neighbours ``(lo, hi)``, halving: ``on_lo_side(mid)`` says which
-    end ``mid`` replaces.  The design search's two bisections (pivot cap, target)."""
+    end ``mid`` replaces.  The design search uses it for the pivot cap only (the installed
+    ratio is monotone along the grid; capacity is not, so the target is not bisected)."""
     while hi - lo > 1:
         mid = (lo + hi) // 2
         if on_lo_side(mid):
@@ -219,19 +220,24 @@ def design_search(
     material: Material,
     position: Position,
     demand_g: float,
+    screen: Callable[[RockingModel], bool] | None = None,
 ) -> DesignResult:
-    """Smallest ρ on the grid of ``resolution`` within ``ratio_range`` whose design capacity
-    meets the target, by bisection (capacity/demand is taken as increasing with ρ).
+    """Smallest ρ on the grid of ``resolution`` within ``ratio_range`` that passes every
+    deciding check: ``screen(model)`` (the time-history checks,
+    :func:`frp_assess.assess.verdict.time_history_screen`; None: none) and the IDA's design
+    capacity/demand ≥ the target (``demand_g`` = FC·a_g·S [g]).  Capacity is not assumed to
+    grow with ρ (it does not: a stiffer bar can break sooner, a heavier one move the pivot):
+    the grid is walked from the bottom up and the first ratio that passes is the answer, so
+    every smaller grid ratio was checked and failed.
 
     Each grid ratio is built in whole bars (:func:`~frp_assess.assess.as_built.choose_layout`,
     the diameter chosen by the least installed ratio) and the model runs with the installed
     ratio (with ``bars.whole_bars``), so the answer's layout installs at least the ratio found
     and capacity/demand is that of the bars as built.  The installed ratio never decreases
     along the grid (each size's rounding is monotone, and a size that stops fitting the
-    spacing rule never comes back), so the bisection keeps its premise.  Grid ratios beyond
-    the largest installable one are left out of the search; the message says so.  (No ratio
-    is left out for the masonry at the base: a toe that crushes is the IDA's failure mode,
-    docs/model.md §1.1.)
+    spacing rule never comes back).  Grid ratios beyond the largest installable one are left
+    out of the search; the message says so.  (No ratio is left out for the masonry at the
+    base: a toe that crushes is the IDA's failure mode, docs/model.md §1.1.)
     """
     assert inputs.design is not None
     lo_r, hi_r = inputs.design.ratio_range
@@ -261,41 +267,66 @@ def design_search(
     def model_ratio(k: int) -> float:
         return layout(k).ratio_installed if inputs.bars.whole_bars else k * res
 
+    def model(k: int) -> RockingModel:
+        return inputs.model_of(material, position, model_ratio(k))
+
     def evaluate(k: int) -> CaseSummary:
         if k not in cache:
-            model = inputs.model_of(material, position, model_ratio(k))
-            cache[k] = summarise(runner.run([model])[0], inputs.ida.max_multiplier, model.a_rm_g)
+            m = model(k)
+            cache[k] = summarise(runner.run([m])[0], inputs.ida.max_multiplier, m.a_rm_g)
         return cache[k]
 
-    def ok(k: int) -> bool:
-        return evaluate(k).design_a_dyn / demand_g >= inputs.target
-
-    if grid_hi < grid_lo or not ok(grid_hi):
-        top = evaluate(grid_hi) if grid_hi >= grid_lo else None
-        cd = None if top is None else top.design_a_dyn / demand_g
+    # the grid from the bottom up, no assumption that capacity grows with the ratio: the
+    # first grid ratio that passes is the smallest (the cheap time-history screen first, the
+    # IDA only where it passes)
+    best: tuple[float, int] | None = None  # (largest IDA capacity/demand seen, its k)
+    screened_out = 0
+    found: int | None = None
+    for k in range(grid_lo, grid_hi + 1):
+        if screen is not None and not screen(model(k)):
+            screened_out += 1
+            continue
+        cd_k = evaluate(k).design_a_dyn / demand_g
+        if best is None or cd_k > best[0]:
+            best = (cd_k, k)
+        if cd_k >= inputs.target:
+            found = k
+            break
+    if found is None:
+        n = max(grid_hi - grid_lo + 1, 0)
+        reach = ""
+        if best is not None:
+            reach = f" (the IDA reaches at most {best[0]:.2f}, at {best[1] * res:g} ‰)"
+        screen_note = (
+            f"; the time-history check fails at {screened_out} of the {n} grid ratios"
+            if screen is not None and screened_out
+            else ""
+        )
         return DesignResult(
             material,
             position,
             None,
-            top,
-            cd,
-            f"no ratio up to {hi_shown:g} ‰ meets the target {inputs.target:g}"
-            + ("" if cd is None else f" (reaches {cd:.2f} at {hi_shown:g} ‰)")
+            None if best is None else evaluate(best[1]),
+            None if best is None else best[0],
+            f"no ratio up to {hi_shown:g} ‰ passes every deciding check (IDA target "
+            f"{inputs.target:g}{', time history SLV and SLC' if screen is not None else ''})"
+            + reach
+            + screen_note
             + cap_note,
         )
-    if ok(grid_lo):
-        k = grid_lo
-    else:
-        k = bisect_boundary(grid_lo, grid_hi, lambda j: not ok(j))[1]  # grid_lo fails, hi passes
+    k = found
     s = evaluate(k)
     ratio = round(k * res, 6)
     if k == grid_lo:
         message = (
-            f"ρ = {ratio:g} ‰, the lower end of ratio_range, already meets the target "
-            f"(a smaller ratio may too: lower ratio_range to find the smallest)"
+            f"ρ = {ratio:g} ‰, the lower end of ratio_range, already passes every deciding "
+            f"check (a smaller ratio may too: lower ratio_range to find the smallest)"
         )
     else:
-        message = f"ρ = {ratio:g} ‰ is the smallest ratio (to {res:g} ‰) meeting the target"
+        message = (
+            f"ρ = {ratio:g} ‰ is the smallest ratio on the grid (every {res:g} ‰, each one "
+            "checked) passing every deciding check"
+        )
     lay = layout(k)
     message += f"; built as {lay.note}"
     return DesignResult(

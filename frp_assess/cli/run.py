@@ -26,10 +26,11 @@ from frp_assess.cli.wall_args import TOLERANCE
 from frp_assess.errors import Cancelled, InputError
 from frp_assess.numbers import (
     checks_summary,
-    fmt_against,
+    fmt_capacity,
     numerical_check_text,
     recommendation_label,
     recommendation_text,
+    verdict_text,
 )
 from frp_assess.output_set import FolderLock, check_out_dir
 from frp_assess.results.model import AssessmentResult, CaseResult
@@ -118,13 +119,15 @@ def ranking_columns(results: AssessmentResult) -> list[Column]:
         Column("mean q [–]"),
         Column("improvement [–]"),
         Column("capacity / demand [–]"),
-        Column("meets target"),
+        Column("verdict", text=True),
     ]
 
 
 def ranking_rows(results: AssessmentResult) -> list[list[str]]:
     """One row per case (plain text): the unreinforced wall, the options by rank, then those
-    the pivot check dropped (rank "dropped", the reason below the table: :func:`dropped_lines`)."""
+    the pivot check dropped (rank "dropped", the reason below the table: :func:`dropped_lines`).
+    capacity/demand is the IDA's ("≥" before a lower bound); the verdict is the decision's:
+    "passes" every deciding check, or "fails: <governing check> <margin>"."""
     target = float(results.model.target)
     ordered = [results.urm, *results.ranked_options]
     return [
@@ -136,8 +139,8 @@ def ranking_rows(results: AssessmentResult) -> list[list[str]]:
             f"{c.design_a_dyn:.3f}",
             f"{c.mean_q:.2f}",
             f"{c.improvement:.2f}",
-            fmt_against(c.capacity_demand, target, c.meets_target),
-            "yes" if c.meets_target else "no",
+            fmt_capacity(c, target),
+            verdict_text(c),
         ]
         for c in ordered
     ]
@@ -172,6 +175,9 @@ def print_ranking(con: Console, results: AssessmentResult) -> None:
     )
     for line in dropped_lines(results):
         con.print(user(line))
+    for c in results.cases:
+        if c.remark:
+            con.print(f"note, {user(c.name)}: {user(c.remark)}")
 
 
 def print_floor_and_checks(console: Console, results: AssessmentResult) -> None:
@@ -184,7 +190,7 @@ def print_floor_and_checks(console: Console, results: AssessmentResult) -> None:
             f"(first mode: γ1 = {b.gamma1:.3g}, ψ1 = {b.psi1:.3g}, T1 = {b.period:.3g} s); "
             "a_dyn and capacity/demand are in ground terms"
         )
-    for label, line in checks_summary(results):
+    for label, line in checks_summary(results, labelled=True):
         console.print(f"code checks, {user(label)}: {user(line)}")
 
 
@@ -202,7 +208,6 @@ def run(args: argparse.Namespace) -> int:
         return _run(args, inputs, out_dir)
 
 
-
 def activation_text(results: AssessmentResult) -> str:
     """``a_RM = … g`` [g] of the unreinforced wall's model, with the crushing pivot's depth x
     [mm] when the model turns about it (then a_RM = g·(B − x)/H, not g·tan α; docs/model.md
@@ -212,6 +217,7 @@ def activation_text(results: AssessmentResult) -> str:
     if piv is not None and piv.model_pivot == "crushing" and piv.pivot_shift > 0.0:
         text += f" about the crushing pivot (x = {piv.depth * 1000:.0f} mm)"
     return text
+
 
 def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> int:
     console = make_console()
@@ -268,9 +274,9 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
     console.print(
         f"wall B = {w.thickness:g} m, H = {w.height:g} m, α = {w.alpha_deg:.2f}°, "
         f"{activation_text(results)}, {user(w.mechanism)}; unreinforced: design a_dyn = "
-        f"{urm.design_a_dyn:.3f} g, capacity/demand = "
-        f"{fmt_against(urm.capacity_demand, target, urm.meets_target)} "
-        f"({fc}{'meets' if urm.meets_target else 'does NOT meet'} the target)"
+        f"{urm.design_a_dyn:.3f} g, capacity/demand = {fmt_capacity(urm, target)} "
+        f"({fc}{'meets' if urm.meets_target else 'does NOT meet'} the target; "
+        f"verdict: {verdict_text(urm)})"
     )
     print_floor_and_checks(console, results)
     cc = results.code_check
@@ -278,14 +284,18 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
         f"code kinematic check (Circolare 2019 §C8.7.1, q = {cc.behaviour_factor:g}, "
         f"FC = {cc.FC:g}): a0* = {cc.a0_star:.3f} g vs "
         f"{'a_Z/q' if results.building else 'a_g·S/q'} = {cc.demand:.3f} g "
-        f"-> {'satisfied' if cc.passed else 'NOT satisfied'}. {user(cc.note)}"
+        f"-> {'satisfied' if cc.passed else 'NOT satisfied'} (supporting check). "
+        f"{user(cc.note)}"
     )
     if len(results.cases) > 1:
         print_ranking(console, results)
+        console.print(f"Decision rule: {user(results.decision_rule)}")
         console.print(f"Ranking rule: {user(results.ranking_rule)}")
         console.print(f"{recommendation_label(results)}: " + user(recommendation_text(results)))
         for line in built_lines(results):
             console.print(user(line))
+        if results.robustness is not None:
+            console.print(f"Robustness: {user(results.robustness.summary)}")
     if not results.input_code_compliant:
         console.print(
             "[bold red]INPUT NOT CODE-COMPLIANT[/]: the records fail the code's "

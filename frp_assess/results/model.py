@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 from frp_assess.results.as_built import AsBuilt
 from frp_assess.results.checks import KinematicChecks
 from frp_assess.results.pivot import MasonryResult, PivotResult
+from frp_assess.results.verdict import DecidingCheck, Robustness
 
 #: version of the contract written as ``schema_version``; another is refused on reading
 SCHEMA_VERSION = 1
@@ -317,11 +318,12 @@ class CaseResult:
 
     ratio [‰]; elastic_modulus [GPa]; ultimate_strain [-]; K restraint stiffness term of
     Eq. 10 [-]; theta_max rupture rotation [rad]; accelerations (mean/min/design a_dyn) [g];
-    q [-]; capacity_demand = design_a_dyn / (fc·demand.pga) [-]; improvement = design_a_dyn over
-    that of the unreinforced wall [-]; frp_mass_per_m [kg/m]; frp_mass [kg] and frp_cost
-    [currency] for the whole wall (of the bars as built when ``as_built`` is set); rank 1 =
-    recommended, None for the unreinforced wall; q and mean_q are over a_RM = g·tan α_x
-    (the same for every case of a wall).
+    q [-]; capacity_demand = design_a_dyn / (fc·demand.pga) [-] (a lower bound when
+    ``lower_bound``); improvement = design_a_dyn over that of the unreinforced wall [-];
+    frp_mass_per_m [kg/m]; frp_mass [kg] and frp_cost [currency] for the whole wall (of the
+    bars as built when ``as_built`` is set); rank 1 = the first by the ranking rule (the
+    recommendation only if ``recommended``), None for the unreinforced wall; q and mean_q are
+    over a_RM = g·tan α_x (the same for every case of a wall).
     """
 
     name: str
@@ -344,6 +346,8 @@ class CaseResult:
     frp_mass_per_m: float
     frp_mass: float
     frp_cost: float
+    #: the IDA check alone: capacity/demand ≥ target (a lower bound counted at its bound);
+    #: the verdict is ``passes``
     meets_target: bool
     rank: int | None  #: None: the unreinforced wall
     #: ρ asked [‰] (``ratio`` is the ratio the model uses: installed with bars.whole_bars);
@@ -361,6 +365,20 @@ class CaseResult:
     #: goes to the mode of the least favourable record among the tied); None when no record
     #: collapsed up to C_max
     failure_mode: str | None = None
+    #: the deciding checks (docs/results-json.md, "The decision"); () in older files
+    deciding_checks: tuple[DecidingCheck, ...] = ()
+    #: every deciding check passes; None: not decided (an older file)
+    passes: bool | None = None
+    #: the deciding check with the smallest margin, and that margin [-] (None: unbounded)
+    governing_check: str | None = None
+    governing_margin: float | None = None
+    governing_lower_bound: bool = False  #: the governing margin is a lower bound
+    #: this case is the recommendation (the cheapest passing option)
+    recommended: bool = False
+    #: "option" (from interventions) or "design" (a design-mode answer)
+    source: str = "option"
+    #: one sentence explaining an odd result (weaker than the bare wall, q < 1); None: none
+    remark: str | None = None
 
     @property
     def is_unreinforced(self) -> bool:
@@ -370,8 +388,9 @@ class CaseResult:
 
 @dataclass(frozen=True)
 class DesignRow:
-    """Design mode, one (material, position): the smallest ratio meeting the target [‰]
-    (None: none in range), its capacity/demand [-], FRP mass [kg] and cost [currency]."""
+    """Design mode, one (material, position): the smallest ratio on the grid passing every
+    deciding check [‰] (None: none in range), its IDA capacity/demand [-], FRP mass [kg] and
+    cost [currency]."""
 
     material: str
     position: str
@@ -382,6 +401,9 @@ class DesignRow:
     message: str
     #: the bars of the answer as they will be built (None: no ratio met the target)
     as_built: AsBuilt | None = None
+    #: the name of the case this answer was added as (None: no answer, or an option of the
+    #: same material, position and ratio already in ``cases``)
+    case: str | None = None
 
 
 @dataclass(frozen=True)
@@ -496,9 +518,10 @@ class FloorSpectraResult:
 class AssessmentResult:
     """Everything ``frp-assess run`` found: the content of results.json.
 
-    ``cases[0]`` is the unreinforced wall; ``recommended`` names the cheapest option meeting
-    the target (or None); ``governing``, ``design``, ``numerical_check`` and ``sensitivity``
-    are None when not computed.
+    ``cases[0]`` is the unreinforced wall; ``recommended`` names the cheapest option passing
+    every deciding check (or None; ``closest`` then names the nearest); ``governing``,
+    ``design``, ``numerical_check``, ``sensitivity`` and ``robustness`` are None when not
+    computed.
     """
 
     schema_version: int
@@ -533,6 +556,12 @@ class AssessmentResult:
     masonry_strength: MasonryResult | None = None
     #: the code's kinematic checks of every case (Circolare 2019 §C8.7.1); None: not computed
     kinematic_checks: KinematicChecks | None = None
+    #: the decision rule in words ("" in older files)
+    decision_rule: str = ""
+    #: when nothing passes: the option with the largest governing margin; else None
+    closest: str | None = None
+    #: how firm the verdict is; None: not computed
+    robustness: Robustness | None = None
     #: the site, when the spectrum is given by its coordinates; the key is absent otherwise
     site: SiteResult | None = field(default=None, metadata={"omit_if_none": True})
 

@@ -11,7 +11,7 @@ from textual.binding import Binding, BindingType
 from textual.message import Message
 from textual.widgets import DataTable, TabbedContent
 
-from frp_assess.numbers import fmt_against
+from frp_assess.numbers import fmt_capacity, fmt_margin
 from frp_assess.results.model import CaseResult
 from frp_assess.tui.core.text import printable
 from frp_assess.tui.literal import literal, safe
@@ -31,7 +31,8 @@ def rank_cell(case: CaseResult) -> Any:
 
 
 #: (header, sort key, cell) of the ranking table; the cell takes the case and the target C/D
-#: (C/D shown with the decimals that agree with "meets", :func:`~frp_assess.numbers.fmt_against`)
+#: (C/D with "≥" before a lower bound, :func:`~frp_assess.numbers.fmt_capacity`; the verdict,
+#: governing check and margin of the decision, :mod:`frp_assess.assess.decision`)
 RANKING_COLUMNS: list[
     tuple[str, Callable[[CaseResult], Any], Callable[[CaseResult, float], Any]]
 ] = [
@@ -43,17 +44,29 @@ RANKING_COLUMNS: list[
     ("a_dyn [g]", lambda c: c.design_a_dyn, lambda c, _: f"{c.design_a_dyn:.3f}"),
     ("q", lambda c: c.mean_q, lambda c, _: f"{c.mean_q:.2f}"),
     ("impr.", lambda c: c.improvement, lambda c, _: f"{c.improvement:.2f}"),
+    ("C/D", lambda c: c.capacity_demand, lambda c, t: fmt_capacity(c, t)),
+    ("verdict", lambda c: (c.passes is not True,), lambda c, _: verdict_cell(c)),
+    ("governing", lambda c: c.governing_check or "", lambda c, _: c.governing_check or "—"),
     (
-        "C/D",
-        lambda c: c.capacity_demand,
-        lambda c, t: fmt_against(c.capacity_demand, t, c.meets_target),
-    ),
-    (
-        "meets",
-        lambda c: c.meets_target,
-        lambda c, _: Text("yes", "green") if c.meets_target else Text("no", "red"),
+        "margin",
+        lambda c: -1.0 if c.governing_margin is None else c.governing_margin,
+        lambda c, _: (
+            "—"
+            if c.governing_check is None
+            else fmt_margin(c.governing_margin, c.governing_lower_bound)
+        ),
     ),
 ]
+
+
+def verdict_cell(case: CaseResult) -> Any:
+    """ "passes" (green, "recommended" for the recommendation) or "fails" (red); "—" for a
+    case not decided (an older results file)."""
+    if case.passes is None:
+        return "—"
+    if case.passes:
+        return Text("recommended" if case.recommended else "passes", "green")
+    return Text("fails", "red")
 
 
 def sorted_order(cases: Sequence[CaseResult], column: int, reverse: bool) -> list[int]:

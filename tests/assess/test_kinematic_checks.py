@@ -32,15 +32,15 @@ from frp_assess.assess.kinematic_checks import (
     base_motions,
     case_checks,
     displacement_spectrum,
-    edge_rotation,
     ida_capacity_demand,
     ida_check,
     ida_confidence_factor,
     kinematic_checks,
+    linear_check,
+    model_capacity_curve,
     peak_displacements,
 )
-from frp_assess.assess.kinematic_nonlinear import control_displacement
-from frp_assess.dynamics import ModelOptions, RockingModel, Wall
+from frp_assess.dynamics import ModelOptions, Rebars, RockingModel, Wall
 from frp_assess.motions import ElasticSpectrum, Record
 from frp_assess.results.checks import KinematicChecks
 from frp_assess.results.json_io import from_data, to_json
@@ -66,6 +66,8 @@ def _inputs(**changes: object) -> AssessmentInputs:
         "spectrum": SPECTRUM,
         "records": ArtificialRecords(),
         "options": (CFRP_EXTERNAL,),
+        # the paper's block about its edge: the hand calculations below are for α = 7.5°
+        "model": ModelOptions(pivot="edge"),
     }
     base.update(changes)
     return AssessmentInputs(**base)  # type: ignore[arg-type]
@@ -241,10 +243,17 @@ class _StubModel:
     def __post_init__(self) -> None:
         self.scales: list[float] = []
 
+    K: float = 0.0
+    theta_max: float = math.inf
+
     @property
     def alpha(self) -> float:
         """The edge pivot: the model's slenderness is the wall's."""
         return self.wall.alpha
+
+    @property
+    def a_rm_g(self) -> float:
+        return math.tan(self.wall.alpha)
 
     def run(self, acc: object, dt: float, scale: float = 1.0) -> _Result:
         self.scales.append(scale)
@@ -318,19 +327,28 @@ def test_peak_displacements_of_the_real_model():
     assert peaks[1] == math.inf
 
 
-def test_crushing_pivot_rotation_is_compared_on_the_edge_geometry():
-    """With the crushing pivot the model tips at α' < α; its peak rotation goes to the code's
-    edge geometry as the same fraction of the way to tipping: α' ↦ d0 = B/2 (d_C(α) = R·sin α,
-    Circolare 2019 §C8.7.1.2.1.9 compares the peaks with d0 and d_SLV of the edge block)."""
+def test_checks_use_the_models_slenderness_and_stiffness():
+    """The code checks use the model the IDA runs.  With the crushing pivot the model's
+    restoring moment vanishes at α' = atan((B − x)/H) (x = N/(0.85·f_d)): α0 of the linear
+    check is tan α' = (B − x)/H (not B/H), d0 = d_C(α') = R·[sin α − sin(α − α')] of the block
+    turning about its corner (< B/2), and the capacity curve carries the model's K'."""
     wall = Wall(WALL.thickness, WALL.height, WALL.unit_weight, compressive_strength=0.5e6)
     model = RockingModel(wall, "one-sided", None, ModelOptions(pivot="crushing"))
     x = WALL.unit_weight * WALL.thickness * WALL.height / (0.85 * 0.5e6)  # N/(0.85·f_d) [m]
     assert model.alpha == pytest.approx(math.atan((WALL.thickness - x) / WALL.height))
     assert model.alpha < wall.alpha - 1e-3  # the pivot did move: the test can tell
-    d_tip = control_displacement(edge_rotation(model.alpha, model), wall)
-    assert d_tip == pytest.approx(WALL.thickness / 2, rel=1e-12)
-    edge = RockingModel(WALL, "one-sided")
-    assert edge_rotation(0.01, edge) == 0.01
+    curve = model_capacity_curve(model, FC)
+    assert curve.d0 == pytest.approx(R * (math.sin(ALPHA) - math.sin(ALPHA - model.alpha)))
+    assert curve.d0 < WALL.thickness / 2 - 1e-4
+    assert curve.a0 == pytest.approx((WALL.thickness - x) / WALL.height * G / FC, rel=1e-9)
+    lin = linear_check(model, AGS, "LC1", 2.0)
+    assert lin.alpha0 == pytest.approx((WALL.thickness - x) / WALL.height, rel=1e-9)
+    bars = RockingModel(wall, "one-sided", Rebars(46e9, 0.015, "centred", 1.0), model.options)
+    curve_b = model_capacity_curve(bars, FC)
+    assert curve_b.stiffness == pytest.approx(bars.K) and bars.K > 0.0
+    assert curve_b.d0 == pytest.approx(
+        R * (math.sin(ALPHA) - math.sin(ALPHA - bars.alpha)), rel=1e-12
+    )
 
 
 def test_records_are_scaled_to_the_design_pga_before_the_time_histories():

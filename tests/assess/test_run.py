@@ -79,7 +79,13 @@ def test_run_writes_consistent_results(tmp_path):
         assert c.fc == 1.35
         assert c.capacity_demand == pytest.approx(c.design_a_dyn / (1.35 * demand))
         assert c.improvement == pytest.approx(c.design_a_dyn / cases[0].design_a_dyn)
-        assert c.meets_target == (c.capacity_demand >= 3.0)
+        # meets_target is the IDA check alone (false for a dropped option); the verdict,
+        # passes, needs every deciding check (the IDA's among them)
+        dropped = c.pivot is not None and c.pivot.dropped and c.rank is None and c.ratio > 0
+        assert c.meets_target == (c.capacity_demand >= 3.0 and not dropped)
+        assert c.passes is not None and (not c.passes or c.meets_target)
+        assert c.governing_check in {x.name for x in c.deciding_checks}
+        assert c.recommended == (c.name == results.recommended)
     # fewer than 7 records: the design value is the least favourable record
     assert cases[1].design_a_dyn == pytest.approx(cases[1].min_a_dyn)
     # options failing the pivot check get no rank; the others rank 1, 2, ...
@@ -88,6 +94,10 @@ def test_run_writes_consistent_results(tmp_path):
     assert all(c.rank is None for c in cases[1:] if c.pivot.dropped)
     d = results.design[0]
     assert d.ratio is None or d.capacity_demand >= 3.0
+    # a design answer is a case of the results, decided like the others: it passes
+    if d.ratio is not None:
+        answer = results.case(d.case)
+        assert answer is not None and answer.passes
     # the answer's bars as built: they install at least the ratio found, and its FRP mass and
     # cost are theirs
     if d.ratio is None:
@@ -96,7 +106,7 @@ def test_run_writes_consistent_results(tmp_path):
         assert d.as_built is not None and d.as_built.ratio_installed >= d.ratio
         assert (d.frp_mass, d.frp_cost) == (d.as_built.mass, d.as_built.cost)
     lines = (tmp_path / "results.csv").read_text().splitlines()
-    assert len(lines) == 1 + 3 * 3
+    assert len(lines) == 1 + len(cases) * 3
     assert results.governing.runs[0].collapsed is True
     assert results.governing.runs[1].collapsed is False
 

@@ -60,6 +60,7 @@ def _collect(name: str, out_dir: Path, files: tuple[str, ...]) -> dict[str, byte
 def run_project(name: str, out_dir: Path, jobs: int) -> dict[str, bytes]:
     """``frp-assess run`` of golden project ``name`` into ``out_dir`` with ``jobs`` workers
     (an existing ``out_dir`` reuses its .cache); returns its golden files."""
+    out_dir.parent.mkdir(parents=True, exist_ok=True)  # `run` refuses a missing parent
     _call(
         [
             "run",
@@ -79,6 +80,7 @@ def run_project(name: str, out_dir: Path, jobs: int) -> dict[str, bytes]:
 def run_study(name: str, out_dir: Path, jobs: int) -> dict[str, bytes]:
     """``frp-assess study`` of golden study ``name`` into ``out_dir`` with ``jobs`` workers
     (an existing ``out_dir`` resumes from its chunks and .cache); returns its golden files."""
+    out_dir.parent.mkdir(parents=True, exist_ok=True)  # `study` refuses a missing parent
     _call(
         [
             "study",

@@ -21,11 +21,12 @@ import pytest
 
 from frp_assess.api import run_assessment
 from frp_assess.assess.inputs import DesignRequest
-from frp_assess.assess.results import case_failure_mode, rank_cases
+from frp_assess.assess.results import case_failure_mode
 from frp_assess.assess.runner import design_search
-from frp_assess.cli.run import built_lines, ranking_rows
+from frp_assess.cli.run import built_lines, dropped_lines, ranking_rows
 from frp_assess.report import as_built_section
 from frp_assess.report.document import build_report
+from frp_assess.report.tables import ranking_table
 from frp_assess.results.json_io import from_json, to_json
 from frp_assess.results.model import AssessmentResult
 from tests.assess.test_as_built import RatioRunner, inputs_of
@@ -100,19 +101,28 @@ def test_failure_modes_per_record_and_per_case(tmp_path: Path) -> None:
     assert case_failure_mode((replace(rec, a_dyn=None, failure_mode=None),)) is None
 
 
-def test_ranking_ignores_the_compression_at_the_base(tmp_path: Path) -> None:
-    """No option is dropped for its base: the cheapest option meeting the target ranks
-    first, whatever its pivot record says (even a file written when options were dropped)."""
+def test_a_file_with_a_dropped_option_still_reads_and_shows_why(tmp_path: Path) -> None:
+    """No run drops an option for its base any more (docs/model.md §1.1), but a results file
+    written when options were dropped still shows the reason and gives that option no rank."""
     r = small_result(tmp_path)
     urm, a, b = (replace(c, rank=None) for c in r.cases)
-    assert b.pivot is not None
-    old = replace(b.pivot, dropped=True, reason="B: x/B = 0.600; dropped: too deep")
-    a = replace(a, capacity_demand=4.0, meets_target=True, frp_cost=50.0)
-    b = replace(b, capacity_demand=5.0, meets_target=True, frp_cost=1.0, pivot=old)
-    ranked, best = rank_cases((urm, a, b), target=3.0)
-    assert [c.rank for c in ranked] == [None, 2, 1] and best == b.name
-    rows = ranking_rows(replace(r, cases=ranked, recommended=best))
-    assert "dropped" not in [row[0] for row in rows]
+    assert a.pivot is not None
+    holds = replace(a.pivot, dropped=False)
+    fails = replace(a.pivot, dropped=True, reason="B: x/B = 0.600; dropped: too deep")
+    # b would rank first (cheapest, meets the target) but fails the pivot check
+    a = replace(a, capacity_demand=4.0, meets_target=True, frp_cost=50.0, pivot=holds)
+    b = replace(b, capacity_demand=5.0, meets_target=True, frp_cost=1.0, pivot=fails)
+    # the decision gives b no rank (tests/assess/test_decision.py): a is the first
+    ranked, best = (urm, replace(a, rank=1), b), a.name
+    # the reason is shown: CLI ranking and summary line, report ranking table
+    result = replace(r, cases=ranked, recommended=best)
+    rows = ranking_rows(result)
+    assert [row[0] for row in rows] == ["—", "1", "dropped"]
+    assert dropped_lines(result) == ["B: x/B = 0.600; dropped: too deep"]
+    assert [row[0] for row in ranking_table(result).rows] == ["—", "1", "dropped"]
+    assert as_built_section.dropped_reasons(result) == ["B: x/B = 0.600; dropped: too deep"]
+    pivot_rows = as_built_section.pivot_table(result.cases).rows
+    assert [row[-1] for row in pivot_rows] == ["holds", "holds", "dropped"]
 
 
 def test_new_fields_round_trip_and_old_files_still_read(tmp_path: Path) -> None:

@@ -337,19 +337,30 @@ def test_kinematic_table_does_not_round_a_failing_zeta_to_one():
         None,
     )
     checks = KinematicChecks("LC1", 1.35, "FC", True, 0.25, None, (case,))
-    table = kinematic_table(SimpleNamespace(kinematic_checks=checks))  # type: ignore[arg-type]
+    result = SimpleNamespace(kinematic_checks=checks, case=lambda name: None)
+    table = kinematic_table(result)  # type: ignore[arg-type]
     console = Console(width=240, record=True, file=open("/dev/null", "w"))  # noqa: SIM115
     console.print(table)
     row = next(line for line in console.export_text().splitlines() if line.strip().startswith("w "))
     assert row.split()[1:4] == ["0.78", "0.997", "1.00"]
 
 
-def test_ranking_cd_agrees_with_meets():
+def test_ranking_cd_agrees_with_the_ida_check_and_shows_the_verdict():
     """C/D = 0.997 against a target of 1 does not meet it: the ranking table's C/D cell reads
-    "0.997" beside "no" (not "1.00"), as the CLI and the report (numbers.fmt_against)."""
-    case = replace(typed(raw()).cases[1], capacity_demand=0.997, meets_target=False)
+    "0.997" (not "1.00"), as the CLI and the report (numbers.fmt_against); the verdict,
+    governing check and margin are the decision's; a lower bound reads "≥"."""
+    case = replace(
+        typed(raw()).cases[1],
+        capacity_demand=0.997,
+        meets_target=False,
+        lower_bound=False,
+        passes=False,
+        governing_check="time history SLV",
+        governing_margin=0.22,
+    )
     cells = {header: cell(case, 1.0) for header, _, cell in RANKING_COLUMNS}
     assert cells["C/D"] == "0.997"
-    assert cells["meets"].plain == "no"
-    passing = replace(case, capacity_demand=1.004, meets_target=True)
-    assert {h: cell(passing, 1.0) for h, _, cell in RANKING_COLUMNS}["C/D"] == "1.00"
+    assert cells["verdict"].plain == "fails"
+    assert cells["governing"] == "time history SLV" and cells["margin"] == "0.22"
+    passing = replace(case, capacity_demand=1.004, meets_target=True, lower_bound=True)
+    assert {h: cell(passing, 1.0) for h, _, cell in RANKING_COLUMNS}["C/D"] == "≥ 1.00"

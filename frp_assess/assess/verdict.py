@@ -1,0 +1,454 @@
+"""From the IDAs of a run to one verdict an engineer can sign (docs/results-json.md, "The
+decision").
+
+After the IDA of every case: design mode (the smallest grid ratio passing every deciding
+check, each answer added as a case), the code's kinematic checks of every case (the
+time-history checks among them), the decision (:mod:`frp_assess.assess.decision`), the
+sensitivity of the recommended (else the closest) case to the model conventions, and how
+firm the verdict is: P(collapse) at FC·a_g·S, the decision with each record left out, the
+case under each convention and who takes over when it fails.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import asdict, dataclass, replace
+
+from frp_assess.assess.decision import (
+    DECISION_RULE,
+    IDA_CHECK,
+    PIVOT_CHECK,
+    Decision,
+    Evidence,
+    Verdict,
+    decide,
+    leave_one_out,
+    verdict,
+)
+from frp_assess.assess.explain import remark
+from frp_assess.assess.inputs import AssessmentInputs, Option
+from frp_assess.assess.kinematic_checks import (
+    IdaSummary,
+    base_motions,
+    case_checks,
+    displacement_spectrum,
+    floor_ratio,
+    kinematic_checks,
+)
+from frp_assess.assess.results import case_result
+from frp_assess.assess.runner import CaseSummary, DesignResult, IdaRunner, design_search, summarise
+from frp_assess.assess.sensitivity import convention_variants, sensitivity
+from frp_assess.assess.statistics import fit_lognormal_fragility
+from frp_assess.config.schema import format_ratio
+from frp_assess.dynamics import IdaResult, RockingModel
+from frp_assess.motions import Record
+from frp_assess.results.checks import CaseChecks, KinematicChecks
+from frp_assess.results.model import CaseResult, Sensitivity, SensitivityRow
+from frp_assess.results.verdict import ConventionOutcome, LeaveOneOut, Robustness
+
+#: how many further options are tried, per failing convention, for the one that takes over
+TAKE_OVER_CANDIDATES = 3
+
+Report = Callable[[str, int, int], None]
+
+
+class CheckContext:
+    """The code checks of any model of one assessment at its design intensity."""
+
+    def __init__(self, inputs: AssessmentInputs, records: Sequence[Record]) -> None:
+        self.inputs = inputs
+        self.a_g = inputs.spectrum.pga_g
+        self.ratio = floor_ratio(inputs.spectrum, inputs.building)
+        self.sd = displacement_spectrum(inputs.spectrum, inputs.building)
+        self.motions = base_motions(records, inputs.building, self.a_g)
+
+    def checks(self, name: str, model: RockingModel) -> CaseChecks:
+        """Every code check of ``model`` (the time histories at the design intensity)."""
+        return case_checks(
+            name,
+            model,
+            a_g=self.a_g,
+            sd=self.sd,
+            settings=self.inputs.code_check,
+            floor_ratio_value=self.ratio,
+            motions=self.motions,
+        )
+
+    def screen(self, model: RockingModel) -> bool:
+        """The time-history checks at SLV and SLC pass (design mode's cheap first test)."""
+        c = self.checks("design", model)
+        return all(t is not None and t.passed for t in (c.time_history, c.time_history_slc))
+
+
+def evidence(
+    case: CaseResult,
+    summary: CaseSummary,
+    checks: CaseChecks,
+    demand: float,
+    target: float,
+) -> Evidence:
+    """What the decision reads of one case; ``demand`` = FC·a_g·S [g]."""
+    th = checks.time_history
+    peaks = None if th is None else tuple(math.inf if p is None else p for p in th.peaks)
+    return Evidence(
+        name=case.name,
+        cost=case.frp_cost,
+        mass=case.frp_mass,
+        a_dyn=summary.a_dyn_bound,
+        censored=tuple(a is None for a in summary.a_dyn),
+        demand=demand,
+        target=target,
+        peaks=peaks,
+        d0=checks.capacity.d0,
+        d_slv=checks.slv.d_limit,
+        d_slc=checks.slc.d_limit,
+        dropped=not case.is_unreinforced and case.pivot is not None and case.pivot.dropped,
+        unreinforced=case.is_unreinforced,
+    )
+
+
+def falls_inside(ev: Evidence) -> int:
+    """Records that topple the wall at the design intensity although their IDA a_dyn (or its
+    lower bound) reaches it."""
+    if ev.peaks is None:
+        return 0
+    return sum(
+        1
+        for a, p in zip(ev.a_dyn, ev.peaks, strict=True)
+        if not math.isfinite(p) and a >= ev.demand
+    )
+
+
+def decided_case(case: CaseResult, v: Verdict, rank: int | None, recommended: bool) -> CaseResult:
+    """``case`` with its verdict; meets_target is the IDA check's own verdict (false when
+    the pivot check drops the option)."""
+    ida = next(c for c in v.checks if c.name == IDA_CHECK)
+    dropped = any(c.name == PIVOT_CHECK for c in v.checks)
+    return replace(
+        case,
+        deciding_checks=v.checks,
+        passes=v.passes,
+        governing_check=v.governing_check,
+        governing_margin=v.governing_margin,
+        governing_lower_bound=v.governing_lower_bound,
+        meets_target=ida.passed and not dropped,
+        rank=rank,
+        recommended=recommended,
+    )
+
+
+@dataclass(frozen=True)
+class DecidedRun:
+    """Everything the decision adds to a run."""
+
+    inputs: AssessmentInputs  #: with the design-mode answers added as options
+    models: list[RockingModel]  #: of every case, in the order of ``cases``
+    results: list[list[IdaResult]]  #: IDA of every case under every record
+    cases: tuple[CaseResult, ...]
+    recommended: str | None
+    closest: str | None
+    design: list[DesignResult] | None
+    design_cases: list[str | None]  #: the case each design answer became (None: none/dup)
+    checks: KinematicChecks
+    sensitivity: Sensitivity
+    robustness: Robustness
+    decision_rule: str
+
+
+def design_options(
+    inputs: AssessmentInputs, design: Sequence[DesignResult]
+) -> tuple[list[Option], list[str | None]]:
+    """The design answers as options, named "<material> <position> <ρ>‰ (design)", and the
+    case each answer is (an existing option of the same material, position and model ratio
+    keeps its own name and is not added again)."""
+    added: list[Option] = []
+    names: list[str | None] = []
+    for d in design:
+        if d.ratio is None or d.ratio_model is None:
+            names.append(None)
+            continue
+        same = next(
+            (
+                o
+                for o in (*inputs.options, *added)
+                if o.material.name == d.material.name
+                and o.position == d.position
+                and math.isclose(o.ratio, d.ratio_model, rel_tol=1e-9)
+            ),
+            None,
+        )
+        if same is not None:
+            names.append(same.name)
+            continue
+        opt = Option(
+            name=f"{d.material.name} {d.position} {format_ratio(d.ratio)}‰ (design)",
+            material=d.material,
+            position=d.position,
+            ratio=d.ratio_model,
+            ratio_asked=d.ratio,
+            layout=d.layout,
+        )
+        added.append(opt)
+        names.append(opt.name)
+    return added, names
+
+
+def assess_and_decide(
+    inputs: AssessmentInputs,
+    runner: IdaRunner,
+    sens_runner: IdaRunner,
+    records: Sequence[Record],
+    models: list[RockingModel],
+    all_results: list[list[IdaResult]],
+    *,
+    fc: float,
+    floor_pga: Sequence[float] | None,
+    report: Report,
+) -> DecidedRun:
+    """Design mode, the code checks, the decision and its robustness (module docstring).
+
+    ``runner`` ran ``all_results`` (the cases of ``inputs``); ``sens_runner`` shares its cache
+    and counts the sensitivity's IDAs apart; ``fc`` divides the IDA capacity.
+    """
+    names = [r.name for r in records]
+    demand = inputs.spectrum.pga_g
+    ctx = CheckContext(inputs, records)
+    design: list[DesignResult] | None = None
+    design_cases: list[str | None] = []
+    if inputs.design is not None:
+        pairs = [(m, p) for m in inputs.design.materials for p in inputs.design.positions]
+        design = []
+        for k, (mat, pos) in enumerate(pairs):
+            report("design", k, len(pairs))
+            design.append(design_search(runner, inputs, mat, pos, fc * demand, ctx.screen))
+        report("design", len(pairs), len(pairs))
+        added, design_cases = design_options(inputs, design)
+        if added:
+            inputs = replace(inputs, options=(*inputs.options, *added))
+            new_models = [inputs.model_for(o) for o in added]
+            all_results = [*all_results, *runner.run(new_models)]
+            models = [*models, *new_models]
+            ctx.inputs = inputs
+    summaries = [
+        summarise(r, inputs.ida.max_multiplier, m.a_rm_g)
+        for m, r in zip(models, all_results, strict=True)
+    ]
+    urm_design = summaries[0].design_a_dyn
+    design_names = {n for n in design_cases if n is not None and n.endswith("(design)")}
+    raw = [
+        case_result(inputs, o, m, s, names, demand, urm_design, fc=fc, floor_pga=floor_pga)
+        for o, m, s in zip([None, *inputs.options], models, summaries, strict=True)
+    ]
+    raw = [replace(c, source="design") if c.name in design_names else c for c in raw]
+
+    report("checks", 0, 1)
+    checks = kinematic_checks(
+        inputs,
+        records=list(records),
+        ida={
+            c.name: IdaSummary(s.mean_a_dyn, s.min_a_dyn, len(records))
+            for c, s in zip(raw, summaries, strict=True)
+        },
+        building=inputs.building,
+    )
+    report("checks", 1, 1)
+    ev = [
+        evidence(c, s, k, fc * demand, inputs.target)
+        for c, s, k in zip(raw, summaries, checks.cases, strict=True)
+    ]
+    decision = decide(ev)
+    rank_of = {i: r for r, i in enumerate(decision.order, start=1)}
+    cases = tuple(
+        replace(
+            decided_case(c, v, rank_of.get(i), i == decision.recommended),
+            remark=remark(
+                c, raw[0], models[i], models[0], inputs.building is not None, falls_inside(ev[i])
+            ),
+        )
+        for i, (c, v) in enumerate(zip(raw, decision.verdicts, strict=True))
+    )
+    recommended = None if decision.recommended is None else cases[decision.recommended].name
+    closest = None if decision.closest is None else cases[decision.closest].name
+
+    focus = next((i for i in (decision.recommended, decision.closest) if i is not None), 0)
+    report("sensitivity", 0, 1)
+    outcomes, rows = conventions(
+        sens_runner, ctx, models, ev, decision, focus, fc * demand, inputs.ida.max_multiplier
+    )
+    report("sensitivity", 1, 1)
+    sens = Sensitivity(case=cases[focus].name, rows=rows)
+    robust = robustness(cases, ev, summaries[focus], decision, focus, outcomes, names, fc * demand)
+    return DecidedRun(
+        inputs=inputs,
+        models=models,
+        results=all_results,
+        cases=cases,
+        recommended=recommended,
+        closest=closest,
+        design=design,
+        design_cases=design_cases,
+        checks=checks,
+        sensitivity=sens,
+        robustness=robust,
+        decision_rule=DECISION_RULE.format(target=inputs.target),
+    )
+
+
+def _variant_verdict(
+    runner: IdaRunner,
+    ctx: CheckContext,
+    base: Evidence,
+    model: RockingModel,
+    demand: float,
+    max_multiplier: float,
+) -> tuple[Verdict, CaseSummary]:
+    """The verdict of ``model`` (a convention variant of ``base``'s case)."""
+    s = summarise(runner.run([model])[0], max_multiplier, model.a_rm_g)
+    c = ctx.checks(base.name, model)
+    th = c.time_history
+    peaks = None if th is None else tuple(math.inf if p is None else p for p in th.peaks)
+    ev = replace(
+        base,
+        a_dyn=s.a_dyn_bound,
+        censored=tuple(a is None for a in s.a_dyn),
+        peaks=peaks,
+        d0=c.capacity.d0,
+        d_slv=c.slv.d_limit,
+        d_slc=c.slc.d_limit,
+    )
+    return verdict(ev), s
+
+
+def conventions(
+    runner: IdaRunner,
+    ctx: CheckContext,
+    models: Sequence[RockingModel],
+    ev: Sequence[Evidence],
+    decision: Decision,
+    focus: int,
+    demand: float,
+    max_multiplier: float,
+) -> tuple[tuple[ConventionOutcome, ...], tuple[SensitivityRow, ...]]:
+    """The focus case under each model convention (:mod:`frp_assess.assess.sensitivity`):
+    its sensitivity rows, and whether it still passes; where the recommendation fails under a
+    variant, the next passing options (as assessed, by rank; at most
+    :data:`TAKE_OVER_CANDIDATES`) are run under the same variant and the first that passes
+    takes over."""
+    rows = tuple(
+        SensitivityRow(**asdict(r))
+        for r in sensitivity(runner, models[focus], demand, max_multiplier)
+    )
+    variants = convention_variants(models[focus])
+    candidates = [i for i in decision.order if decision.verdicts[i].passes and i != focus][
+        :TAKE_OVER_CANDIDATES
+    ]
+    out = []
+    for j, (label, variant) in enumerate(variants):
+        v, _ = _variant_verdict(runner, ctx, ev[focus], variant, demand, max_multiplier)
+        takes_over = None
+        if decision.recommended == focus and not v.passes:
+            for i in candidates:
+                their = convention_variants(models[i])
+                if j >= len(their):
+                    continue
+                vi, _ = _variant_verdict(runner, ctx, ev[i], their[j][1], demand, max_multiplier)
+                if vi.passes:
+                    takes_over = ev[i].name
+                    break
+        out.append(
+            ConventionOutcome(
+                variant=label,
+                passes=v.passes,
+                governing_check=v.governing_check,
+                governing_margin=v.governing_margin,
+                takes_over=takes_over,
+            )
+        )
+    return tuple(out), rows
+
+
+def robustness(
+    cases: Sequence[CaseResult],
+    ev: Sequence[Evidence],
+    summary: CaseSummary,
+    decision: Decision,
+    focus: int,
+    outcomes: Sequence[ConventionOutcome],
+    names: Sequence[str],
+    design_intensity: float,
+) -> Robustness:
+    """P(collapse) of the focus case at FC·a_g·S, the decision without each record, and the
+    conventions, with one or two sentences."""
+    exact = [a for a in summary.a_dyn if a is not None]
+    p = None
+    if len(set(exact)) >= 2:
+        censored = [b for a, b in zip(summary.a_dyn, summary.a_dyn_bound, strict=True) if a is None]
+        p = fit_lognormal_fragility(exact, censored).probability(design_intensity)
+    # with one record there is nothing to leave out
+    picks = leave_one_out(ev) if len(names) > 1 else []
+    loo = [
+        LeaveOneOut(
+            record=name,
+            recommended=None if k is None else cases[k].name,
+            survives=k == decision.recommended,
+        )
+        for name, k in zip(names, picks, strict=False)
+    ]
+    name = cases[focus].name
+    survives = all(r.survives for r in loo) and all(o.passes for o in outcomes)
+    parts = []
+    if p is not None:
+        parts.append(
+            f"P(collapse) of {name} at FC·a_g·S = {design_intensity:.3f} g is {p:.1%} "
+            "(lognormal fit to the records' collapse accelerations)"
+        )
+    lost = [r for r in loo if not r.survives]
+    if decision.recommended is None and decision.verdicts[0].passes:
+        parts.append("the unreinforced wall passes every deciding check; no option is needed")
+    elif decision.recommended is None:
+        gained = [r for r in loo if r.recommended is not None]
+        parts.append(
+            "nothing passes; leaving out one record "
+            + (
+                "changes nothing"
+                if not gained
+                else "would make "
+                + ", ".join(f"{r.recommended} pass (without {r.record})" for r in gained)
+            )
+        )
+    elif lost:
+        parts.append(
+            "the recommendation changes when a record is left out: "
+            + "; ".join(f"without {r.record}: {r.recommended or 'nothing passes'}" for r in lost)
+        )
+    else:
+        parts.append(f"{name} stays recommended whichever record is left out")
+    failing = [o for o in outcomes if not o.passes]
+    others = sum(1 for i, v in enumerate(decision.verdicts) if v.passes and i not in (0, focus))
+    takeover_none = (
+        "no other option passes even as assessed"
+        if others == 0
+        else "none of the next passing options passes under it"
+    )
+    if decision.recommended is not None:
+        if failing:
+            parts.append(
+                "under "
+                + "; ".join(
+                    f"{o.variant} it fails ({o.governing_check}); "
+                    + (f"{o.takes_over} takes over" if o.takes_over else takeover_none)
+                    for o in failing
+                )
+            )
+        else:
+            parts.append("it passes under every model convention tried")
+    return Robustness(
+        case=name,
+        design_intensity=design_intensity,
+        p_collapse=p,
+        leave_one_out=tuple(loo),
+        conventions=tuple(outcomes),
+        survives=survives and decision.recommended is not None,
+        summary="; ".join(parts) + ".",
+    )
