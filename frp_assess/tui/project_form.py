@@ -15,8 +15,8 @@ from typing import Any
 from textual.dom import DOMNode
 from textual.widgets import Input, Select, Static
 
-from frp_assess.config import Project
 from frp_assess.config.messages import Loc, format_path
+from frp_assess.config.schema import Project
 from frp_assess.tui.core.model import (
     Problem,
     get_path,
@@ -298,7 +298,7 @@ class ProjectForm:
 
     def show_derived(self, data: dict[str, Any], project: Project | None) -> None:
         """Derived wall values, spectrum preview, FRP quantities and record summary."""
-        wall = wall_derived(data.get("wall"))
+        wall = wall_derived(data.get("wall"), data.get("analysis"), data.get("code_check"))
         spectrum = spectrum_preview(get_path(data, ("seismic", "spectrum")))
         pga = None if isinstance(spectrum, str) else spectrum.pga_g
         n_options = None if project is None else len(project.expand_interventions())
