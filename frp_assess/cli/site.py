@@ -10,9 +10,8 @@ from __future__ import annotations
 import argparse
 import json
 
+from frp_assess.app.site import LIMIT_STATES, P_VR, USE_CLASSES, SiteHazard, site_hazard
 from frp_assess.cli.arg_types import number_in
-from frp_assess.motions.site import LIMIT_STATES, USE_CLASSES, SiteHazard, site_hazard
-from frp_assess.motions.site.formulas import P_VR
 
 #: the longest nominal life accepted [years] (NTC 2018 Tab. 2.4.I: 10, 50, 100 or more)
 MAX_NOMINAL_LIFE = 1000.0
