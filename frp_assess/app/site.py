@@ -1,8 +1,6 @@
-"""The seismic parameters of a site from its coordinates (`frp-assess site`).
-
-A thin door onto :mod:`frp_assess.motions.site` (docs/site-hazard.md): the interfaces ask
-here, never the numerics directly.
-"""
+"""The seismic hazard of a site from its coordinates (NTC 2018 §3.2, Allegati A and B), for the
+`site` command and the TUI's Site tab: re-exported from :mod:`frp_assess.motions.site` so that
+the interfaces import only this package."""
 
 from __future__ import annotations
 
