@@ -11,6 +11,7 @@ cancellation are plain callables and :class:`threading.Event`, never UI objects:
 - :mod:`~frp_assess.app.expert`: the expert commands `simulate` and `ida` (one wall);
 - :mod:`~frp_assess.app.records`: generate and check sets of records;
 - :mod:`~frp_assess.app.preview`: the derived quantities the TUI previews while typing.
+- :mod:`~frp_assess.app.site`: the seismic parameters of a site from its coordinates.
 
 The package imports its modules lazily (import ``frp_assess.app.<module>``), so that the
 command line's parser does not load the numerics it does not need.
