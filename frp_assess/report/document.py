@@ -17,7 +17,8 @@ from reportlab.platypus import BaseDocTemplate, Flowable, Frame, PageTemplate, P
 
 from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_path
-from frp_assess.report import as_built_section, sections
+from frp_assess.report import as_built_section, render_pdf, sections
+from frp_assess.report.doc_model import Block
 from frp_assess.report import styles as st
 from frp_assess.results.json_io import from_json
 from frp_assess.results.model import AssessmentResult
@@ -73,10 +74,9 @@ def contract_error(exc: Exception, path: Path | str) -> InputError:
 CONTRACT_ERRORS = (KeyError, TypeError, ValueError, AttributeError, IndexError, ZeroDivisionError)
 
 
-def build_story(results: AssessmentResult) -> list[Flowable]:
-    """The flowables of the seven sections, in order."""
-    st.register_fonts()
-    story: list[Flowable] = []
+def build_blocks(results: AssessmentResult) -> list[Block]:
+    """The blocks of the sections, in order."""
+    story: list[Block] = []
     for part in (
         sections.summary,
         sections.inputs,
@@ -89,6 +89,12 @@ def build_story(results: AssessmentResult) -> list[Flowable]:
     ):
         story += part(results)
     return story
+
+
+def build_story(results: AssessmentResult) -> list[Flowable]:
+    """The PDF flowables of the report, in order."""
+    st.register_fonts()
+    return render_pdf.flowables(build_blocks(results))
 
 
 def _fit(text: str, font: str, size: float, width: float) -> str:

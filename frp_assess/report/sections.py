@@ -5,12 +5,25 @@ from __future__ import annotations
 import math
 
 from reportlab.lib.units import mm
-from reportlab.platypus import CondPageBreak, Flowable, KeepTogether, PageBreak
 
 from frp_assess.numbers import no_retrofit_caveats, numerical_check_text
 from frp_assess.report import charts, floor_section
 from frp_assess.report import tables as tb
-from frp_assess.report.flow import esc, gap, grid, key_value, markup, para
+from frp_assess.report.doc_model import Block
+from frp_assess.report.flow import (
+    cond_break,
+    esc,
+    figure,
+    gap,
+    grid,
+    h1,
+    h2,
+    keep,
+    key_value,
+    markup,
+    page_break,
+    para,
+)
 from frp_assess.results.model import AssessmentResult, CaseResult
 
 Results = AssessmentResult
@@ -29,15 +42,7 @@ def design_statistic(results: Results) -> str:
     return "the least favourable record, as there are fewer than 7 (EN 1998-1 §4.3.3.4.3)"
 
 
-def h1(text: str) -> Flowable:
-    return markup(esc(text), "h1")
-
-
-def h2(text: str) -> Flowable:
-    return markup(esc(text), "h2")
-
-
-def _verdict(ok: bool, text: str) -> Flowable:
+def _verdict(ok: bool, text: str) -> Block:
     return markup(text, "verdict_ok" if ok else "verdict_bad")
 
 
@@ -59,7 +64,7 @@ def _option_sentence(results: Results, c: CaseResult) -> str:
 # --- 1 Summary ----------------------------------------------------------------------------
 
 
-def summary(results: Results) -> list[Flowable]:
+def summary(results: Results) -> list[Block]:
     p = results.project
     w = results.wall
     s = results.seismic
@@ -67,7 +72,7 @@ def summary(results: Results) -> list[Flowable]:
     target = results.model.target
     demand = results.demand.pga
     n_rec = len(results.records)
-    out: list[Flowable] = [
+    out: list[Block] = [
         para(p.name or "Unnamed project", "title"),
         markup(
             "Out-of-plane seismic assessment of a rocking masonry wall and of its retrofit with "
@@ -239,7 +244,7 @@ def summary(results: Results) -> list[Flowable]:
             "caption",
         )
     )
-    out.append(PageBreak())
+    out.append(page_break())
     return out
 
 
@@ -251,9 +256,9 @@ def summary(results: Results) -> list[Flowable]:
 RECORDS_KIND = {"artificial": "artificial records", "recorded": "records read from files"}
 
 
-def inputs(results: Results) -> list[Flowable]:
+def inputs(results: Results) -> list[Block]:
     w = results.wall
-    out: list[Flowable] = [h1("2  Inputs"), h2("2.1  Project and software")]
+    out: list[Block] = [h1("2  Inputs"), h2("2.1  Project and software")]
     out.append(key_value(tb.software_rows(results)))
     out.append(h2("2.2  Wall, masonry and mechanism"))
     rows = tb.wall_rows(results)
@@ -284,8 +289,8 @@ def inputs(results: Results) -> list[Flowable]:
 # --- 3 Seismic input ----------------------------------------------------------------------
 
 
-def seismic(results: Results) -> list[Flowable]:
-    out: list[Flowable] = [PageBreak(), h1("3  Seismic input"), h2("3.1  Target spectrum")]
+def seismic(results: Results) -> list[Block]:
+    out: list[Block] = [page_break(), h1("3  Seismic input"), h2("3.1  Target spectrum")]
     out.append(key_value(tb.spectrum_rows(results), sub_values=True, verbatim_rows=(0, 1)))
     out.append(h2("3.2  Records"))
     out.append(
@@ -300,9 +305,9 @@ def seismic(results: Results) -> list[Flowable]:
         out.append(para("Warning: " + str(warning), "small"))
     out.append(gap(6))
     out.append(
-        KeepTogether(
+        keep(
             [
-                charts.spectra_chart(results),
+                figure(charts.spectra_chart(results)),
                 para(
                     "Figure 1. Elastic response spectra at 5 % damping: the target, 90 % of it, "
                     "each record's spectrum and their mean (the quantity the code checks compare).",
@@ -312,7 +317,7 @@ def seismic(results: Results) -> list[Flowable]:
         )
     )
     comp = results.compliance
-    out.append(CondPageBreak(60 * mm))
+    out.append(cond_break(60 * mm))
     out.append(h2("3.3  Code compliance of the record set"))
     out.append(
         grid(
@@ -332,10 +337,10 @@ def seismic(results: Results) -> list[Flowable]:
 # --- 4 Unreinforced wall ------------------------------------------------------------------
 
 
-def unreinforced(results: Results) -> list[Flowable]:
+def unreinforced(results: Results) -> list[Block]:
     urm = results.urm
-    out: list[Flowable] = [
-        PageBreak(),
+    out: list[Block] = [
+        page_break(),
         h1("4  The unreinforced wall"),
         h2("4.1  Rocking properties"),
     ]
@@ -367,8 +372,8 @@ def unreinforced(results: Results) -> list[Flowable]:
 # --- 5 Retrofit options -------------------------------------------------------------------
 
 
-def options(results: Results) -> list[Flowable]:
-    out: list[Flowable] = [PageBreak(), h1("5  Retrofit options"), h2("5.1  Ranking")]
+def options(results: Results) -> list[Block]:
+    out: list[Block] = [page_break(), h1("5  Retrofit options"), h2("5.1  Ranking")]
     out.append(para("Ranking rule: " + results.ranking_rule, "small"))
     data = tb.ranking_table(results)
     rec_name = results.recommended
@@ -403,12 +408,12 @@ def options(results: Results) -> list[Flowable]:
     for c in results.options:  # dropped by the pivot check: no rank, the reason here
         if c.pivot is not None and c.pivot.dropped:
             out.append(para(c.pivot.reason, "small"))
-    out.append(CondPageBreak(90 * mm))
+    out.append(cond_break(90 * mm))
     out.append(h2("5.2  Effect of the FRP quantity"))
     out.append(
-        KeepTogether(
+        keep(
             [
-                charts.options_chart(results, "improvement"),
+                figure(charts.options_chart(results, "improvement")),
                 para(
                     "Figure 2. Level of seismic improvement against the FRP installed on the wall, "
                     "one line per material and position.",
@@ -418,9 +423,9 @@ def options(results: Results) -> list[Flowable]:
         )
     )
     out.append(
-        KeepTogether(
+        keep(
             [
-                charts.options_chart(results, "capacity_demand"),
+                figure(charts.options_chart(results, "capacity_demand")),
                 para(
                     "Figure 3. Capacity/demand against the FRP installed on the wall; options "
                     "above the target line meet it.",
@@ -429,7 +434,7 @@ def options(results: Results) -> list[Flowable]:
             ]
         )
     )
-    out.append(CondPageBreak(50 * mm))
+    out.append(cond_break(50 * mm))
     out.append(h2("5.3  Design mode: the smallest ratio that meets the target"))
     if results.design:
         out.append(
@@ -442,14 +447,14 @@ def options(results: Results) -> list[Flowable]:
         )
     else:
         out.append(para("Design mode was not run for this project."))
-    out.append(CondPageBreak(80 * mm))
+    out.append(cond_break(80 * mm))
     out.append(h2("5.4  a_dyn [g] of every option and record"))
     mat = tb.a_dyn_matrix(results)
     n = len(mat.header) - 1
     other = (174 - 34) / max(n, 1)
     out.append(grid(mat, [34 * mm] + [other * mm] * n, wrap=(0,), small=True))
     out.append(para("n.c.: no collapse up to C_max for that record.", "caption"))
-    out.append(CondPageBreak(60 * mm))
+    out.append(cond_break(60 * mm))
     out.append(h2("5.5  How far the numbers can be trusted: scatter and fragility"))
     out.append(
         grid(
@@ -473,7 +478,7 @@ def options(results: Results) -> list[Flowable]:
     )
     sens = tb.sensitivity_table(results)
     if sens is not None and results.sensitivity is not None:
-        out.append(CondPageBreak(60 * mm))
+        out.append(cond_break(60 * mm))
         out.append(h2("5.6  What the result depends on: the model conventions"))
         out.append(grid(sens, [x * mm for x in (70, 34, 26, 34)], wrap=(0,), numeric_from=1))
         out.append(
@@ -490,8 +495,8 @@ def options(results: Results) -> list[Flowable]:
 # --- 6 Governing time history -------------------------------------------------------------
 
 
-def governing(results: Results) -> list[Flowable]:
-    out: list[Flowable] = [PageBreak(), h1("7  The governing time history")]
+def governing(results: Results) -> list[Block]:
+    out: list[Block] = [page_break(), h1("7  The governing time history")]
     gov = results.governing
     if not gov or not gov.runs:
         out.append(para("No time history is stored in the results."))
@@ -520,7 +525,7 @@ def governing(results: Results) -> list[Flowable]:
     out.append(gap(8))
     chart = charts.history_chart(results)
     if chart is not None:
-        out.append(chart)
+        out.append(figure(chart))
         out.append(
             para(
                 "Figure 4. Rotation θ/α (θ = α: the wall has rotated as far as its slenderness; "
@@ -651,8 +656,8 @@ def fc_text(results: Results) -> str:
     )
 
 
-def method(results: Results) -> list[Flowable]:
-    out: list[Flowable] = [PageBreak(), h1("8  Method and references"), h2("8.1  Equations")]
+def method(results: Results) -> list[Block]:
+    out: list[Block] = [page_break(), h1("8  Method and references"), h2("8.1  Equations")]
     for title, eq in EQUATIONS:
         out.append(markup(f"<b>{esc(title)}.</b>"))
         out.append(markup(eq, "equation"))
