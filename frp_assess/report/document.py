@@ -18,8 +18,9 @@ from reportlab.platypus import BaseDocTemplate, Flowable, Frame, PageTemplate, P
 from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_path
 from frp_assess.report import as_built_section, render_pdf, sections
-from frp_assess.report.doc_model import Block
 from frp_assess.report import styles as st
+from frp_assess.report.doc_model import Block, Document, split_sections
+from frp_assess.report.render_docx import write_docx
 from frp_assess.results.json_io import from_json
 from frp_assess.results.model import AssessmentResult
 from frp_assess.text_safety import pdf_plain, plain
@@ -89,6 +90,27 @@ def build_blocks(results: AssessmentResult) -> list[Block]:
     ):
         story += part(results)
     return story
+
+
+def build_document(results: AssessmentResult) -> Document:
+    """The report as a document model: what both renderers draw."""
+    p = results.project
+    sw = results.software
+    return Document(
+        title=f"Seismic assessment – {p.name or 'wall'}",
+        header="Seismic assessment · vertical FRP rebars",
+        footer=f"{sw.name} {sw.version} · results of {results.created} · "
+        f"{results.input_file or ''}",
+        page_word="page {n} of {total}",
+        author=p.engineer or "",
+        language="en",
+        sections=split_sections(build_blocks(results)),
+    )
+
+
+def build_docx(results: AssessmentResult, out_path: Path | str) -> None:
+    """Write the editable Word report to ``out_path`` atomically (byte-identical rebuilds)."""
+    write_docx(build_document(results), out_path, created=results.created)
 
 
 def build_story(results: AssessmentResult) -> list[Flowable]:
