@@ -50,6 +50,7 @@ from frp_assess.motions import (
     read_record,
     table_spectrum,
 )
+from frp_assess.results.model import ReportSettings
 
 
 def spectrum_of(
@@ -249,6 +250,12 @@ def inputs_from_project(
         },
         input_file=input_file,
         bars=bar_settings_of(project.bars),
+        report=ReportSettings(
+            language=project.report.language,
+            template=None
+            if project.report.template is None
+            else str(base_dir / str(project.report.template)),
+        ),
     )
     return laid_out(project, inputs, file=file or input_file or None, lines=lines)
 

@@ -32,6 +32,7 @@ from frp_assess.dynamics import (
 from frp_assess.dynamics.options import STRAIN_FACTOR, VERIFY
 from frp_assess.dynamics.units import rebars_from_practice, wall_from_practice
 from frp_assess.motions import ElasticSpectrum
+from frp_assess.results.model import ReportSettings
 from frp_assess.results.pivot import MasonryResult
 
 #: the name of case 0, the wall without bars
@@ -202,6 +203,8 @@ class AssessmentInputs:
     project: dict[str, str] = field(default_factory=dict)
     input_file: str = ""
     bars: BarSettings = BarSettings(design_values=False, whole_bars=False)
+    #: the report's language and Word template
+    report: ReportSettings = ReportSettings()
 
     @property
     def masonry_strength(self) -> MasonryResult:

@@ -503,6 +503,7 @@ def build_results(
         floor_spectra=None if floor_spectra is None else floor_spectra_result(floor_spectra),
         masonry_strength=inputs.masonry_strength,
         kinematic_checks=kinematic_checks,
+        report=inputs.report,
     )
 
 

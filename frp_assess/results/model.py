@@ -35,6 +35,15 @@ class Software:
 
 
 @dataclass(frozen=True)
+class ReportSettings:
+    """How the report is written: ``language`` en | it; ``template``: the Word file whose
+    styles the DOCX report uses (a path as the run resolved it, or None)."""
+
+    language: str = "en"
+    template: str | None = None
+
+
+@dataclass(frozen=True)
 class ProjectInfo:
     """Who and where, as typed in the project file (free text)."""
 
@@ -493,6 +502,8 @@ class AssessmentResult:
     masonry_strength: MasonryResult | None = None
     #: the code's kinematic checks of every case (Circolare 2019 §C8.7.1); None: not computed
     kinematic_checks: KinematicChecks | None = None
+    #: the report's language and Word template (None in files written before it: English)
+    report: ReportSettings | None = None
 
     @property
     def urm(self) -> CaseResult:
