@@ -1,0 +1,88 @@
+"""Conclusions and the appendix of assumptions and references (both languages)."""
+
+from __future__ import annotations
+
+from frp_assess.report.body_front import option_words
+from frp_assess.report.doc_model import Block
+from frp_assess.report.flow import esc, h1, h2, markup
+from frp_assess.report.lang import Lang
+from frp_assess.results.model import AssessmentResult
+
+Results = AssessmentResult
+
+#: the verdict helper's fields, rendered when the results hold them (name → catalogue key)
+DECISION_FIELDS = ("governing_check", "margin", "recommended")
+
+
+def _bound(text: str, lower: bool) -> str:
+    return f"≥ {text}" if lower else text
+
+
+def conclusions(results: Results, lang: Lang) -> list[Block]:
+    n = lang.num
+    urm = results.urm
+    target = lang.gnum(results.model.target)
+    out: list[Block] = [h1(lang.t("h.conclusions"))]
+    ok = bool(urm.meets_target)
+    cd = _bound(n(urm.capacity_demand, 2), urm.lower_bound)
+    out.append(markup(lang.t("concl.as_is_ok" if ok else "concl.as_is_bad", cd=cd,
+                             target=target)))  # fmt: skip
+    failure = getattr(urm, "failure_mode", None)
+    if failure:
+        out.append(markup(lang.t("concl.failure_mode", mode=esc(failure))))
+    if not results.compliance.passed:
+        out.append(markup(lang.t("concl.not_compliant"), "verdict_bad"))
+    rec = results.case(results.recommended)
+    if rec is not None:
+        key = "concl.recommended" if results.input_code_compliant else "concl.best_ranked"
+        if ok:
+            key = "concl.not_needed"
+        out.append(
+            markup(
+                lang.t(
+                    key,
+                    option=option_words(rec, lang),
+                    cd=_bound(n(rec.capacity_demand, 2), rec.lower_bound),
+                    improvement=_bound(n(rec.improvement, 2), rec.lower_bound),
+                    mass=n(rec.frp_mass, 1),
+                    cost=n(rec.frp_cost, 0, grouping=True),
+                    currency=esc(results.costs.currency),
+                )
+            )
+        )
+    elif results.options:
+        out.append(markup(lang.t("retrofit.no_option_meets", target=target), "verdict_bad"))
+    decision = getattr(results, "decision", None)
+    if decision is not None:
+        for name in DECISION_FIELDS:
+            value = getattr(decision, name, None)
+            if value is not None and lang.has(f"decision.{name}"):
+                shown = lang.num(value, 2) if isinstance(value, float) else esc(value)
+                out.append(markup(lang.t(f"decision.{name}", value=shown)))
+    if urm.lower_bound or any(c.lower_bound for c in results.options):
+        out.append(markup(lang.t("concl.lower_bound"), "small"))
+    out.append(markup(lang.t("concl.details")))
+    out.append(markup(lang.t("concl.responsibility")))
+    return out
+
+
+def appendix(results: Results, lang: Lang) -> list[Block]:
+    out: list[Block] = [h1(lang.t("h.appendix")), h2(lang.t("h.appendix.assumptions"))]
+    piv = results.urm.pivot
+    rule = piv.rule if piv is not None else "edge"
+    out.append(markup("• " + lang.t("assume.pivot.crushing" if rule == "crushing"
+                                    else "assume.pivot.edge"), "bullet"))  # fmt: skip
+    for i in range(1, 8):
+        out.append(markup("• " + lang.t(f"assume.{i}"), "bullet"))
+    out.append(h2(lang.t("h.appendix.references")))
+    for i in range(1, 11):
+        out.append(markup(lang.t(f"ref.{i}"), "reference"))
+    sw = results.software
+    out.append(
+        markup(
+            lang.t("appendix.generated", name=esc(sw.name), version=esc(sw.version),
+                   date=esc(results.created)),
+            "small",
+        )
+    )  # fmt: skip
+    return out
