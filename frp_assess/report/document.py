@@ -34,6 +34,7 @@ from frp_assess.report.doc_model import Block, Document, Heading, Para, split_se
 from frp_assess.report.flow import cond_break, h1, markup, page_break
 from frp_assess.report.lang import Lang
 from frp_assess.report.render_docx import write_docx
+from frp_assess.report.wording import engineer_blocks
 from frp_assess.results.json_io import from_json
 from frp_assess.results.model import AssessmentResult
 from frp_assess.text_safety import pdf_plain, plain
@@ -171,7 +172,7 @@ def build_blocks(results: AssessmentResult) -> list[Block]:
     if lang.code == "en":
         story += [page_break(), h1(lang.t("h.annex")), markup(lang.t("annex.lead"))]
         story += annex_blocks(results)
-    return story
+    return engineer_blocks(story, results)
 
 
 def _appendix(results: AssessmentResult, lang: Lang) -> list[Block]:

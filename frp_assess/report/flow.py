@@ -27,7 +27,7 @@ def esc(text: object, *, limit: int = PDF_MAX_CHARS) -> str:
     return pdf(text, limit=limit)
 
 
-_SUB = re.compile(r"(?<![A-Za-z0-9])([A-Za-zαεθ])_([A-Za-z0-9]+)")
+_SUB = re.compile(r"(?<![A-Za-z0-9])([A-Za-zα-ω])_([A-Za-z0-9]+)")
 
 
 def with_subscripts(escaped: str) -> str:

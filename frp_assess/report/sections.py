@@ -23,6 +23,7 @@ from frp_assess.report.flow import (
     markup,
     page_break,
     para,
+    with_subscripts,
 )
 from frp_assess.results.model import AssessmentResult, CaseResult
 
@@ -509,7 +510,7 @@ def governing(results: Results) -> list[Block]:
             "multiplier and just below it shows how the wall fails"
             + (
                 f"; the bar ruptures when its strain reaches ε<sub>max</sub> = "
-                f"{1e3 * rs:.2f} ‰ (c·ε<sub>u</sub>)."
+                f"{with_subscripts(esc(tb.rupture_strain_words(results)))} = {1e3 * rs:.2f} ‰."
                 if rs is not None
                 else "."
             )
