@@ -116,7 +116,7 @@ def test_dropped_count_agrees_with_its_verb(tmp_path: Path) -> None:
     assert sum(c.rank is None for c in r.options) == 1  # CFRP centred 2 ‰: no mechanism
     text = story_text(build_story(r))
     assert f"1 of {n} options fails the pivot check" in text
-    assert "and is dropped from the ranking: see section 6.4" in text
+    assert "and is dropped from the ranking: see section B.6.4" in text
     every = replace(r, cases=(r.cases[0], *(replace(c, rank=None) for c in r.options)))
     assert f"{n} of {n} options fail the pivot check" in story_text(build_story(every))
 
