@@ -5,8 +5,6 @@ language's catalogue (:mod:`frp_assess.report.lang`); every number from the resu
 
 from __future__ import annotations
 
-import re
-
 from reportlab.lib.units import mm
 
 from frp_assess.report import tables as tb
@@ -40,20 +38,13 @@ def option_words(c: object, lang: Lang) -> str:
                   ratio=lang.num(float(getattr(c, "ratio", 0.0)), 2))  # fmt: skip
 
 
-_ITALIAN_NAME = re.compile(r"\((muratura [^()]*)\)")
-
-
 def masonry_words(results: Results, lang: Lang) -> str:
-    """The masonry in the report's language: in Italian the name of Circolare 2019
-    Tab. C8.5.I that the library's description carries in brackets; else the description."""
-    text = results.wall.masonry_description
-    if not text:
-        return lang.t("wall.masonry_typed")
-    m = _ITALIAN_NAME.search(text)
-    if lang.code == "it" and m is not None:
-        name = m.group(1)
-        return lang.t("masonry.table", name=name[0].upper() + name[1:])
-    return text
+    """The masonry in the report's language: the type of Circolare 2019 Tab. C8.5.I by its
+    name in the catalogue (never the library key), else the description the run wrote."""
+    key = results.wall.masonry
+    if key and lang.has(f"masonry:{key}"):
+        return lang.t("masonry.table", name=lang.t(f"masonry:{key}"))
+    return results.wall.masonry_description or lang.t("wall.masonry_typed")
 
 
 def knowledge(results: Results) -> tuple[str, float]:

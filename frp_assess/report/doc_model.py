@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 
 from reportlab.graphics.shapes import Drawing
 
-from frp_assess.text_safety import Markup
+from frp_assess.text_safety import PDF_MAX_CHARS, pdf
 
 
 @dataclass(frozen=True)
@@ -141,12 +141,25 @@ _TAG = re.compile(r"<[^<>]*>")
 
 def markup_text(markup: str) -> str:
     """The plain text of trusted markup (tags dropped, ``<br/>`` a space, entities decoded)."""
-    return html.unescape(_TAG.sub(" ", markup.replace("<br/>", " ")).replace("  ", " "))
+    return html.unescape(_TAG.sub("", markup.replace("<br/>", " ")))
 
 
-def cell_text(cell: str) -> str:
-    """The plain text of a table cell (a :class:`Markup` header cell resolved)."""
-    return markup_text(cell) if isinstance(cell, Markup) else str(cell)
+_SUB = re.compile(r"(?<![A-Za-z0-9])([A-Za-zα-ω])_([A-Za-z0-9]+)")
+
+
+def with_subscripts(escaped: str) -> str:
+    """``a_dyn`` → a<sub>dyn</sub> in already escaped, trusted label text."""
+    return _SUB.sub(r"\1<sub>\2</sub>", escaped)
+
+
+def cell_markup(t: Table, row: int, col: int, value: str, *, limit: int = PDF_MAX_CHARS) -> str:
+    """The markup a renderer shows for cell (``row``, ``col``) of ``t`` (``row`` -1: the
+    header): user text escaped; labels of key-value tables (and their values with
+    ``sub_values``, but for ``verbatim_rows``) with ``x_y`` as a subscript."""
+    text = pdf(value, limit=limit)
+    if t.kind == "key_value" and (col == 0 or (t.sub_values and row not in t.verbatim_rows)):
+        return with_subscripts(text)
+    return text
 
 
 def plain_texts(doc: Document) -> list[str]:
@@ -161,8 +174,9 @@ def plain_texts(doc: Document) -> list[str]:
             elif isinstance(b, Para):
                 out.append(markup_text(b.markup))
             elif isinstance(b, Table):
-                for row in ((b.header,) if b.header else ()) + b.rows:
-                    out.extend(cell_text(c) for c in row)
+                for i, row in enumerate(((b.header,) if b.header else ()) + b.rows):
+                    r = i - 1 if b.header else i
+                    out.extend(markup_text(cell_markup(b, r, j, c)) for j, c in enumerate(row))
             elif isinstance(b, Keep):
                 walk(b.blocks)
 

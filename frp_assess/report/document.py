@@ -34,6 +34,7 @@ from frp_assess.report.doc_model import Block, Document, Heading, Para, split_se
 from frp_assess.report.flow import cond_break, h1, markup, page_break
 from frp_assess.report.lang import Lang
 from frp_assess.report.render_docx import write_docx
+from frp_assess.report.render_pdf import fit as _fit
 from frp_assess.report.wording import engineer_blocks
 from frp_assess.results.json_io import from_json
 from frp_assess.results.model import AssessmentResult
@@ -220,23 +221,6 @@ def build_story(results: AssessmentResult) -> list[Flowable]:
     """The PDF flowables of the report, in order."""
     st.register_fonts()
     return render_pdf.flowables(build_blocks(results))
-
-
-def _fit(text: str, font: str, size: float, width: float) -> str:
-    """``text`` (plain, any length) shortened with an ellipsis to fit ``width`` [pt].
-
-    Bisection on the length, so a very long name costs a few width measurements."""
-    text = pdf_plain(text)
-    if stringWidth(text, font, size) <= width:
-        return text
-    lo, hi = 0, len(text)  # text[:lo] + "…" fits; text[:hi] + "…" does not
-    while hi - lo > 1:
-        mid = (lo + hi) // 2
-        if stringWidth(text[:mid] + "…", font, size) <= width:
-            lo = mid
-        else:
-            hi = mid
-    return text[:lo] + "…"
 
 
 def pdf_date(created: object) -> str:

@@ -7,13 +7,21 @@ and :func:`markup` paragraphs, written by the code, carry markup.
 
 from __future__ import annotations
 
-import re
 from collections.abc import Sequence
 
 from reportlab.graphics.shapes import Drawing
 
 from frp_assess.report import styles as st
-from frp_assess.report.doc_model import Block, Break, Figure, Gap, Heading, Keep, Para, Table
+from frp_assess.report.doc_model import (
+    Block,
+    Break,
+    Figure,
+    Gap,
+    Heading,
+    Keep,
+    Para,
+    Table,
+)
 from frp_assess.report.tables import TableData
 from frp_assess.text_safety import PDF_MAX_CHARS, pdf
 
@@ -25,14 +33,6 @@ def esc(text: object, *, limit: int = PDF_MAX_CHARS) -> str:
     """User or data text made safe for Paragraph markup: control characters replaced, length
     capped, long words broken, ``<``, ``&``, ``>`` escaped; :class:`Markup` unchanged."""
     return pdf(text, limit=limit)
-
-
-_SUB = re.compile(r"(?<![A-Za-z0-9])([A-Za-zα-ω])_([A-Za-z0-9]+)")
-
-
-def with_subscripts(escaped: str) -> str:
-    """``a_dyn`` → a<sub>dyn</sub> in already escaped, trusted label text."""
-    return _SUB.sub(r"\1<sub>\2</sub>", escaped)
 
 
 def para(text: object, style: str = "body") -> Para:

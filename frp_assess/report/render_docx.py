@@ -37,8 +37,8 @@ from frp_assess.report.doc_model import (
     Keep,
     Para,
     Table,
+    cell_markup,
 )
-from frp_assess.report.flow import esc, with_subscripts
 from frp_assess.report.render_png import drawing_png
 from frp_assess.text_safety import pdf_plain
 
@@ -146,15 +146,15 @@ def _table(doc: Any, b: Table, text_width: float) -> None:
             value = row[j] if j < len(row) else ""
             if j < len(widths):
                 cells[j].width = widths[j]
+            row_index = i if b.kind == "key_value" else i - 1
+            text = cell_markup(b, row_index, j, value)
             if b.kind == "key_value":
-                sub = j == 0 or (b.sub_values and i not in b.verbatim_rows)
-                text = with_subscripts(esc(value)) if sub else esc(value)
                 _cell(cells[j], text, size=size)
             elif i == 0:
-                _cell(cells[j], esc(value), size=size, bold=True)
+                _cell(cells[j], text, size=size, bold=True)
             else:
                 body_row = i - 1
-                _cell(cells[j], esc(value), size=size, right=j >= b.numeric_from)
+                _cell(cells[j], text, size=size, right=j >= b.numeric_from)
                 if body_row in b.highlight_rows:
                     shade = OxmlElement("w:shd")
                     shade.set(qn("w:val"), "clear")

@@ -9,7 +9,7 @@ from reportlab.lib.units import mm
 from frp_assess.numbers import no_retrofit_caveats, numerical_check_text
 from frp_assess.report import charts, floor_section
 from frp_assess.report import tables as tb
-from frp_assess.report.doc_model import Block
+from frp_assess.report.doc_model import Block, with_subscripts
 from frp_assess.report.flow import (
     cond_break,
     esc,
@@ -23,7 +23,6 @@ from frp_assess.report.flow import (
     markup,
     page_break,
     para,
-    with_subscripts,
 )
 from frp_assess.results.model import AssessmentResult, CaseResult
 
