@@ -8,8 +8,8 @@ from reportlab.lib.units import mm
 from frp_assess.report import charts
 from frp_assess.report.body_front import option_words, position_words
 from frp_assess.report.doc_model import Block
-from frp_assess.report.flow import cond_break, esc, figure, grid, h1, h2, keep, key_value, markup
-from frp_assess.report.lang import Lang, localize_drawing
+from frp_assess.report.flow import cond_break, figure, grid, h1, h2, keep, key_value, markup
+from frp_assess.report.lang import Lang, localize_drawing, short
 from frp_assess.report.tables import TableData
 from frp_assess.results.checks import CaseChecks
 from frp_assess.results.model import AssessmentResult, CaseResult
@@ -126,7 +126,7 @@ def _ranking_table(results: Results, lang: Lang, limit: int = 12) -> TableData:
         lang.t("col.cd"),
         "I [-]",
         lang.t("col.mass"),
-        lang.t("col.cost", currency=results.costs.currency),
+        lang.t("col.cost", currency=short(results.costs.currency)),
     ]
     rows = []
     for c in _ranked(results)[:limit]:
@@ -166,7 +166,7 @@ def retrofit(results: Results, lang: Lang) -> list[Block]:
             [lang.t("as_is.cd"), _bound(n(rec.capacity_demand, 2), lb)],
             [lang.t("retrofit.improvement"), _bound(n(rec.improvement, 2), lb)],
             [lang.t("col.mass"), n(rec.frp_mass, 1)],
-            [lang.t("col.cost", currency=esc(results.costs.currency)),
+            [lang.t("col.cost", currency=short(results.costs.currency)),
              n(rec.frp_cost, 0, grouping=True)],
         ]  # fmt: skip
         b = rec.as_built

@@ -10,7 +10,7 @@ from reportlab.lib.units import mm
 from frp_assess.report import tables as tb
 from frp_assess.report.doc_model import Block, Heading
 from frp_assess.report.flow import esc, grid, h1, h2, key_value, markup
-from frp_assess.report.lang import Lang
+from frp_assess.report.lang import Lang, short
 from frp_assess.report.tables import TableData
 from frp_assess.results.model import AssessmentResult
 from frp_assess.text_safety import Markup
@@ -161,7 +161,7 @@ def materials(results: Results, lang: Lang) -> list[Block]:
         ]
     out.append(key_value(rows, verbatim_rows=(0,)))
     out.append(h2(lang.t("h.materials.frp")))
-    cur = results.costs.currency
+    cur = short(results.costs.currency)
     header = [
         lang.t("mat.col.name"),
         lang.t("mat.col.E"),

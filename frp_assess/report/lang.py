@@ -31,6 +31,12 @@ def catalogue(code: str) -> dict[str, str]:
     return {k: v for k, v in data.items() if not k.startswith("//")}
 
 
+def short(text: str, limit: int = 16) -> str:
+    """User text for a column header: at most ``limit`` characters, an ellipsis when cut."""
+    text = " ".join(str(text).split())
+    return text if len(text) <= limit else text[: limit - 1] + "…"
+
+
 def swap_separators(text: str) -> str:
     """``1,234.5`` → ``1.234,5``: English number separators as in Italian."""
     return text.replace(",", "\x00").replace(".", ",").replace("\x00", ".")
