@@ -12,6 +12,7 @@ from __future__ import annotations
 import datetime as _dt
 import json
 import math
+import os
 import re
 import threading
 from collections.abc import Callable, Sequence
@@ -87,6 +88,27 @@ def _noop(stage: str, done: int, total: int) -> None:
     return None
 
 
+#: seconds since 1970-01-01 UTC that fix the date of a run (reproducible-builds.org)
+SOURCE_DATE_EPOCH = "SOURCE_DATE_EPOCH"
+
+
+def run_date() -> str:
+    """The ISO date (``YYYY-MM-DD``, UTC) a run records as ``created``: the day of
+    ``SOURCE_DATE_EPOCH`` [s since 1970-01-01 UTC] when that variable is set (the
+    reproducible-builds convention: same input, same bytes), else today."""
+    epoch = os.environ.get(SOURCE_DATE_EPOCH, "")
+    if not epoch:
+        return _dt.date.today().isoformat()
+    try:
+        when = _dt.datetime.fromtimestamp(int(epoch), tz=_dt.UTC)
+    except (ValueError, OverflowError, OSError):
+        raise InputError(
+            f"expected whole seconds since 1970-01-01 UTC, found {epoch!r}",
+            key=SOURCE_DATE_EPOCH,
+        ) from None
+    return when.date().isoformat()
+
+
 def prepare_records(inputs: AssessmentInputs) -> SeismicInput:
     """Generate or read the records and check them (the first stage of a run)."""
     return build_records(inputs)
@@ -118,6 +140,7 @@ def run_assessment(
     locks the folder; ``frp-assess run`` holds that lock for the whole run).
     """
     report = progress or _noop
+    created = created or run_date()  # a bad SOURCE_DATE_EPOCH stops here, before any work
     out_dir = Path(out_dir)
     if seismic is None:
         report("records", 0, 1)
@@ -223,7 +246,7 @@ def run_assessment(
         design=design,
         governing=governing,
         materials=materials,
-        created=created or _dt.date.today().isoformat(),
+        created=created,
         numerical_check=numerical_check,
         sensitivity=conventions,
         floor_spectra=spectra,

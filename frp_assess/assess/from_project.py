@@ -27,6 +27,7 @@ from frp_assess.assess.inputs import (
     Option,
     RecordFile,
 )
+from frp_assess.assess.wall_model import base_problem
 from frp_assess.config import MASONRY, FrpMaterial, LoadedProject, Project, load_project
 from frp_assess.config.messages import Loc, format_path, line_of
 from frp_assess.config.problems import problems_of, raise_all
@@ -257,6 +258,14 @@ def inputs_from_project(
             else str(base_dir / str(project.report.template)),
         ),
     )
+    problem = base_problem(inputs.wall_input)
+    if problem is not None:  # the one refusal of the masonry at the base (rules/masonry.py)
+        raise InputError(
+            problem,
+            file=file or input_file or None,
+            line=None if lines is None else line_of(lines, ("wall", "thickness")),
+            key="wall.thickness",
+        )
     return laid_out(project, inputs, file=file or input_file or None, lines=lines)
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import datetime as _dt
 import sys
 import threading
 from dataclasses import replace
@@ -57,7 +58,17 @@ def register(sub: argparse._SubParsersAction) -> None:
         action="store_true",
         help="repeat every IDA at a 10x tighter tolerance and report the largest change of C",
     )
+    # hidden: fixes results.json's `created` (tests/golden; or SOURCE_DATE_EPOCH, api.run_date)
+    p.add_argument("--created", type=iso_date, default=None, help=argparse.SUPPRESS)
     p.set_defaults(handler=run)
+
+
+def iso_date(text: str) -> str:
+    """``--created YYYY-MM-DD``: the date written as the run's ``created``."""
+    try:
+        return _dt.date.fromisoformat(text).isoformat()
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a date YYYY-MM-DD, found {text!r}") from None
 
 
 def compliance_rows(rep: ComplianceReport) -> list[list[str]]:
@@ -241,6 +252,7 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
                 cancel=cancel,
                 seismic=seismic,
                 pdf=not args.no_pdf,
+                created=args.created,
             )
         except KeyboardInterrupt:
             cancel.set()

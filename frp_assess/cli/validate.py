@@ -15,7 +15,6 @@ from frp_assess.config.loader import load_parsed
 from frp_assess.config.messages import Loc, format_path, line_of
 from frp_assess.config.problems import problems_of, raise_all
 from frp_assess.config.schema import (
-    CONFIDENCE_FACTORS,
     Ec8Spectrum,
     Ntc2018Spectrum,
     PresetSpectrum,
@@ -75,7 +74,7 @@ def code_check_summary(project: Project) -> str:
     """Knowledge level, FC [-] and whether FC divides the IDA's capacity/demand (docs/model.md
     §5.3, §5.5), and the behaviour factor q [-]."""
     cc = project.code_check
-    fc = CONFIDENCE_FACTORS[cc.knowledge_level]
+    fc = cc.confidence_factor
     where = (
         "in the IDA verdict too" if cc.fc_in_ida else "not in the IDA verdict (fc_in_ida: false)"
     )

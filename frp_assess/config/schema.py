@@ -53,11 +53,12 @@ from frp_assess.dynamics.rebars import POSITIONS, Position
 from frp_assess.dynamics.rocking import ModelOptions
 from frp_assess.dynamics.wall import Mechanism
 from frp_assess.motions.floor import default_period
+from frp_assess.rules.geometry import slenderness_problem
+from frp_assess.rules.masonry import CONFIDENCE_FACTORS as CONFIDENCE_FACTORS  # re-export
+from frp_assess.rules.masonry import confidence_factor
 
 GroundType = Literal["A", "B", "C", "D", "E"]
 
-#: confidence factor FC of Circolare 2019 §C8.5.4 by knowledge level
-CONFIDENCE_FACTORS: dict[str, float] = {"LC1": 1.35, "LC2": 1.20, "LC3": 1.00}
 #: accepted ``format`` of a record file (as frp_assess.motions.readers.FORMATS)
 RecordFormat = Literal["auto", "at2", "esm", "two-column", "one-column"]
 RECORD_FORMATS: tuple[str, ...] = get_args(RecordFormat)
@@ -227,7 +228,7 @@ class WallSpec(_Model):
 
     @model_validator(mode="after")
     def _check_wall(self) -> WallSpec:
-        if self.thickness >= self.height:
+        if slenderness_problem(self.thickness, self.height) is not None:
             raise located_error(
                 f"expected thickness B < height H = {self.height:g} m, found {self.thickness:g}"
                 " (a rocking wall is slender)",
@@ -760,7 +761,7 @@ class CodeCheckSpec(_Model):
     @property
     def confidence_factor(self) -> float:
         """FC [-] of the knowledge level."""
-        return CONFIDENCE_FACTORS[self.knowledge_level]
+        return confidence_factor(self.knowledge_level)
 
 
 class CostsSpec(_Model):

@@ -366,7 +366,7 @@ def _write_chunk(
                     str(r.runs),
                 ]
             )
-        a_rm_g = case.thickness / case.height
+        a_rm_g = plan.model(case).a_rm_g  # about the model's pivot, as the run's summary
         s = summarise(res, c_max, a_rm_g)
         summary_rows.append(
             [

@@ -278,7 +278,7 @@ class ProjectForm:
 
     def show_derived(self, data: dict[str, Any], project: Project | None) -> None:
         """Derived wall values, spectrum preview, FRP quantities and record summary."""
-        wall = wall_derived(data.get("wall"))
+        wall = wall_derived(data.get("wall"), data.get("analysis"), data.get("code_check"))
         spectrum = spectrum_preview(get_path(data, ("seismic", "spectrum")))
         pga = None if isinstance(spectrum, str) else spectrum.pga_g
         n_options = None if project is None else len(project.expand_interventions())

@@ -26,6 +26,8 @@ from frp_assess.config.schema import (
     Spectrum,
     WallSpec,
 )
+from frp_assess.dynamics import ModelOptions
+from frp_assess.dynamics.options import PIVOT
 from frp_assess.errors import InputError
 
 
@@ -240,9 +242,12 @@ class WallDerived:
     alpha: float  #: slenderness α [rad]
     R: float  #: half diagonal [m]  # noqa: N815
     p: float  #: frequency parameter [rad/s]
-    a_rm: float  #: rocking activation acceleration tan α [g]
+    a_rm: float  #: rocking activation acceleration [g], about the model's pivot
     mass: float  #: [kg/m]
     unit_weight: float  #: [kN/m³]
+    #: x_W [m], the compressed zone under the wall's weight with ``pivot: crushing`` (0: edge)
+    depth: float = 0.0
+    pivot: str = "edge"  #: the pivot the model turns about
 
     @property
     def alpha_deg(self) -> float:
@@ -250,17 +255,47 @@ class WallDerived:
         return math.degrees(self.alpha)
 
 
-def wall_derived(wall: Any) -> WallDerived | str:
-    """The derived constants of the ``wall`` block, or the loader's message if it is invalid."""
-    from frp_assess.dynamics.units import wall_from_practice
+def wall_derived(wall: Any, analysis: Any = None, code_check: Any = None) -> WallDerived | str:
+    """The derived constants of the unreinforced wall's model, or the loader's message if the
+    ``wall`` block is invalid.
+
+    The model is the one ``run`` builds (assess/wall_model.py): ``analysis.pivot`` and the
+    masonry's f_d (``wall.masonry`` or ``wall.compressive_strength`` over the FC of
+    ``code_check.knowledge_level``); a value of those two blocks that is not valid yet counts
+    as its default.
+    """
+    from frp_assess.assess.wall_model import WallInput, design_strength, rocking_model, weight_depth
 
     try:
         spec = WallSpec.model_validate(wall)
     except ValidationError as err:
         path, message = describe(WallSpec, err.errors(include_url=False)[0])
         return f"{format_path(('wall', *path))}: {message}"
-    w = wall_from_practice(spec.thickness, spec.height, spec.unit_weight_kn)
-    return WallDerived(w.alpha, w.R, w.p, w.a_rm_g, w.mass, spec.unit_weight_kn)
+    pivot = analysis.get("pivot") if isinstance(analysis, Mapping) else None
+    pivot = pivot if pivot in PIVOT.choices else PIVOT.default
+    level = code_check.get("knowledge_level") if isinstance(code_check, Mapping) else None
+    level = level if level in ("LC1", "LC2", "LC3") else "LC1"
+    f_d = design_strength(spec.masonry, level, spec.compressive_strength)
+    try:
+        model = rocking_model(
+            WallInput(spec.thickness, spec.height, spec.unit_weight_kn, f_d),
+            spec.mechanism,
+            None,
+            ModelOptions(pivot=pivot),
+        )
+    except InputError as exc:
+        return f"wall.thickness: {exc.message}"
+    w = model.wall
+    return WallDerived(
+        w.alpha,
+        w.R,
+        w.p,
+        model.a_rm_g,
+        w.mass,
+        spec.unit_weight_kn,
+        weight_depth(w) if pivot == "crushing" else 0.0,
+        pivot,
+    )
 
 
 _SPECTRUM: TypeAdapter[Any] = TypeAdapter(Spectrum)
