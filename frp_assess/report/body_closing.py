@@ -10,9 +10,6 @@ from frp_assess.results.model import AssessmentResult
 
 Results = AssessmentResult
 
-#: the verdict helper's fields, rendered when the results hold them (name → catalogue key)
-DECISION_FIELDS = ("governing_check", "margin", "recommended")
-
 
 def _bound(text: str, lower: bool) -> str:
     return f"≥ {text}" if lower else text
@@ -28,8 +25,10 @@ def conclusions(results: Results, lang: Lang) -> list[Block]:
     out.append(markup(lang.t("concl.as_is_ok" if ok else "concl.as_is_bad", cd=cd,
                              target=target)))  # fmt: skip
     failure = getattr(urm, "failure_mode", None)
-    if failure:
-        out.append(markup(lang.t("concl.failure_mode", mode=esc(failure))))
+    if failure:  # the kernel's failure mode, by its catalogue name when it has one
+        key = f"failure:{failure}"
+        mode = lang.t(key) if lang.has(key) else esc(str(failure).replace("_", " "))
+        out.append(markup(lang.t("concl.failure_mode", mode=mode)))
     if not results.compliance.passed:
         out.append(markup(lang.t("concl.not_compliant"), "verdict_bad"))
     rec = results.case(results.recommended)
@@ -52,17 +51,37 @@ def conclusions(results: Results, lang: Lang) -> list[Block]:
         )
     elif results.options:
         out.append(markup(lang.t("retrofit.no_option_meets", target=target), "verdict_bad"))
-    decision = getattr(results, "decision", None)
-    if decision is not None:
-        for name in DECISION_FIELDS:
-            value = getattr(decision, name, None)
-            if value is not None and lang.has(f"decision.{name}"):
-                shown = lang.num(value, 2) if isinstance(value, float) else esc(value)
-                out.append(markup(lang.t(f"decision.{name}", value=shown)))
+    out += decision_lines(results, lang)
     if urm.lower_bound or any(c.lower_bound for c in results.options):
         out.append(markup(lang.t("concl.lower_bound"), "small"))
     out.append(markup(lang.t("concl.details")))
     out.append(markup(lang.t("concl.responsibility")))
+    return out
+
+
+def check_words(name: str, lang: Lang) -> str:
+    """A deciding check of the results in the report's language."""
+    key = f"check:{name}"
+    return lang.t(key) if lang.has(key) else esc(name)
+
+
+def decision_lines(results: Results, lang: Lang) -> list[Block]:
+    """The governing check and its margin for the wall as it is and the recommended option,
+    and the closest option when none passes (the decision fields of the results; [] in
+    files written before them)."""
+    out: list[Block] = []
+    rec = results.case(results.recommended)
+    for case, key in ((results.urm, "decision.as_is"), (rec, "decision.option")):
+        check = getattr(case, "governing_check", None) if case is not None else None
+        if check is None or case is None:
+            continue
+        margin = getattr(case, "governing_margin", None)
+        bound = bool(getattr(case, "governing_lower_bound", False))
+        shown = "—" if margin is None else _bound(lang.num(float(margin), 2), bound)
+        out.append(markup(lang.t(key, check=check_words(str(check), lang), margin=shown)))
+    closest = results.case(getattr(results, "closest", None))
+    if closest is not None:
+        out.append(markup(lang.t("decision.closest", option=option_words(closest, lang))))
     return out
 
 

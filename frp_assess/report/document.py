@@ -28,6 +28,7 @@ from frp_assess.report import (
     body_software,
     render_pdf,
     sections,
+    sections_results,
 )
 from frp_assess.report import styles as st
 from frp_assess.report.doc_model import Block, Document, Heading, Para, split_sections
@@ -117,10 +118,10 @@ ANNEX = (
     sections.summary,
     sections.inputs,
     sections.seismic,
-    sections.unreinforced,
-    sections.options,
+    sections_results.unreinforced,
+    sections_results.options,
     as_built_section.section,
-    sections.governing,
+    sections_results.governing,
 )
 _SECTION_REF = re.compile(r"\b(sections?|Figure) (\d)")
 
