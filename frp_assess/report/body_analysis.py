@@ -1,13 +1,10 @@
 """The seismic action and the method of analysis (both languages, words from the catalogue).
 
-The site block (coordinates, V_N, C_U, limit states) is drawn by the site section when the
-results hold it: :func:`site_blocks` is the one place that calls it.
+A spectrum given by the site's coordinates (results.json ``site``: coordinates, V_N, C_U, V_R,
+the limit states) is stated first (:func:`site_blocks`).
 """
 
 from __future__ import annotations
-
-import importlib
-from collections.abc import Callable
 
 from reportlab.lib.units import mm
 
@@ -17,6 +14,7 @@ from frp_assess.report.flow import cond_break, esc, figure, grid, h1, h2, keep, 
 from frp_assess.report.lang import Lang, localize_drawing
 from frp_assess.report.tables import TableData
 from frp_assess.results.model import AssessmentResult
+from frp_assess.text_safety import Markup
 
 Results = AssessmentResult
 
@@ -36,17 +34,51 @@ PARAM_SYMBOL = {
 
 
 def site_blocks(results: Results, lang: Lang) -> list[Block]:
-    """HOOK(site): the site of the assessment (coordinates, nominal life V_N, class of use
-    C_U, limit states and return periods), drawn by ``report/site_section.py`` when that
-    module exists and the results hold a ``site`` block; [] otherwise."""
-    if getattr(results, "site", None) is None:
+    """The site of a spectrum given by coordinates: where, nominal life V_N, class of use and
+    C_U, reference period V_R and each limit state's P_VR, T_R, a_g, F0, T_C* (the one used
+    highlighted); [] when the results hold no ``site`` block (a spectrum by parameters, or a
+    file written before it).  Read by attribute: the block is the site helper's."""
+    site = getattr(results, "site", None)
+    if site is None:
         return []
-    try:
-        module = importlib.import_module("frp_assess.report.site_section")
-    except ImportError:
-        return []
-    build: Callable[..., list[Block]] | None = getattr(module, "site_blocks", None)
-    return [] if build is None else build(results, lang)
+    n = lang.num
+    years = lang.t("site.years")
+    rows = [
+        [lang.t("site.latlon"), f"{lang.gnum(site.latitude)}°, {lang.gnum(site.longitude)}°"],
+        [lang.t("site.V_N"), f"{lang.gnum(site.V_N)} {years}"],
+        [lang.t("site.C_U"), f"{esc(site.use_class)}, C_U = {lang.gnum(site.C_U)}"],
+        [lang.t("site.V_R"), f"{lang.gnum(site.V_R)} {years}"],
+        [lang.t("site.node"), f"{n(site.nearest_node, 1)} km"],
+    ]
+    header: list[str] = [
+        lang.t("site.col.ls"),
+        Markup("P<sub>VR</sub>"),
+        Markup(f"T<sub>R</sub> [{years}]"),
+        Markup("a<sub>g</sub> [g]"),
+        Markup("F<sub>0</sub> [-]"),
+        Markup("T<sub>C</sub>* [s]"),
+        "",
+    ]
+    body, chosen = [], []
+    for i, (name, ls) in enumerate(site.limit_states.items()):
+        tr = n(ls.TR, 0)
+        if ls.TR_used != ls.TR:
+            tr += " " + lang.t("site.tr_used", tr=lang.gnum(ls.TR_used))
+        used = lang.t("site.used") if name == site.limit_state else ""
+        if used:
+            chosen.append(i)
+        body.append([name, f"{lang.gnum(100 * ls.P_VR)} %", tr, n(ls.ag, 4), n(ls.F0, 3),
+                     n(ls.Tc_star, 3), used])  # fmt: skip
+    return [
+        markup(lang.t("site.lead", state=esc(site.limit_state))),
+        key_value(rows, sub_values=True),
+        grid(
+            TableData(header, body),
+            [x * mm for x in (22, 18, 34, 22, 20, 22, 26)],
+            numeric_from=1,
+            highlight_rows=chosen,
+        ),  # fmt: skip
+    ]
 
 
 def _param(key: str, value: object, lang: Lang) -> list[str]:

@@ -216,3 +216,26 @@ def test_the_document_is_sections_of_blocks() -> None:
     assert "11  Analyses and checks made with a computer program" in titles
     assert "Appendix A – Assumptions and references" in titles
     assert titles.index("Annex B – Calculation details") < titles.index("B.1  Summary")
+
+
+def test_a_site_by_coordinates_is_stated_in_both_languages() -> None:
+    """The site block of the results (V_N = 50 years, class II: C_U = 1, V_R = 50 years;
+    SLV: P_VR = 10 %, T_R = −50/ln 0.9 = 474.6 years) opens the seismic action."""
+    from types import SimpleNamespace
+
+    slv = SimpleNamespace(P_VR=0.10, TR=474.56, TR_used=474.56, ag=0.261, F0=2.36, Tc_star=0.347)
+    slc = SimpleNamespace(P_VR=0.05, TR=974.79, TR_used=974.79, ag=0.33, F0=2.4, Tc_star=0.36)
+    site = SimpleNamespace(
+        latitude=42.35, longitude=13.4, V_N=50.0, use_class="II", C_U=1.0, V_R=50.0,
+        limit_states={"SLV": slv, "SLC": slc}, limit_state="SLV", nearest_node=1.23,
+    )  # fmt: skip
+    said = {
+        "en": ("nominal life VN 50 years", "SLV 10 % 475"),
+        "it": ("vita nominale VN 50 anni", "SLV 10 % 475"),
+    }
+    for code, (life, slv_row) in said.items():
+        r = results_in(code)
+        object.__setattr__(r, "site", site)  # the site helper's block, by attribute
+        text = " ".join(plain_texts(build_document(r)))
+        assert life in text and slv_row in text
+    assert "0,2610 2,360 0,347 adottato" in text
