@@ -8,7 +8,7 @@ Applied once, to every paragraph and table cell of the document (:func:`engineer
 from __future__ import annotations
 
 import re
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import replace
 
 from frp_assess.report.doc_model import Block, Keep, Para, Table
@@ -16,7 +16,7 @@ from frp_assess.results.model import AssessmentResult
 from frp_assess.text_safety import Markup
 
 #: (pattern, words), applied in order
-RULES: tuple[tuple[re.Pattern[str], str], ...] = (
+RULES: tuple[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]], ...] = (
     (re.compile(r",?\s*\(?\s*docs/[\w./-]+\.md(?:\s*,?\s*§\s*\d+(?:\.\d+)*)?\s*\)?"), ""),
     (re.compile(r"code_check\.fc_in_ida:\s*false"), "the designer's choice not to divide by FC"),
     (re.compile(r"code_check\.fc_in_ida"), "the choice of FC in the dynamic analysis"),
@@ -37,6 +37,20 @@ RULES: tuple[tuple[re.Pattern[str], str], ...] = (
     (re.compile(r"\(max_spacing\)"), "(governed by the largest spacing)"),
     (re.compile(r"\bmax_spacing\b"), "largest spacing"),
     (re.compile(r"\bTc_star\b"), "T_C*"),
+    (re.compile(r"wall\.compressive_strength"), "the compressive strength given for the wall"),
+    (re.compile(r"wall\.masonry"), "the masonry type"),
+    (re.compile(r"bars\.min_spacing"), "the smallest spacing"),
+    (re.compile(r"bars\.bar_force"), "the bar force"),
+    (re.compile(r"costs\.installation_per_metre"), "the installation cost"),
+    (re.compile(r"costs\.currency"), "the currency"),
+    # any other key of the project file: its last part in words
+    (
+        re.compile(
+            r"\b(?:wall|bars|analysis|code_check|costs|seismic|design|building|report|"
+            r"project|interventions|materials)\.(?:[a-z_]+\.)*([a-z_]+)\b"
+        ),
+        lambda m: m.group(1).replace("_", " "),
+    ),
     (re.compile(r"\(\s*\)"), ""),
 )
 

@@ -152,11 +152,27 @@ DEVELOPER = re.compile(
 )
 
 
+#: results of real runs: the golden projects' (tests/golden), written by `frp-assess run`
+RUNS = sorted(Path(__file__).parents[1].glob("golden/expected/*/results.json"))
+
+
 @pytest.mark.parametrize("code", LANGUAGES)
 def test_no_developer_names_in_the_report(code: str) -> None:
     r = results_in(code)
     assert r.wall.masonry == "solid-brick-lime-mortar"  # the library key is in the results
     hits = [t for t in plain_texts(build_document(r)) if DEVELOPER.search(t)]
+    assert hits == []
+
+
+@pytest.mark.parametrize("path", RUNS, ids=lambda p: p.parent.name)
+@pytest.mark.parametrize("code", LANGUAGES)
+def test_no_developer_names_in_the_report_of_a_real_run(code: str, path: Path) -> None:
+    """The prose that reaches the report from a run (layout notes, pivot reasons, ranking
+    rule, the masonry's source) is put in words too."""
+    run = from_json(path.read_text(encoding="utf-8"), file=str(path))
+    r = replace(run, report=ReportSettings(language=code))
+    texts = plain_texts(build_document(r))
+    hits = [t for t in texts if DEVELOPER.search(t) and r.project.notes not in t]
     assert hits == []
 
 
