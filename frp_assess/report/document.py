@@ -22,6 +22,7 @@ from frp_assess.io_utils import atomic_path
 from frp_assess.report import (
     as_built_section,
     body_analysis,
+    body_annex,
     body_checks,
     body_closing,
     body_front,
@@ -171,9 +172,11 @@ def build_blocks(results: AssessmentResult) -> list[Block]:
         body += [page_break() if new_page else cond_break(40 * mm), *blocks]
     story: list[Block] = body_front.title(results, lang) + number_headings(body[1:])
     story += [page_break(), *_appendix(results, lang)]
-    if lang.code == "en":
+    if lang.code == "en":  # the detailed sections, as written in English
         story += [page_break(), h1(lang.t("h.annex")), markup(lang.t("annex.lead"))]
         story += annex_blocks(results)
+    else:  # the calculation details in the report's language
+        story += [page_break(), *body_annex.annex(results, lang)]
     return engineer_blocks(story, results)
 
 
