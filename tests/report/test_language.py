@@ -25,14 +25,18 @@ seismic:
 """
 
 
-def test_the_report_block_defaults_to_english_and_maps_onto_the_inputs() -> None:
+def test_the_report_block_defaults_to_english_and_maps_onto_the_inputs(tmp_path: Path) -> None:
     project = load_project_text(MINIMAL, "mini.yaml").project
     assert (project.report.language, project.report.template) == ("en", None)
     assert inputs_from_project(project, Path(".")).report == ReportSettings("en", None)
     text = MINIMAL + "report: {language: it, template: firm.docx}\n"
     given = load_project_text(text, "mini.yaml").project
-    inputs = inputs_from_project(given, Path("/studio/jobs"))
-    assert inputs.report == ReportSettings("it", str(Path("/studio/jobs") / "firm.docx"))
+    with pytest.raises(InputError, match="no such file") as err:
+        inputs_from_project(given, tmp_path)
+    assert err.value.key == "report.template"
+    docx.Document().save(str(tmp_path / "firm.docx"))
+    inputs = inputs_from_project(given, tmp_path)
+    assert inputs.report == ReportSettings("it", str(tmp_path / "firm.docx"))
 
 
 @pytest.mark.parametrize(
