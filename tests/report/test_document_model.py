@@ -136,7 +136,8 @@ def test_the_italian_report_has_no_english_left() -> None:
     texts = plain_texts(build_document(r))
     user = {r.project.name, r.project.notes, r.project.location, r.project.engineer}
     user |= {rec.name for rec in r.records} | set(r.materials)
-    left = [t for t in texts if t not in user and ENGLISH.search(t)]
+    names = re.compile(r"«[^»]*»")  # the worked cases are named as shipped
+    left = [t for t in texts if t not in user and ENGLISH.search(names.sub("", t))]
     # user text (project name and notes) may be in any language; references keep their titles
     left = [t for t in left if not t.startswith("[") and r.project.notes not in t]
     assert left == []
