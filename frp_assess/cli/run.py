@@ -13,13 +13,17 @@ from typing import Any
 from rich.console import Console
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
-from frp_assess.api import default_out_dir, prepare_records, run_assessment
-from frp_assess.assess.from_project import load_inputs
-from frp_assess.assess.inputs import AssessmentInputs
+from frp_assess.app.assessment import (
+    AssessmentInputs,
+    ComplianceReport,
+    default_out_dir,
+    load_inputs,
+    prepare_records,
+    run_assessment,
+)
 from frp_assess.cli.output import Column, make_console, print_table, user
 from frp_assess.cli.wall_args import TOLERANCE
 from frp_assess.errors import Cancelled, InputError
-from frp_assess.motions import ComplianceReport
 from frp_assess.numbers import (
     checks_summary,
     fmt_against,

@@ -5,15 +5,16 @@ from __future__ import annotations
 
 import argparse
 import sys
-from collections.abc import Mapping
 from pathlib import Path
 
-from frp_assess.assess.from_project import layout_problems, read_record_files
-from frp_assess.config import LoadedProject
+from frp_assess.app.project import (
+    CheckedStudy,
+    LoadedProject,
+    check_file,
+    problems_of,
+)
+from frp_assess.app.study import StudyFile
 from frp_assess.config.library import MASONRY
-from frp_assess.config.loader import load_parsed
-from frp_assess.config.messages import Loc, format_path, line_of
-from frp_assess.config.problems import problems_of, raise_all
 from frp_assess.config.schema import (
     Ec8Spectrum,
     Ntc2018Spectrum,
@@ -21,12 +22,7 @@ from frp_assess.config.schema import (
     Project,
     TableSpectrum,
 )
-from frp_assess.config.yaml_source import parse_yaml, read_text_file
 from frp_assess.errors import InputError
-from frp_assess.motions.plausibility import plausibility_warnings
-from frp_assess.motions.spectra import parse_spectrum
-from frp_assess.study.plan import StudyPlan
-from frp_assess.study.schema import StudyFile, looks_like_study, parse_study, spectrum_text
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -126,34 +122,6 @@ def summary(loaded: LoadedProject) -> list[str]:
     return lines
 
 
-def study_problems(study: StudyFile, file: str, lines: Mapping[Loc, int]) -> list[InputError]:
-    """Problems of a schema-valid study that need the libraries: materials and spectra."""
-    out: list[InputError] = []
-    try:
-        StudyPlan(study)
-    except InputError as exc:
-        path: Loc = tuple(int(p) if p.isdigit() else p for p in str(exc.key or "").split("."))
-        out.append(
-            InputError(exc.message, file=file, line=line_of(lines, path), key=format_path(path))
-        )
-    for i, spectrum in enumerate(study.spectrum):
-        try:
-            parse_spectrum(spectrum_text(spectrum))
-        except InputError as exc:
-            where: Loc = ("spectrum", i)
-            out.append(
-                InputError(
-                    f"{exc.key}: {exc.message}"
-                    if exc.key and exc.key != "spectrum"
-                    else exc.message,
-                    file=file,
-                    line=line_of(lines, where),
-                    key=format_path(where),
-                )
-            )
-    return sorted(out, key=lambda p: p.line or 0)
-
-
 def study_summary(study: StudyFile, file: str) -> list[str]:
     """The lines printed by `validate` for a study file."""
     rec = study.records
@@ -170,8 +138,7 @@ def study_summary(study: StudyFile, file: str) -> list[str]:
 
 
 def validate_file(path: Path) -> tuple[list[str], tuple[str, ...]]:
-    """Validate a project or a study file (told apart by their keys); a project's record
-    files are read too (their problems are errors, an implausible PGA a warning).
+    """Validate a project or a study file (:func:`frp_assess.app.project.check_file`).
 
     Returns:
         the summary lines and the warnings (one line each, e.g. placeholders left unchanged).
@@ -179,17 +146,10 @@ def validate_file(path: Path) -> tuple[list[str], tuple[str, ...]]:
     Raises:
         InputError: every problem (:class:`~frp_assess.config.problems.InputErrors`).
     """
-    name = str(path)
-    text = read_text_file(path, "project file")
-    data, lines = parse_yaml(text, name)
-    if looks_like_study(data):
-        study = parse_study(data, file=name, lines=lines)
-        raise_all(study_problems(study, name, lines))
-        return study_summary(study, name), ()
-    loaded = load_parsed(data, lines, name, base_dir=path.parent)
-    records, problems = read_record_files(loaded.project, loaded.base_dir)
-    raise_all(problems + layout_problems(loaded))
-    return summary(loaded), (*loaded.warnings, *plausibility_warnings(records))
+    checked = check_file(path)
+    if isinstance(checked, CheckedStudy):
+        return study_summary(checked.study, checked.file), ()
+    return summary(checked.loaded), checked.warnings
 
 
 def print_problems(error: InputError) -> None:

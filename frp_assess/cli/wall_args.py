@@ -11,9 +11,17 @@ import math
 from collections.abc import Callable
 from typing import Any
 
-from frp_assess.assess.wall_model import BarsInput, WallInput, rocking_model
+from frp_assess.app.expert import (
+    MECHANISMS,
+    POSITIONS,
+    BarsInput,
+    ModelOptions,
+    RockingModel,
+    WallInput,
+    rocking_model,
+)
+from frp_assess.app.records import FORMATS, UNITS
 from frp_assess.cli.arg_types import number_in
-from frp_assess.dynamics import MECHANISMS, POSITIONS, ModelOptions, RockingModel
 from frp_assess.dynamics.options import (
     FREE_VIBRATION_TAIL,
     INTEGRATION_TOLERANCE,
@@ -23,7 +31,6 @@ from frp_assess.dynamics.options import (
     Option,
 )
 from frp_assess.errors import InputError
-from frp_assess.motions.readers import FORMATS, UNITS
 
 #: bounds of the command-line wall (those of the project file's schema)
 THICKNESS = number_in(0, 5, low_open=True, unit="m")

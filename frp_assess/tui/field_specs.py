@@ -13,9 +13,9 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import Any
 
-from frp_assess.assess.code_check import CONFIDENCE_FACTORS
-from frp_assess.config import MASONRY
+from frp_assess.config.library import MASONRY
 from frp_assess.config.schema import (
+    CONFIDENCE_FACTORS,
     MIN_ARTIFICIAL_DURATION,
     AnalysisSpec,
     ArtificialRecords,

@@ -15,8 +15,8 @@ from typing import Any
 from textual.dom import DOMNode
 from textual.widgets import Input, Select, Static
 
-from frp_assess.config import Project
 from frp_assess.config.messages import Loc, format_path
+from frp_assess.config.schema import Project
 from frp_assess.tui.core.model import (
     Problem,
     get_path,
