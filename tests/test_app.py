@@ -20,6 +20,7 @@ from frp_assess.app.project import (
     ensure_project_file,
     load_project_text,
 )
+from frp_assess.assess.wall_model import design_strength
 from frp_assess.config.library import FRP_MATERIALS
 from frp_assess.config.schema import WallSpec
 from frp_assess.errors import Cancelled, InputError
@@ -61,15 +62,23 @@ def test_prepare_run_reports_the_records_stage_and_a_cancelled_run_writes_nothin
 
 
 def test_previews_are_the_closed_forms() -> None:
-    """α = atan(B/H), R = ½·√(B² + H²), a_RM = tan α = B/H [g] (docs/model.md §1); FRP mass
-    per metre = ρ·B·H·density, twice for external bars (one layer per face)."""
+    """About the edge: α = atan(B/H), R = ½·√(B² + H²), a_RM = tan α = B/H [g]; about the
+    crushing pivot a_RM = (B − x_W)/H with x_W = W/(0.85·f_d), W = w·B·H per metre
+    (docs/model.md §1.1); FRP mass per metre = ρ·B·H·density, twice for external bars (one
+    layer per face)."""
     spec = WallSpec.model_validate(
-        {"thickness": 0.3, "height": 3.0, "unit_weight": 18.0, "mechanism": "one-sided"}
-    )
-    w = wall_derived(spec)
-    assert w.alpha == pytest.approx(math.atan(0.1))
-    assert w.R == pytest.approx(0.5 * math.hypot(0.3, 3.0))
-    assert w.a_rm == pytest.approx(0.1)
+        {"thickness": 0.3, "height": 3.0, "unit_weight": 18.0, "mechanism": "one-sided",
+         "masonry": "solid-brick-lime-mortar"}
+    )  # fmt: skip
+    edge = wall_derived(spec, pivot="edge")
+    assert edge.alpha == pytest.approx(math.atan(0.1))
+    assert edge.R == pytest.approx(0.5 * math.hypot(0.3, 3.0))
+    assert edge.a_rm == pytest.approx(0.1) and edge.depth == 0.0
+    f_d = design_strength("solid-brick-lime-mortar", "LC1") * 1e6  # [Pa]
+    x_w = 18e3 * 0.3 * 3.0 / (0.85 * f_d)  # [m]
+    crushing = wall_derived(spec, pivot="crushing", level="LC1")
+    assert crushing.depth == pytest.approx(x_w)
+    assert crushing.a_rm == pytest.approx((0.3 - x_w) / 3.0)
     gfrp = FRP_MATERIALS["GFRP"]
     one_face = 1e-3 * 0.3 * 3.0 * gfrp.density  # ρ = 1 ‰ of B per metre, over H
     assert frp_mass_per_metre(0.3, 3.0, gfrp, "centred", 1.0) == pytest.approx(one_face)

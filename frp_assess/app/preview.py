@@ -1,11 +1,11 @@
 """The derived quantities the TUI shows next to the fields while a project is typed.
 
-α, R, p and a_RM of the wall, the elastic spectrum (and so a_g·S) of a ``seismic.spectrum``
-block, the FRP mass per metre of an option and the options' quantities and costs, the
-design-value rule for a number of records: each computed by the one function the run uses
-(:mod:`frp_assess.dynamics.units`, :mod:`frp_assess.assess.quantities`,
-:mod:`frp_assess.assess.from_project`, :mod:`frp_assess.assess.runner`), so that what the
-form previews is what the run will compute.
+α, R, p and a_RM of the wall (about the model's pivot, with x_W for the crushing pivot), the
+elastic spectrum (and so a_g·S) of a ``seismic.spectrum`` block, the FRP mass per metre of an
+option and the options' quantities and costs, the design-value rule for a number of records:
+each computed by the one function the run uses (:mod:`frp_assess.assess.wall_model`,
+:mod:`frp_assess.assess.quantities`, :mod:`frp_assess.assess.from_project`,
+:mod:`frp_assess.assess.runner`), so that what the form previews is what the run will compute.
 """
 
 from __future__ import annotations

@@ -32,6 +32,7 @@ from frp_assess.dynamics import (
 )
 from frp_assess.dynamics.options import STRAIN_FACTOR, VERIFY
 from frp_assess.motions import ElasticSpectrum
+from frp_assess.motions.site import SiteHazard
 from frp_assess.results.model import ReportSettings
 from frp_assess.results.pivot import MasonryResult
 from frp_assess.rules.bars import rupture_strain
@@ -206,6 +207,10 @@ class AssessmentInputs:
     bars: BarSettings = BarSettings(design_values=False, whole_bars=False)
     #: the report's language and Word template
     report: ReportSettings = ReportSettings()
+    #: the site's hazard when the spectrum is given by coordinates (docs/site-hazard.md), and
+    #: the limit state whose a_g, F0, T_C* make ``spectrum``
+    site: SiteHazard | None = None
+    site_limit_state: str = "SLV"
 
     @property
     def masonry_strength(self) -> MasonryResult:

@@ -29,6 +29,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "simulate",
     "ida",
     "records",
+    "site",
     "report",
     "schema",
     "study",

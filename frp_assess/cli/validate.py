@@ -41,8 +41,18 @@ def spectrum_summary(project: Project) -> str:
     """One line describing the spectrum of the project."""
     s = project.seismic.spectrum
     if isinstance(s, Ntc2018Spectrum):
+        ag, f0, tc = s.parameters()
+        where = ""
+        hazard = s.site_hazard()
+        if hazard is not None:
+            state = s.chosen_limit_state
+            where = (
+                f" (site {hazard.latitude:g}°N {hazard.longitude:g}°E, V_R = {hazard.V_R:g} "
+                f"years, {state} T_R = {hazard[state].TR:.0f} years)"
+            )
+            ag, f0, tc = round(ag, 4), round(f0, 3), round(tc, 3)
         return (
-            f"NTC 2018, a_g = {s.ag:g} g, F0 = {s.F0:g}, T_C* = {s.Tc_star:g} s, "
+            f"NTC 2018, a_g = {ag:g} g, F0 = {f0:g}, T_C* = {tc:g} s{where}, "
             f"soil {s.soil}, {s.topography}"
         )
     if isinstance(s, Ec8Spectrum):

@@ -105,7 +105,7 @@ def test_open_edit_derived_values_and_validation_messages(small_project: Path):
             assert app.project is not None
             assert app.project.seismic.spectrum.type == "ntc2018"
             assert "a_g·S = 0.3" in plain(app.query_one("#spectrum-info", Static))
-            await type_into(pilot, "#f-seismic-spectrum-ag-ntc2018-control", "2")
+            await type_into(pilot, "#f-seismic-spectrum-ag-parameters-control", "2")
             assert row_error(app, ("seismic", "spectrum", "ag")) == (
                 "expected a number in (0, 1.5], found 2"
             )
