@@ -109,9 +109,11 @@ def export_run(outcome: RunOutcome, directory: Path) -> list[Path]:
     return [directory / n for n in names if (directory / n).exists()]
 
 
-def rebuild_report(results_dir: Path, out: Path | None = None) -> Path:
+def rebuild_report(results_dir: Path, out: Path | None = None, *, docx: bool = False) -> Path:
     """The PDF report of the stored run in ``results_dir`` (its results.json; no analysis is
     rerun), written to ``out`` (default ``results_dir/report.pdf``); returns the file.
+    ``docx``: the editable Word report instead (default ``results_dir/report.docx``), in the
+    same language (results.json ``report.language``).
 
     A results.json that breaks the report's contract is one located
     :class:`~frp_assess.errors.InputError` and nothing is written; report.pdf inside the
@@ -119,6 +121,7 @@ def rebuild_report(results_dir: Path, out: Path | None = None) -> Path:
     """
     from frp_assess.report.document import (
         CONTRACT_ERRORS,
+        build_docx,
         build_report,
         build_story,
         contract_error,
@@ -126,8 +129,15 @@ def rebuild_report(results_dir: Path, out: Path | None = None) -> Path:
     )
 
     results_dir = Path(results_dir)
-    out = check_out_file(Path(out) if out is not None else results_dir / "report.pdf")
+    default = results_dir / ("report.docx" if docx else "report.pdf")
+    out = check_out_file(Path(out) if out is not None else default)
     results = load_results(results_dir)  # InputError -> one line, exit 2
+    if docx:
+        try:
+            build_docx(results, out)  # atomic: nothing written on an error
+        except CONTRACT_ERRORS as exc:
+            raise contract_error(exc, results_dir / "results.json") from None
+        return out
     try:
         story = build_story(results)  # a value that breaks the contract fails here
         if out.parent.resolve() == results_dir.resolve():  # never follow a linked report.pdf

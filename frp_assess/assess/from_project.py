@@ -52,6 +52,7 @@ from frp_assess.motions import (
     read_record,
     table_spectrum,
 )
+from frp_assess.results.model import ReportSettings
 
 
 def spectrum_of(
@@ -159,6 +160,23 @@ def laid_out(
     return replace(inputs, options=tuple(options))
 
 
+def report_settings(project: Project, base_dir: Path, file: str | None) -> ReportSettings:
+    """The report block: its language, and the Word template resolved next to the project
+    file (an InputError naming ``report.template`` when it is not a .docx file there)."""
+    given = project.report.template
+    if given is None:
+        return ReportSettings(language=project.report.language, template=None)
+    path = base_dir / str(given)
+    if path.suffix.lower() != ".docx" or not path.is_file():
+        raise InputError(
+            f"expected a Word file (.docx) next to the project file, found {str(given)!r}"
+            + ("" if path.is_file() else " (no such file)"),
+            file=file,
+            key="report.template",
+        )
+    return ReportSettings(language=project.report.language, template=str(path))
+
+
 def inputs_from_project(
     project: Project,
     base_dir: Path,
@@ -253,6 +271,7 @@ def inputs_from_project(
         },
         input_file=input_file,
         bars=bar_settings_of(project.bars),
+        report=report_settings(project, base_dir, file or input_file or None),
     )
     problem = base_problem(inputs.wall_input)
     if problem is not None:  # the one refusal of the masonry at the base (rules/masonry.py)

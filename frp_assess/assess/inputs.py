@@ -33,6 +33,7 @@ from frp_assess.dynamics import (
 from frp_assess.dynamics.options import STRAIN_FACTOR, VERIFY
 from frp_assess.motions import ElasticSpectrum
 from frp_assess.motions.site import SiteHazard
+from frp_assess.results.model import ReportSettings
 from frp_assess.results.pivot import MasonryResult
 from frp_assess.rules.bars import rupture_strain
 
@@ -207,6 +208,8 @@ class AssessmentInputs:
     #: (:mod:`frp_assess.config.plausibility`); stored in results.json's input_warnings
     warnings: tuple[str, ...] = ()
     bars: BarSettings = BarSettings(design_values=False, whole_bars=False)
+    #: the report's language and Word template
+    report: ReportSettings = ReportSettings()
     #: the site's hazard when the spectrum is given by coordinates (docs/site-hazard.md), and
     #: the limit state whose a_g, F0, T_C* make ``spectrum``
     site: SiteHazard | None = None

@@ -517,6 +517,7 @@ def build_results(
         decision_rule=decision_rule,
         closest=closest,
         robustness=robustness,
+        report=inputs.report,
         site=site_result(inputs.site, inputs.site_limit_state),
     )
 

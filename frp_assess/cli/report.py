@@ -1,4 +1,6 @@
-"""`frp-assess report RESULTS_DIR`: rebuild the PDF report from stored results."""
+"""`frp-assess report RESULTS_DIR`: rebuild the report from stored results: the PDF, or the
+editable Word file (``--docx``, or an ``--out`` ending in .docx), in the language the project
+asked for (results.json ``report.language``)."""
 
 from __future__ import annotations
 
@@ -17,11 +19,20 @@ def register(sub: argparse._SubParsersAction) -> None:
         "PDF assessment report (default RESULTS_DIR/report.pdf).",
     )
     p.add_argument("results_dir", metavar="RESULTS_DIR", help="results directory of a run")
-    p.add_argument("--out", metavar="FILE", help="PDF to write (default RESULTS_DIR/report.pdf)")
+    p.add_argument(
+        "--out",
+        metavar="FILE",
+        help="file to write (default RESULTS_DIR/report.pdf, or report.docx with --docx); "
+        "a name ending in .docx writes the Word file",
+    )
+    p.add_argument(
+        "--docx", action="store_true", help="write the editable Word report instead of the PDF"
+    )
     p.set_defaults(handler=run)
 
 
 def run(args: argparse.Namespace) -> int:
-    out = rebuild_report(Path(args.results_dir), Path(args.out) if args.out else None)
+    docx = bool(args.docx) or (args.out is not None and str(args.out).lower().endswith(".docx"))
+    out = rebuild_report(Path(args.results_dir), Path(args.out) if args.out else None, docx=docx)
     print(f"wrote {plain_line(out)}")
     return 0

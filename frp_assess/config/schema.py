@@ -985,6 +985,25 @@ class CostsSpec(_Model):
     )
 
 
+# ---------------------------------------------------------------------------------- report
+#: languages of the report (the console and the TUI stay English)
+ReportLanguage = Literal["en", "it"]
+
+
+class ReportSpec(_Model):
+    """The written report: its language and, for the Word file, a firm's template."""
+
+    language: ReportLanguage = Field(
+        "en", description="Language of the report: en (English) | it (Italian); default en."
+    )
+    template: FreeText | None = Field(
+        None,
+        max_length=1000,
+        description="Word file (.docx) whose styles, page and header the DOCX report uses, "
+        "relative to the project file (optional).",
+    )
+
+
 # -------------------------------------------------------------------------------- building
 class BuildingSpec(_Model):
     """Where the wall stands in the building: its base moves with the floor at Z
@@ -1066,6 +1085,9 @@ class Project(_Model):
     bars: BarsSpec = Field(
         default_factory=BarsSpec,
         description="Bars as built: exposure, design values, spacing rule, catalogue, anchorage.",
+    )
+    report: ReportSpec = Field(
+        default_factory=ReportSpec, description="The written report: language, Word template."
     )
 
     @model_validator(mode="after")

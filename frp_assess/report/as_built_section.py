@@ -16,9 +16,9 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from reportlab.lib.units import mm
-from reportlab.platypus import CondPageBreak, Flowable, PageBreak
 
-from frp_assess.report.flow import grid, markup, para
+from frp_assess.report.doc_model import Block
+from frp_assess.report.flow import cond_break, grid, h1, h2, markup, page_break, para
 from frp_assess.report.tables import DASH, TableData, fmt_cost, fmt_mass, fmt_permille, head
 from frp_assess.results.as_built import AsBuilt, BarStrain
 from frp_assess.results.model import AssessmentResult, CaseResult
@@ -211,15 +211,15 @@ def dropped_reasons(results: Results) -> list[str]:
     return [c.pivot.reason for c in results.options if c.pivot is not None and c.pivot.dropped]
 
 
-def section(results: Results) -> list[Flowable]:
+def section(results: Results) -> list[Block]:
     """The flowables of "The retrofit as built" (none when there is nothing to show)."""
     items = built_items(results)
     has_pivot = any(c.pivot is not None for c in results.cases)
     if not items and not has_pivot:
         return []
-    out: list[Flowable] = [PageBreak(), markup("6  The retrofit as built", "h1")]
+    out: list[Block] = [page_break(), h1("6  The retrofit as built")]
     if items:
-        out.append(markup("6.1  Bars, quantities and cost", "h2"))
+        out.append(h2("6.1  Bars, quantities and cost"))
         out.append(
             grid(
                 layout_table(results),
@@ -240,12 +240,12 @@ def section(results: Results) -> list[Flowable]:
                 "caption",
             )
         )
-        out.append(CondPageBreak(45 * mm))
-        out.append(markup("6.2  Rupture strain of the bars", "h2"))
+        out.append(cond_break(45 * mm))
+        out.append(h2("6.2  Rupture strain of the bars"))
         out.append(para(strain_rule(results)))
         out.append(grid(strain_table(results), [x * mm for x in (26, 22, 22, 22, 18, 18, 16, 26)]))
-        out.append(CondPageBreak(45 * mm))
-        out.append(markup("6.3  Anchorage", "h2"))
+        out.append(cond_break(45 * mm))
+        out.append(h2("6.3  Anchorage"))
         out.append(
             grid(
                 anchorage_table(results),
@@ -274,8 +274,8 @@ def section(results: Results) -> list[Flowable]:
                     "small",
                 )
             )
-    out.append(CondPageBreak(60 * mm))
-    out.append(markup("6.4  The masonry at the pivot", "h2"))
+    out.append(cond_break(60 * mm))
+    out.append(h2("6.4  The masonry at the pivot"))
     out.append(para(masonry_text(results)))
     if has_pivot:
         out.append(

@@ -14,9 +14,9 @@ displacements in mm with 1 decimal; periods in s with 3 decimals.
 from __future__ import annotations
 
 from reportlab.lib.units import mm
-from reportlab.platypus import Flowable
 
 from frp_assess.numbers import fmt_zeta
+from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import esc, gap, grid, markup, para
 from frp_assess.report.tables import DASH, TableData, fmt_acc, pass_fail
 from frp_assess.results.checks import CaseChecks, KinematicChecks
@@ -152,11 +152,11 @@ def basis_text(checks: KinematicChecks) -> str:
     return where
 
 
-def checks_section(checks: KinematicChecks) -> list[Flowable]:
+def checks_section(checks: KinematicChecks) -> list[Block]:
     """The flowables of the section: the side-by-side table, the capacity curves, FC and the
     basis of the demand (no heading: the report numbers its sections)."""
     ok = all(c.passed for c in checks.cases)
-    out: list[Flowable] = [
+    out: list[Block] = [
         para(
             "Circolare 2019 §C8.7.1: the linear check (§C8.7.1.2.1.7), the nonlinear static "
             "checks at SLV and SLC (§C8.7.1.2.1.6-8, bars entering through the internal work "

@@ -7,6 +7,8 @@ Public API: :func:`load_results`, :func:`build_story`, :func:`build_report`.
 from __future__ import annotations
 
 import datetime as _dt
+import re
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -17,8 +19,25 @@ from reportlab.platypus import BaseDocTemplate, Flowable, Frame, PageTemplate, P
 
 from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_path
-from frp_assess.report import as_built_section, sections
+from frp_assess.report import (
+    as_built_section,
+    body_analysis,
+    body_annex,
+    body_checks,
+    body_closing,
+    body_front,
+    body_software,
+    render_pdf,
+    sections,
+    sections_results,
+)
 from frp_assess.report import styles as st
+from frp_assess.report.doc_model import Block, Document, Heading, Para, split_sections
+from frp_assess.report.flow import cond_break, h1, markup, page_break
+from frp_assess.report.lang import Lang
+from frp_assess.report.render_docx import write_docx
+from frp_assess.report.render_pdf import fit as _fit
+from frp_assess.report.wording import engineer_blocks
 from frp_assess.results.json_io import from_json
 from frp_assess.results.model import AssessmentResult
 from frp_assess.text_safety import pdf_plain, plain
@@ -73,39 +92,139 @@ def contract_error(exc: Exception, path: Path | str) -> InputError:
 CONTRACT_ERRORS = (KeyError, TypeError, ValueError, AttributeError, IndexError, ZeroDivisionError)
 
 
+def _lang(results: AssessmentResult) -> Lang:
+    return Lang(results.report.language if results.report is not None else "en")
+
+
+#: the body, in the order Italian reviewers expect (the same for every language); True: the
+#: section starts on a new page
+BODY: tuple[tuple[Callable[[AssessmentResult, Lang], list[Block]], bool], ...] = (
+    (body_front.introduction, False),
+    (body_front.codes, False),
+    (body_front.wall, False),
+    (body_front.category, False),
+    (body_front.knowledge_section, False),
+    (body_front.materials, False),
+    (body_analysis.seismic, True),
+    (body_analysis.method, True),
+    (body_checks.as_is, True),
+    (body_checks.retrofit, True),
+    (body_software.section, True),
+    (body_closing.conclusions, True),
+    (body_closing.appendix, True),
+)
+
+#: the calculation details (the English annex): the sections of the detailed report
+ANNEX = (
+    sections.summary,
+    sections.inputs,
+    sections.seismic,
+    sections_results.unreinforced,
+    sections_results.options,
+    as_built_section.section,
+    sections_results.governing,
+)
+_SECTION_REF = re.compile(r"\b(sections?|Figure) (\d)")
+
+
+def number_headings(blocks: list[Block]) -> list[Block]:
+    """Level-1 and level-2 headings numbered 1, 1.1... (a heading whose text starts with a
+    capital letter and a dot or space-dash, an appendix, keeps its text)."""
+    out: list[Block] = []
+    h1_n = h2_n = 0
+    for b in blocks:
+        if isinstance(b, Heading) and b.level in (1, 2):
+            if b.level == 1:
+                h1_n, h2_n = h1_n + 1, 0
+                b = Heading(f"{h1_n}  {b.text}", 1)
+            else:
+                h2_n += 1
+                b = Heading(f"{h1_n}.{h2_n}  {b.text}", 2)
+        out.append(b)
+    return out
+
+
+def annex_blocks(results: AssessmentResult, letter: str = "B") -> list[Block]:
+    """The detailed sections as an annex: headings and cross-references prefixed ``B.``."""
+    out: list[Block] = []
+    for part in ANNEX:
+        blocks = part(results)
+        if part is sections.summary:
+            blocks = blocks[2:]  # the title and subtitle: the body has them
+        for b in blocks:
+            if isinstance(b, Heading) and b.level in (1, 2):
+                b = Heading(f"{letter}.{b.text}", b.level)
+            elif isinstance(b, Para):
+                b = Para(_SECTION_REF.sub(rf"\1 {letter}.\2", b.markup), b.style)
+            out.append(b)
+    return out
+
+
+def build_blocks(results: AssessmentResult) -> list[Block]:
+    """The blocks of the report, in order: title, numbered body, appendix A and (English)
+    the annex B of calculation details."""
+    lang = _lang(results)
+    body: list[Block] = []
+    for part, new_page in BODY:
+        if part is body_closing.appendix:
+            break
+        blocks = part(results, lang)
+        body += [page_break() if new_page else cond_break(40 * mm), *blocks]
+    story: list[Block] = body_front.title(results, lang) + number_headings(body[1:])
+    story += [page_break(), *_appendix(results, lang)]
+    if lang.code == "en":  # the detailed sections, as written in English
+        story += [page_break(), h1(lang.t("h.annex")), markup(lang.t("annex.lead"))]
+        story += annex_blocks(results)
+    else:  # the calculation details in the report's language
+        story += [page_break(), *body_annex.annex(results, lang)]
+    return engineer_blocks(story, results)
+
+
+def _appendix(results: AssessmentResult, lang: Lang) -> list[Block]:
+    out: list[Block] = []
+    n = 0
+    for b in body_closing.appendix(results, lang):
+        if isinstance(b, Heading) and b.level == 2:
+            n += 1
+            b = Heading(f"A.{n}  {b.text}", 2)
+        out.append(b)
+    return out
+
+
+def build_document(results: AssessmentResult) -> Document:
+    """The report as a document model: what both renderers draw."""
+    doc = document_head(results)
+    doc.sections = split_sections(build_blocks(results))
+    return doc
+
+
+def document_head(results: AssessmentResult) -> Document:
+    """The document's title, running header and footer, without its sections."""
+    lang = _lang(results)
+    p = results.project
+    sw = results.software
+    return Document(
+        title=lang.t("doc.title", name=p.name or lang.t("title.unnamed")),
+        header=lang.t("doc.header"),
+        footer=lang.t("doc.footer", software=sw.name, version=sw.version, date=results.created)
+        + (f" · {results.input_file}" if results.input_file else ""),
+        page_word=lang.t("doc.page", n="{n}", total="{total}"),
+        author=p.engineer or "",
+        language=lang.code,
+        sections=[],
+    )
+
+
+def build_docx(results: AssessmentResult, out_path: Path | str) -> None:
+    """Write the editable Word report to ``out_path`` atomically (byte-identical rebuilds)."""
+    template = results.report.template if results.report is not None else None
+    write_docx(build_document(results), out_path, created=results.created, template=template)
+
+
 def build_story(results: AssessmentResult) -> list[Flowable]:
-    """The flowables of the seven sections, in order."""
+    """The PDF flowables of the report, in order."""
     st.register_fonts()
-    story: list[Flowable] = []
-    for part in (
-        sections.summary,
-        sections.inputs,
-        sections.seismic,
-        sections.unreinforced,
-        sections.options,
-        as_built_section.section,
-        sections.governing,
-        sections.method,
-    ):
-        story += part(results)
-    return story
-
-
-def _fit(text: str, font: str, size: float, width: float) -> str:
-    """``text`` (plain, any length) shortened with an ellipsis to fit ``width`` [pt].
-
-    Bisection on the length, so a very long name costs a few width measurements."""
-    text = pdf_plain(text)
-    if stringWidth(text, font, size) <= width:
-        return text
-    lo, hi = 0, len(text)  # text[:lo] + "…" fits; text[:hi] + "…" does not
-    while hi - lo > 1:
-        mid = (lo + hi) // 2
-        if stringWidth(text[:mid] + "…", font, size) <= width:
-            lo = mid
-        else:
-            hi = mid
-    return text[:lo] + "…"
+    return render_pdf.flowables(build_blocks(results))
 
 
 def pdf_date(created: object) -> str:
@@ -141,12 +260,14 @@ class NumberedCanvas(Canvas):
             super().showPage()
         super().save()
 
+    #: "page {n} of {total}" in the report's language
+    page_word = "page {n} of {total}"
+
     def _draw_page_number(self, total: int) -> None:
         self.setFont(st.FONT, 7.5)
         self.setFillColor(st.MUTED)
-        self.drawRightString(
-            st.PAGE_SIZE[0] - st.MARGIN_X, 10 * mm, f"page {self._pageNumber} of {total}"
-        )
+        text = self.page_word.format(n=self._pageNumber, total=total)
+        self.drawRightString(st.PAGE_SIZE[0] - st.MARGIN_X, 10 * mm, text)
 
 
 class ReportTemplate(BaseDocTemplate):
@@ -154,6 +275,7 @@ class ReportTemplate(BaseDocTemplate):
 
     def __init__(self, filename: str, results: AssessmentResult) -> None:
         p = results.project
+        self.document = document_head(results)
         super().__init__(
             filename,
             pagesize=st.PAGE_SIZE,
@@ -161,9 +283,9 @@ class ReportTemplate(BaseDocTemplate):
             rightMargin=st.MARGIN_X,
             topMargin=st.MARGIN_TOP,
             bottomMargin=st.MARGIN_BOTTOM,
-            title=pdf_plain(f"Seismic assessment – {p.name or 'wall'}"),
+            title=pdf_plain(self.document.title),
             author=pdf_plain(p.engineer or ""),
-            subject="Rocking masonry wall retrofitted with vertical FRP rebars",
+            subject=_lang(results).t("doc.subject"),
             creator=pdf_plain(f"frp-assess {results.software.version}"),
             invariant=1,
             initialFontName=st.FONT,
@@ -195,10 +317,13 @@ class ReportTemplate(BaseDocTemplate):
         canv.line(st.MARGIN_X, top - 2.5, w - st.MARGIN_X, top - 2.5)
         canv.setFont(st.FONT_BOLD, 8)
         canv.setFillColor(st.INK)
-        right = "Seismic assessment · vertical FRP rebars"
+        right = self.document.header
         right_w = stringWidth(right, st.FONT, 8)
         name = _fit(
-            str(p.name or "Unnamed project"), st.FONT_BOLD, 8, st.FRAME_WIDTH - right_w - 12
+            str(p.name or _lang(r).t("title.unnamed")),
+            st.FONT_BOLD,
+            8,
+            st.FRAME_WIDTH - right_w - 12,
         )
         canv.drawString(st.MARGIN_X, top, name)
         canv.setFont(st.FONT, 8)
@@ -206,8 +331,7 @@ class ReportTemplate(BaseDocTemplate):
         canv.drawRightString(w - st.MARGIN_X, top, right)
         canv.line(st.MARGIN_X, 13.5 * mm, w - st.MARGIN_X, 13.5 * mm)
         canv.setFont(st.FONT, 7.5)
-        sw = r.software
-        foot = f"{sw.name} {sw.version} · results of {r.created} · {r.input_file or ''}"
+        foot = self.document.footer
         canv.drawString(st.MARGIN_X, 10 * mm, _fit(foot, st.FONT, 7.5, st.FRAME_WIDTH - 80))
         canv.restoreState()
 
@@ -234,10 +358,12 @@ def build_report(
     if story is None:
         story = build_story(results)
     date = pdf_date(results.created)
+    page_word = document_head(results).page_word
 
     def canvas(*args: Any, **kwargs: Any) -> NumberedCanvas:
         c = NumberedCanvas(*args, **kwargs)
         c.setDateFormatter(lambda *_: date)
+        c.page_word = page_word
         return c
 
     with atomic_path(out_path) as tmp:

@@ -16,13 +16,13 @@ from dataclasses import dataclass
 
 from reportlab.graphics.shapes import Drawing
 from reportlab.lib.units import mm
-from reportlab.platypus import CondPageBreak, Flowable, KeepTogether
 
 from frp_assess.numbers import checks_summary
 from frp_assess.report import charts
 from frp_assess.report import styles as st
 from frp_assess.report.checks_section import checks_section
-from frp_assess.report.flow import esc, key_value, markup, para
+from frp_assess.report.doc_model import Block
+from frp_assess.report.flow import cond_break, esc, figure, h2, keep, key_value, markup, para
 from frp_assess.report.tables import fmt_acc
 from frp_assess.results.model import AssessmentResult
 
@@ -143,24 +143,24 @@ def floor_spectra_chart(
     return d
 
 
-def floor_motion_part(results: Results, number: str = "3.4") -> list[Flowable]:
+def floor_motion_part(results: Results, number: str = "3.4") -> list[Block]:
     """The subsection on the floor motion (heading, sentence, building, chart); [] at ground
     level."""
     sentence = floor_sentence(results)
     if sentence is None:
         return []
-    out: list[Flowable] = [
-        CondPageBreak(70 * mm),
-        markup(esc(f"{number}  The motion at the wall's base: the floor at Z"), "h2"),
+    out: list[Block] = [
+        cond_break(70 * mm),
+        h2(f"{number}  The motion at the wall's base: the floor at Z"),
         markup(sentence),
         key_value(floor_rows(results), sub_values=True),
     ]
     chart = floor_spectra_chart(results)
     if chart is not None:
         out.append(
-            KeepTogether(
+            keep(
                 [
-                    chart,
+                    figure(chart),
                     para(
                         "Figure 1b. Floor spectra at 5 % damping: each record's floor motion at Z "
                         "(first mode, as the IDA received it), their mean, the code's floor "
@@ -174,20 +174,20 @@ def floor_motion_part(results: Results, number: str = "3.4") -> list[Flowable]:
     return out
 
 
-def checks_part(results: Results, number: str = "4.4") -> list[Flowable]:
+def checks_part(results: Results, number: str = "4.4") -> list[Block]:
     """The subsection of the code's kinematic checks of every case (Circolare 2019 §C8.7.1):
     heading and :func:`~frp_assess.report.checks_section.checks_section`; [] without them."""
     kc = results.kinematic_checks
     if kc is None:
         return []
     return [
-        CondPageBreak(90 * mm),
-        markup(esc(f"{number}  The code's kinematic checks of every case"), "h2"),
+        cond_break(90 * mm),
+        h2(f"{number}  The code's kinematic checks of every case"),
         *checks_section(kc),
     ]
 
 
-def checks_verdict_lines(results: Results) -> list[Flowable]:
+def checks_verdict_lines(results: Results) -> list[Block]:
     """For the summary: which code checks pass and which fail, for the unreinforced wall and
     the rank-1 option (linear, nonlinear SLV/SLC, time history, IDA); [] without them."""
     rows = checks_summary(results)
@@ -195,7 +195,7 @@ def checks_verdict_lines(results: Results) -> list[Flowable]:
         return []
     kc = results.kinematic_checks
     assert kc is not None
-    out: list[Flowable] = [
+    out: list[Block] = [
         markup(
             "<b>The code's checks</b> (Circolare 2019 §C8.7.1, FC = "
             f"{kc.fc:g}, a<sub>g</sub>·S = {fmt_acc(kc.a_g)} g; section 4.4):"

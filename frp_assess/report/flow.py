@@ -1,4 +1,4 @@
-"""Small flowable builders shared by the report sections.
+"""Small block builders shared by the report sections (:mod:`frp_assess.report.doc_model`).
 
 Escaping is done here, at one place: every builder takes plain text and escapes it with
 :func:`esc` (:func:`frp_assess.text_safety.pdf`); only :class:`~frp_assess.text_safety.Markup`
@@ -7,14 +7,23 @@ and :func:`markup` paragraphs, written by the code, carry markup.
 
 from __future__ import annotations
 
-import re
 from collections.abc import Sequence
 
-from reportlab.platypus import Flowable, Paragraph, Spacer, Table
+from reportlab.graphics.shapes import Drawing
 
 from frp_assess.report import styles as st
+from frp_assess.report.doc_model import (
+    Block,
+    Break,
+    Figure,
+    Gap,
+    Heading,
+    Keep,
+    Para,
+    Table,
+)
 from frp_assess.report.tables import TableData
-from frp_assess.text_safety import PDF_MAX_CHARS, pdf, pdf_plain
+from frp_assess.text_safety import PDF_MAX_CHARS, pdf
 
 #: longest plain-text paragraph (notes) [characters]; table cells hold PDF_MAX_CHARS
 PARAGRAPH_MAX_CHARS = 8 * PDF_MAX_CHARS
@@ -26,26 +35,43 @@ def esc(text: object, *, limit: int = PDF_MAX_CHARS) -> str:
     return pdf(text, limit=limit)
 
 
-_SUB = re.compile(r"(?<![A-Za-z0-9])([A-Za-zαεθ])_([A-Za-z0-9]+)")
-
-
-def with_subscripts(escaped: str) -> str:
-    """``a_dyn`` → a<sub>dyn</sub> in already escaped, trusted label text."""
-    return _SUB.sub(r"\1<sub>\2</sub>", escaped)
-
-
-def para(text: object, style: str = "body") -> Paragraph:
+def para(text: object, style: str = "body") -> Para:
     """A paragraph of plain text (escaped)."""
-    return Paragraph(esc(text, limit=PARAGRAPH_MAX_CHARS), st.paragraph_styles()[style])
+    return Para(esc(text, limit=PARAGRAPH_MAX_CHARS), style)
 
 
-def markup(text: str, style: str = "body") -> Paragraph:
+def markup(text: str, style: str = "body") -> Para:
     """A paragraph of trusted markup: every piece of data in it must go through :func:`esc`."""
-    return Paragraph(text, st.paragraph_styles()[style])
+    return Para(text, style)
 
 
-def gap(h: float = 6) -> Spacer:
-    return Spacer(1, h)
+def h1(text: str) -> Heading:
+    return Heading(text, 1)
+
+
+def h2(text: str) -> Heading:
+    return Heading(text, 2)
+
+
+def gap(h: float = 6) -> Gap:
+    return Gap(h)
+
+
+def page_break() -> Break:
+    return Break("page")
+
+
+def cond_break(height: float) -> Break:
+    """A page break unless ``height`` [pt] is left on the page."""
+    return Break("cond", height)
+
+
+def keep(blocks: Sequence[Block]) -> Keep:
+    return Keep(tuple(blocks))
+
+
+def figure(drawing: Drawing) -> Figure:
+    return Figure(drawing)
 
 
 def key_value(
@@ -58,18 +84,15 @@ def key_value(
     """'quantity | value' table; both columns wrap. Keys are labels written by the report
     (``x_y`` shown as a subscript); values are shown as typed unless ``sub_values`` (then
     except the rows in ``verbatim_rows``, which hold user text)."""
-    s = st.paragraph_styles()
-
-    def val(i: int, v: str) -> str:
-        return with_subscripts(esc(v)) if sub_values and i not in verbatim_rows else esc(v)
-
-    data = [
-        [Paragraph(with_subscripts(esc(k)), s["cell"]), Paragraph(val(i, v), s["cell"])]
-        for i, (k, v) in enumerate(rows)
-    ]
-    t = Table(data, colWidths=[key_width, st.FRAME_WIDTH - key_width], hAlign="LEFT")
-    t.setStyle(st.key_value_table_style(len(data)))
-    return t
+    return Table(
+        "key_value",
+        (),
+        tuple((str(k), str(v)) for k, v in rows),
+        (key_width, st.FRAME_WIDTH - key_width),
+        wrap=(0, 1),
+        sub_values=sub_values,
+        verbatim_rows=tuple(verbatim_rows),
+    )
 
 
 def grid(
@@ -82,33 +105,17 @@ def grid(
     highlight_rows: Sequence[int] = (),
     repeat_header: bool = True,
 ) -> Table:
-    """A table with a header row. Columns in ``wrap`` hold wrapping (escaped) paragraphs;
-    the others plain strings (right-aligned from ``numeric_from``); header cells are plain text
-    or :class:`~frp_assess.text_safety.Markup`."""
-    s = st.paragraph_styles()
-    head = s["head_small"] if small else s["head_center"]
-    cell = s["cell_small"] if small else s["cell"]
-    body: list[list[Flowable | str]] = [[Paragraph(esc(h), head) for h in data.header]]
-    for row in data.rows:
-        body.append(
-            [Paragraph(esc(v), cell) if j in wrap else pdf_plain(v) for j, v in enumerate(row)]
-        )
-    total = sum(widths)
-    scale = st.FRAME_WIDTH / total if total > st.FRAME_WIDTH else 1.0
-    t = Table(
-        body,
-        colWidths=[w * scale for w in widths],
-        repeatRows=1 if repeat_header else 0,
-        hAlign="LEFT",
-    )
-    style = st.grid_table_style(
-        len(body),
-        font_size=st.SMALL_TABLE_SIZE if small else st.TABLE_SIZE,
+    """A table with a header row. Columns in ``wrap`` hold wrapping paragraphs; the others
+    one line (right-aligned from ``numeric_from``); header cells are plain text or
+    :class:`~frp_assess.text_safety.Markup`."""
+    return Table(
+        "grid",
+        tuple(data.header),
+        tuple(tuple(r) for r in data.rows),
+        tuple(widths),
+        wrap=tuple(wrap),
+        small=small,
         numeric_from=numeric_from,
+        highlight_rows=tuple(highlight_rows),
+        repeat_header=repeat_header,
     )
-    for r in highlight_rows:
-        style.add("BACKGROUND", (0, r + 1), (-1, r + 1), st.HIGHLIGHT)
-    for j in wrap:
-        style.add("ALIGN", (j, 1), (j, -1), "LEFT")
-    t.setStyle(style)
-    return t

@@ -14,122 +14,113 @@ Number formats, used everywhere in the report:
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
-from typing import Any
 
-from frp_assess.numbers import fmt_against
+from frp_assess.report.formats import (  # re-exported: tables.X for the sections
+    DASH as DASH,
+)
+from frp_assess.report.formats import (
+    NO_COLLAPSE as NO_COLLAPSE,
+)
+from frp_assess.report.formats import (
+    TableData as TableData,
+)
+from frp_assess.report.formats import (
+    a_dyn_label as a_dyn_label,
+)
+from frp_assess.report.formats import (
+    bound as bound,
+)
+from frp_assess.report.formats import (
+    case_by_name as case_by_name,
+)
+from frp_assess.report.formats import (
+    fmt_acc as fmt_acc,
+)
+from frp_assess.report.formats import (
+    fmt_capacity as fmt_capacity,
+)
+from frp_assess.report.formats import (
+    fmt_cost as fmt_cost,
+)
+from frp_assess.report.formats import (
+    fmt_mass as fmt_mass,
+)
+from frp_assess.report.formats import (
+    fmt_mult as fmt_mult,
+)
+from frp_assess.report.formats import (
+    fmt_num as fmt_num,
+)
+from frp_assess.report.formats import (
+    fmt_permille as fmt_permille,
+)
+from frp_assess.report.formats import (
+    fmt_q as fmt_q,
+)
+from frp_assess.report.formats import (
+    fmt_ratio as fmt_ratio,
+)
+from frp_assess.report.formats import (
+    head as head,
+)
+from frp_assess.report.formats import (
+    pass_fail as pass_fail,
+)
+from frp_assess.report.formats import (
+    position_text as position_text,
+)
+from frp_assess.report.formats import (
+    ranked_options as ranked_options,
+)
+from frp_assess.report.formats import (
+    yes_no as yes_no,
+)
+from frp_assess.report.tables_inputs import (
+    COLLAPSE_WORDS as COLLAPSE_WORDS,
+)
+from frp_assess.report.tables_inputs import (
+    activation_label as activation_label,
+)
+from frp_assess.report.tables_inputs import (
+    compliance_table as compliance_table,
+)
+from frp_assess.report.tables_inputs import (
+    crushing_shift as crushing_shift,
+)
+from frp_assess.report.tables_inputs import (
+    design_strain as design_strain,
+)
+from frp_assess.report.tables_inputs import (
+    fmt_margin as fmt_margin,
+)
+from frp_assess.report.tables_inputs import (
+    materials_table as materials_table,
+)
+from frp_assess.report.tables_inputs import (
+    model_rows as model_rows,
+)
+from frp_assess.report.tables_inputs import (
+    records_table as records_table,
+)
+from frp_assess.report.tables_inputs import (
+    rupture_strain_words as rupture_strain_words,
+)
+from frp_assess.report.tables_inputs import (
+    software_rows as software_rows,
+)
+from frp_assess.report.tables_inputs import (
+    spectrum_rows as spectrum_rows,
+)
+from frp_assess.report.tables_inputs import (
+    wall_property_rows as wall_property_rows,
+)
+from frp_assess.report.tables_inputs import (  # re-exported, as above
+    wall_rows as wall_rows,
+)
 from frp_assess.results.model import AssessmentResult, CaseResult, HistoryRun
-from frp_assess.text_safety import Markup, pdf
+from frp_assess.text_safety import Markup
 
 Results = AssessmentResult
-DASH = "—"
-NO_COLLAPSE = "no collapse ≤ C_max"
-
-
-@dataclass(frozen=True)
-class TableData:
-    """Header (plain text or :class:`Markup`) and body rows (plain text)."""
-
-    header: list[str]
-    rows: list[list[str]]
-
-
-def head(template: str, **user: object) -> Markup:
-    """A header cell of constant markup ``template`` with user values (escaped) filled in."""
-    return Markup(template.format(**{k: pdf(v) for k, v in user.items()}))
-
-
-# --- number formats -----------------------------------------------------------------------
-
-
-def fmt_acc(x: float | None) -> str:
-    return DASH if x is None else f"{x:.3f}"
-
-
-def fmt_ratio(x: float | None) -> str:
-    return DASH if x is None else f"{x:.2f}"
-
-
-fmt_q = fmt_ratio
-
-
-def fmt_capacity(case: CaseResult, target: float) -> str:
-    """capacity/demand of a case with enough decimals to agree with its verdict against
-    ``target`` (0.997 → '0.997', not '1.00', when it does not meet 1)."""
-    return fmt_against(case.capacity_demand, target, case.meets_target)
-
-
-def fmt_mult(x: float | None) -> str:
-    return NO_COLLAPSE if x is None else f"{x:.3f}"
-
-
-def fmt_mass(x: float | None) -> str:
-    return DASH if x is None else f"{x:.1f}"
-
-
-def fmt_cost(x: float | None) -> str:
-    return DASH if x is None else f"{x:,.0f}"
-
-
-def fmt_permille(x: float | None) -> str:
-    """ρ in ‰: at most 2 decimals, trailing zeros dropped (2 → '2', 1.579 → '1.58')."""
-    if x is None:
-        return DASH
-    return f"{x:.2f}".rstrip("0").rstrip(".")
-
-
-def fmt_num(x: Any, digits: int = 3) -> str:
-    """Generic value: numbers to ``digits`` significant figures, others as text."""
-    if x is None:
-        return DASH
-    if isinstance(x, bool):
-        return "yes" if x else "no"
-    if isinstance(x, int):
-        return str(x)
-    if isinstance(x, float):
-        return f"{x:.{digits}g}"
-    return str(x)
-
-
-def yes_no(x: bool | None) -> str:
-    return DASH if x is None else ("yes" if x else "no")
-
-
-def pass_fail(x: bool | None) -> str:
-    return DASH if x is None else ("pass" if x else "FAIL")
-
-
-# --- helpers on the results ---------------------------------------------------------------
-
-
-def ranked_options(results: Results) -> list[CaseResult]:
-    """Retrofit options by rank (1 first); unranked options last, in file order."""
-    opts = [c for c in results.cases if c.material is not None]
-    return sorted(opts, key=lambda c: (c.rank is None, c.rank or 0))
-
-
-def a_dyn_label(results: Results) -> str:
-    """Header markup of the design a_dyn column."""
-    return Markup(
-        "mean a<sub>dyn</sub> [g]" if results.design_is_mean else "min a<sub>dyn</sub> [g]"
-    )
-
-
-def bound(text: str, lower: bool) -> str:
-    return f"≥ {text}" if lower and text != DASH else text
-
-
-def case_by_name(results: Results, name: str | None) -> CaseResult | None:
-    for c in results.cases:
-        if c.name == name:
-            return c
-    return None
-
-
-def position_text(pos: str | None) -> str:
-    return DASH if pos is None else pos
-
-
 # --- the tables ---------------------------------------------------------------------------
 
 RANKING_HEADER = [
@@ -287,221 +278,6 @@ def summary_table(results: Results, n_alternatives: int = 3) -> TableData:
                 yes_no(c.meets_target),
             ]
         )
-    return TableData(header, rows)
-
-
-def wall_rows(results: Results) -> list[list[str]]:
-    w = results.wall
-    return [
-        ["thickness B", f"{w.thickness:.3f} m"],
-        ["height H", f"{w.height:.3f} m"],
-        ["length L", f"{w.length:.3f} m"],
-        ["masonry", w.masonry_description or w.masonry or DASH],
-        ["unit weight w", f"{w.unit_weight:g} kN/m³"],
-        ["mechanism", w.mechanism],
-    ]
-
-
-def wall_property_rows(results: Results) -> list[list[str]]:
-    w = results.wall
-    return [
-        ["slenderness α (tan α = B/H)", f"{w.alpha:.4f} rad = {w.alpha_deg:.2f}°"],
-        ["half diagonal R", f"{w.R:.3f} m"],
-        ["frequency parameter p", f"{w.p:.3f} rad/s"],
-        ["mass per metre m", f"{w.mass:.1f} kg/m"],
-        [activation_label(results), f"{fmt_acc(w.a_rm)} g"],
-    ]
-
-
-def crushing_shift(results: Results) -> float | None:
-    """x [m] of the unreinforced wall's crushing pivot, None when its model turns about the
-    edge (docs/model.md §1.1): results.json ``wall.a_rm`` is about that pivot."""
-    piv = results.urm.pivot
-    if piv is None or piv.model_pivot != "crushing" or piv.pivot_shift <= 0.0:
-        return None
-    return piv.depth
-
-
-def activation_label(results: Results) -> str:
-    """The label of a_RM with the formula of the model's pivot: g·tan α about the edge,
-    g·(B − x)/H about the crushing pivot (docs/model.md §1.1, §5.1)."""
-    x = crushing_shift(results)
-    if x is None:
-        return "rocking activation a_RM = g·tan α"
-    return f"rocking activation a_RM = g·(B − x)/H (crushing pivot, x = {x * 1000:.0f} mm)"
-
-
-def design_strain(results: Results) -> bool:
-    """True when the bars' rupture strain is the design value c·η_a·ε_fk/γ_f (some option
-    has bars as built with ``bars.design_values``), False for the mean c·ε_u (docs/model.md
-    §2.1)."""
-    return any(c.as_built is not None and c.as_built.strain.design_values for c in results.cases)
-
-
-def rupture_strain_words(results: Results) -> str:
-    """ε_max in symbols, as the model used it: c·η_a·ε_fk/γ_f or c·ε_u."""
-    return "c·η_a·ε_fk/γ_f" if design_strain(results) else "c·ε_u"
-
-
-def materials_table(results: Results) -> TableData:
-    cur = results.costs.currency
-    header = [
-        "material",
-        "E [GPa]",
-        Markup("ε<sub>u</sub> [–]"),
-        "density [kg/m³]",
-        f"price [{cur}/kg]",
-        "source",
-    ]
-    rows = [
-        [
-            name,
-            f"{m.elastic_modulus:g}",
-            f"{m.ultimate_strain:g}",
-            f"{m.density:g}",
-            f"{m.price:.2f}",
-            m.source or DASH,
-        ]
-        for name, m in sorted(results.materials.items())
-    ]
-    return TableData(header, rows)
-
-
-#: the collapse rules in words (docs/model.md §3.5)
-COLLAPSE_WORDS = {
-    "overturning": "overturning: the wall falls (followed after the record until its fate "
-    "is certain)",
-    "end-of-record": "end-of-record: |θ| ≥ α when the record ends (the paper's convention)",
-    "first-exceedance": "first-exceedance: |θ| reaches α at any time",
-}
-
-
-def model_rows(results: Results) -> list[list[str]]:
-    m = results.model
-    ida = m.ida
-    cur = results.costs.currency
-    rows = [
-        [
-            "restitution at impact",
-            f"{m.restitution} (velocity ratio applied {m.restitution_ratio:.3f})",
-        ],
-        ["rupture rule", m.rupture],
-        ["collapse criterion", COLLAPSE_WORDS.get(m.collapse, m.collapse)],
-        [
-            f"cyclic strain factor c (ε_max = {rupture_strain_words(results)})",
-            f"{m.strain_factor:g}",
-        ],
-        ["free-vibration tail", f"{m.free_vibration_tail:g} s"],
-        ["target capacity/demand", f"≥ {m.target:g}"],
-    ]
-    integ = m.integration
-    if integ:
-        rows.append(
-            [
-                "time integration",
-                f"Dormand–Prince 5(4), local error tolerance {integ.tolerance:g}",
-            ]
-        )
-    if m.design_value:
-        rows.append(["design value of a_dyn", str(m.design_value)])
-    rows += [
-        ["IDA step ratio s", f"{ida.step_ratio:g}"],
-        ["IDA bisection tolerance", f"{ida.tolerance:g} (relative)"],
-        ["IDA largest multiplier C_max", f"{ida.max_multiplier:g} × C₀"],
-        [
-            "installation cost",
-            f"{fmt_cost(results.costs.installation_per_metre)} {cur} per metre of wall "
-            "and layer of bars (indicative)",
-        ],
-    ]
-    return rows
-
-
-def software_rows(results: Results) -> list[list[str]]:
-    p = results.project
-    sw = results.software
-    return [
-        ["project", p.name or DASH],
-        ["location", p.location or DASH],
-        ["engineer", p.engineer or DASH],
-        ["notes", p.notes or DASH],
-        ["project file", results.input_file or DASH],
-        ["date of the run", results.created or DASH],
-        ["software", f"{sw.name} {sw.version}"],
-        ["results schema", str(results.schema_version)],
-    ]
-
-
-def spectrum_rows(results: Results) -> list[list[str]]:
-    s = results.seismic
-    sp = s.spectrum
-    params = ", ".join(f"{k} = {fmt_num(v, 4)}" for k, v in (sp.parameters or {}).items())
-    rows = [
-        ["spectrum", sp.name or sp.type or DASH],
-        ["description", sp.description or DASH],
-        ["parameters", params or DASH],
-        ["zero-period acceleration a_g·S", f"{fmt_acc(sp.ag_S)} g"],
-    ]
-    corners = [
-        f"{k} = {v:.3f} s"
-        for k, v in (("T_B", sp.T_B), ("T_C", sp.T_C), ("T_D", sp.T_D))
-        if v is not None
-    ]
-    if corners:
-        rows.append(["corner periods", ", ".join(corners)])
-    rows.append(["demand a_g·S used for capacity/demand", f"{fmt_acc(results.demand.pga)} g"])
-    rows.append(["reference period T1 of the checks", f"{s.t1:g} s"])
-    gen = s.generator
-    if s.records_kind == "artificial" and gen:
-        rows.append(
-            [
-                "records",
-                f"{gen.count} artificial ({gen.method}), seed {gen.seed}, "
-                f"duration {gen.duration:g} s, dt {gen.dt:g} s",
-            ]
-        )
-    else:
-        rows.append(["records", f"{len(results.records)} recorded accelerograms"])
-    return rows
-
-
-def records_table(results: Results) -> TableData:
-    header = ["record", "source / seed", "PGA [g]", "duration [s]", "dt [s]", "scale factor"]
-    rows = [
-        [
-            r.name,
-            r.source or DASH,
-            fmt_acc(r.pga),
-            f"{r.duration:.2f}",
-            f"{r.dt:g}",
-            f"{r.scale_factor:.3f}",
-        ]
-        for r in results.records
-    ]
-    return TableData(header, rows)
-
-
-def fmt_margin(margin: float | None, unit: str | None) -> str:
-    if margin is None:
-        return DASH
-    if not unit:
-        return f"{margin:+.1%}"
-    return f"{margin:+g} {unit}"
-
-
-def compliance_table(results: Results) -> TableData:
-    header = ["code", "clause", "requirement", "found", "margin", "result"]
-    rows = [
-        [
-            c.code,
-            c.clause,
-            c.requirement,
-            c.found,
-            fmt_margin(c.margin, c.unit),
-            pass_fail(c.passed),
-        ]
-        for c in results.compliance.checks
-    ]
     return TableData(header, rows)
 
 

@@ -36,6 +36,15 @@ class Software:
 
 
 @dataclass(frozen=True)
+class ReportSettings:
+    """How the report is written: ``language`` en | it; ``template``: the Word file whose
+    styles the DOCX report uses (a path as the run resolved it, or None)."""
+
+    language: str = "en"
+    template: str | None = None
+
+
+@dataclass(frozen=True)
 class ProjectInfo:
     """Who and where, as typed in the project file (free text)."""
 
@@ -562,6 +571,8 @@ class AssessmentResult:
     closest: str | None = None
     #: how firm the verdict is; None: not computed
     robustness: Robustness | None = None
+    #: the report's language and Word template (None in files written before it: English)
+    report: ReportSettings | None = None
     #: the site, when the spectrum is given by its coordinates; the key is absent otherwise
     site: SiteResult | None = field(default=None, metadata={"omit_if_none": True})
 

@@ -7,6 +7,7 @@ from pathlib import Path
 from reportlab.platypus import Paragraph, SimpleDocTemplate
 
 from frp_assess.report.checks_section import checks_section, checks_table, curves_table
+from frp_assess.report.render_pdf import flowables
 from frp_assess.results.checks import (
     CapacitySummary,
     CaseChecks,
@@ -119,7 +120,7 @@ def test_curves_table_in_mm_and_seconds():
 
 
 def test_section_states_fc_and_the_floor_and_renders(tmp_path: Path):
-    story = checks_section(CHECKS)
+    story = flowables(checks_section(CHECKS))
     text = _text(story)
     assert "FC = 1.35 (knowledge level LC1" in text
     assert "Z/H = 0.67 of a 3-storey building" in text

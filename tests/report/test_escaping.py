@@ -138,7 +138,8 @@ def test_names_and_codes_wrap_inside_their_cells(results: dict[str, Any]) -> Non
     into the next column ("CFRP-HMexternal", "EN 1998§3.2.3.1.2(3)")."""
     from reportlab.platypus import Paragraph, Table
 
-    from frp_assess.report import sections
+    from frp_assess.report import sections, sections_results
+    from frp_assess.report.render_pdf import flowables
 
     def tables(flowables: list[Any]) -> list[Table]:
         found = []
@@ -156,10 +157,10 @@ def test_names_and_codes_wrap_inside_their_cells(results: dict[str, Any]) -> Non
                 return t
         raise AssertionError(header)
 
-    ranking = table_with(sections.options(typed(results)), "position")
+    ranking = table_with(flowables(sections_results.options(typed(results))), "position")
     for row in ranking._cellvalues[1:]:
         assert isinstance(row[2], Paragraph) and isinstance(row[3], Paragraph)
-    compliance = table_with(sections.seismic(typed(results)), "clause")
+    compliance = table_with(flowables(sections.seismic(typed(results))), "clause")
     for row in compliance._cellvalues[1:]:
         assert isinstance(row[0], Paragraph) and isinstance(row[1], Paragraph)
 

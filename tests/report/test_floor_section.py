@@ -65,7 +65,7 @@ def _above_ground() -> AssessmentResult:
 def test_story_states_the_floor_motion_the_checks_and_fc():
     results = _above_ground()
     text = story_text(build_story(results))
-    page1 = text.split("2  Inputs")[0]
+    page1 = text.split("B.2  Inputs")[0]
     assert "Wall above ground." in page1 and "Z = 6 m" in page1
     assert "2.00–2.00 times the ground records'" in page1  # floor_pga = 2·pga in the fixture
     assert "The code's checks" in page1
@@ -73,18 +73,20 @@ def test_story_states_the_floor_motion_the_checks_and_fc():
         f"{results.urm.name}: passes nonlinear SLC, IDA; fails linear, nonlinear SLV, "
         "time history" in page1
     )
-    assert "3.4 The motion at the wall's base" in text
-    assert "4.4 The code's kinematic checks of every case" in text
-    assert "Turn it off with code_check.fc_in_ida: false" in text
-    assert "FC = 1.35 (LC1; Circolare 2019 §C8.7.1.2.1.3" in text
+    assert "B.3.4 The motion at the wall's base" in text
+    assert "B.4.4 The code's kinematic checks of every case" in text
+    assert "Knowledge level LC1, confidence factor FC = 1.35" in text
+    assert "divided by the same confidence factor, FC = 1.35" in text
+    assert "fc_in_ida" not in text  # the report names no key of the project file
 
 
 def test_ground_level_results_have_none_of_it():
     base = from_json(DATA.read_text(encoding="utf-8"))
     text = story_text(build_story(base))
-    assert "Wall above ground" not in text and "3.4 The motion" not in text
-    assert "4.4 The code's kinematic" not in text
-    assert "not divided by FC" in text  # the fixture's cases have FC = 1
+    assert "Wall above ground" not in text and "B.3.4 The motion" not in text
+    assert "B.4.4 The code's kinematic" not in text
+    # the fixture's cases have FC = 1 with knowledge level LC1 (FC 1.35)
+    assert "is not divided by the confidence factor" in text
 
 
 def test_floor_rows_say_whether_t1_is_the_default():
@@ -140,7 +142,7 @@ def test_above_ground_pdf_builds_and_the_fields_round_trip(tmp_path: Path):
 def test_linear_check_at_height_on_page_1():
     results = _above_ground()
     text = story_text(build_story(results))
-    page1 = text.split("2  Inputs")[0]
+    page1 = text.split("B.2  Inputs")[0]
     # the linear check of the checks' fixture: a0* = 0.098 g against a_Z/q = 0.125 g
     assert "a0* = 0.098 g against 0.125 g (ratio 0.78: not satisfied)" in page1
     ground = from_json(DATA.read_text(encoding="utf-8"))

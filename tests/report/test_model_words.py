@@ -119,29 +119,29 @@ def test_dropped_count_agrees_with_its_verb(tmp_path: Path) -> None:
     one = replace(r, cases=(*r.cases[:-1], replace(r.cases[-1], rank=None)))  # an older file
     text = story_text(build_story(one))
     assert f"1 of {n} options fails the pivot check" in text
-    assert "and is dropped from the ranking: see section 6.4" in text
+    assert "and is dropped from the ranking: see section B.6.4" in text
     every = replace(r, cases=(r.cases[0], *(replace(c, rank=None) for c in r.options)))
     assert f"{n} of {n} options fail the pivot check" in story_text(build_story(every))
 
 
 def test_fc_sentence_does_not_contradict_its_knowledge_level(tmp_path: Path) -> None:
-    """Circolare 2019 Tab. C8.5.IV: LC2 gives FC = 1.20; the method section printed
+    """Circolare 2019 Tab. C8.5.IV: LC2 gives FC = 1.20; the report once printed
     "FC = 1.2 (LC2; ... uses LC1's FC = 1.35)", two values for one factor."""
-    from frp_assess.report.sections import fc_text
+    from frp_assess.report import body_front
+    from frp_assess.report.doc_model import markup_text
+    from frp_assess.report.lang import Lang
 
     r = small_result(tmp_path)
     assert r.kinematic_checks is not None
     lc2 = replace(
         r,
         cases=tuple(replace(c, fc=1.2) for c in r.cases),
-        kinematic_checks=replace(r.kinematic_checks, knowledge_level="LC2"),
+        kinematic_checks=replace(r.kinematic_checks, knowledge_level="LC2", fc=1.2),
+        masonry_strength=None,
     )
-    text = fc_text(lc2)
-    assert text.startswith("Confidence factor: FC = 1.2 (knowledge level LC2, as asked")
-    assert "would use LC1's FC = 1.35" in text
-    lc1 = replace(
-        r,
-        cases=tuple(replace(c, fc=1.35) for c in r.cases),
-        kinematic_checks=replace(r.kinematic_checks, knowledge_level="LC1"),
+    text = " ".join(
+        markup_text(getattr(b, "markup", "")) for b in body_front.knowledge_section(lc2, Lang())
     )
-    assert fc_text(lc1).startswith("Confidence factor: FC = 1.35 (LC1; Circolare 2019")
+    assert "Knowledge level LC2, confidence factor FC = 1.2 " in text
+    assert "divided by the same confidence factor, FC = 1.2:" in text
+    assert "1.35" not in text.split("For a rigid block")[0]

@@ -72,8 +72,9 @@ def test_table_rows_and_clamp_note() -> None:
 def test_report_shows_the_site(tmp_path: Path) -> None:
     res = replace(_base(), site=SITE)
     text = story_text(build_story(res))
-    assert "Site hazard from coordinates" in text
+    # the body's seismic action states the site (report/body_analysis.site_blocks)
+    assert "latitude, longitude" in text
     assert "42.7927°, 13.0936°" in text
-    assert "those of SLD at the site" in text
+    assert "the limit state SLD at the site" in text
     build_report(res, tmp_path / "r.pdf")
     assert (tmp_path / "r.pdf").stat().st_size > 0

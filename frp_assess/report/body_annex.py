@@ -1,0 +1,166 @@
+"""The calculation details in the report's language (the Italian annex): every option, the
+collapse acceleration of every option and accelerogram, the scatter, the code's checks of
+every case and the bars as built.  Words from the catalogue, numbers from the results."""
+
+from __future__ import annotations
+
+from reportlab.lib.units import mm
+
+from frp_assess.report.body_front import position_words
+from frp_assess.report.doc_model import Block
+from frp_assess.report.flow import cond_break, grid, h1, h2, markup
+from frp_assess.report.formats import TableData
+from frp_assess.report.lang import Lang, short
+from frp_assess.results.model import AssessmentResult, CaseResult
+from frp_assess.text_safety import Markup
+
+Results = AssessmentResult
+
+
+def _bound(text: str, lower: bool) -> str:
+    return f"≥ {text}" if lower else text
+
+
+def case_label(c: CaseResult, lang: Lang) -> str:
+    """A case in a table: the wall as it is, or material, position and ρ [‰]."""
+    if c.is_unreinforced:
+        return lang.t("annex.urm")
+    pos = position_words(c.position, lang, short=True)
+    return f"{c.material or '—'}, {pos}, {lang.num(c.ratio, 2)} ‰"
+
+
+def _cases(results: Results) -> list[CaseResult]:
+    return [results.urm, *results.ranked_options]
+
+
+def options_table(results: Results, lang: Lang) -> TableData:
+    n = lang.num
+    header = [
+        "#",
+        lang.t("annex.col.option"),
+        Markup("a<sub>dyn,d</sub> [g]"),
+        lang.t("col.cd"),
+        "I [-]",
+        lang.t("col.mass"),
+        lang.t("col.cost", currency=short(results.costs.currency)),
+    ]
+    rows = []
+    for c in results.ranked_options:
+        lb = c.lower_bound
+        rank = str(c.rank) if c.rank is not None else lang.t("annex.dropped")
+        rows.append([rank, case_label(c, lang), _bound(n(c.design_a_dyn, 3), lb),
+                     _bound(n(c.capacity_demand, 2), lb), _bound(n(c.improvement, 2), lb),
+                     n(c.frp_mass, 1), n(c.frp_cost, 0, grouping=True)])  # fmt: skip
+    return TableData(header, rows)
+
+
+def a_dyn_table(results: Results, lang: Lang) -> TableData:
+    names = [r.name for r in results.records]
+    rows = []
+    for c in _cases(results):
+        by_rec = {r.record: r for r in c.records}
+        cells = []
+        for name in names:
+            r = by_rec.get(name)
+            if r is None:
+                cells.append("—")
+            else:
+                cells.append(lang.t("annex.nc") if r.a_dyn is None else lang.num(r.a_dyn, 3))
+        rows.append([case_label(c, lang), *cells])
+    return TableData([lang.t("annex.col.option"), *names], rows)
+
+
+def scatter_table(results: Results, lang: Lang) -> TableData:
+    n = lang.num
+    header = [
+        lang.t("annex.col.option"),
+        Markup(lang.t("annex.col.median")),
+        "CoV [-]",
+        lang.t("annex.col.pcollapse"),
+    ]
+    rows = []
+    for c in _cases(results):
+        sc = c.scatter
+        p = None if sc.fragility is None else sc.fragility.p_collapse_at_demand
+        rows.append([case_label(c, lang), n(sc.median_a_dyn, 3), n(sc.cov, 2),
+                     "—" if p is None else f"{n(100 * p, 1)} %"])  # fmt: skip
+    return TableData(header, rows)
+
+
+def checks_table(results: Results, lang: Lang) -> TableData | None:
+    kc = results.kinematic_checks
+    if kc is None or not kc.cases:
+        return None
+    header = [lang.t("annex.col.option"), lang.t("check.linear"), lang.t("check.slv"),
+              lang.t("check.slc"), lang.t("check.th"), "IDA"]  # fmt: skip
+    by_name = {c.name: c for c in results.cases}
+
+    def cell(z: float | None, ok: bool | None) -> str:
+        if ok is None:
+            return "—"
+        zeta = "—" if z is None else lang.num(z, 2)
+        return f"{zeta} {lang.t('annex.ok' if ok else 'annex.ko')}"
+
+    rows = []
+    for k in kc.cases:
+        case = by_name.get(k.case)
+        label = case_label(case, lang) if case is not None else k.case
+        th, ida = k.time_history, k.ida
+        rows.append([
+            label,
+            cell(k.linear.zeta_e, k.linear.passed),
+            cell(k.slv.zeta_e, k.slv.passed),
+            cell(k.slc.zeta_e, k.slc.passed),
+            cell(th.ratio, th.passed) if th is not None else "—",
+            cell(ida.zeta_e, ida.passed) if ida is not None else "—",
+        ])  # fmt: skip
+    return TableData(header, rows)
+
+
+def bars_table(results: Results, lang: Lang) -> TableData | None:
+    n = lang.num
+    built = [(c, c.as_built) for c in results.ranked_options if c.as_built is not None]
+    if not built:
+        return None
+    header = [lang.t("annex.col.option"), "Ø [mm]", lang.t("annex.col.per_line"),
+              lang.t("annex.col.lines"), lang.t("annex.col.spacing"), lang.t("annex.col.total"),
+              Markup("ρ<sub>inst</sub> [‰]"), lang.t("annex.col.length")]  # fmt: skip
+    rows = [
+        [case_label(c, lang), lang.gnum(b.diameter), str(b.bars_per_line), str(b.lines),
+         n(b.spacing, 3), str(b.total_bars), n(b.ratio_installed, 3), n(b.bar_length, 2)]
+        for c, b in built
+        if b is not None
+    ]  # fmt: skip
+    return TableData(header, rows)
+
+
+def annex(results: Results, lang: Lang) -> list[Block]:
+    """The annex: heading and its parts (none of them numbered by the body)."""
+    out: list[Block] = [h1(lang.t("h.annex")), markup(lang.t("annex.lead.short"))]
+    if results.options:
+        out += [h2("B.1  " + lang.t("annex.h.options"))]
+        widths = [x * mm for x in (14, 62, 22, 22, 16, 18, 26)]
+        table = options_table(results, lang)
+        out.append(grid(table, widths, wrap=(1,), numeric_from=2, small=True))
+    out += [cond_break(60 * mm), h2("B.2  " + lang.t("annex.h.a_dyn"))]
+    names = len(results.records)
+    other = (174 - 48) / max(names, 1)
+    out.append(grid(a_dyn_table(results, lang), [48 * mm] + [other * mm] * names, wrap=(0,),
+                    small=True))  # fmt: skip
+    out.append(markup(lang.t("annex.nc.note"), "caption"))
+    out += [cond_break(60 * mm), h2("B.3  " + lang.t("annex.h.scatter"))]
+    out.append(grid(scatter_table(results, lang), [x * mm for x in (62, 34, 24, 40)], wrap=(0,),
+                    small=True))  # fmt: skip
+    out.append(markup(lang.t("annex.scatter.note"), "caption"))
+    checks = checks_table(results, lang)
+    if checks is not None:
+        out += [cond_break(60 * mm), h2("B.4  " + lang.t("annex.h.checks"))]
+        out.append(grid(checks, [x * mm for x in (52, 24, 24, 24, 26, 24)], wrap=(0,),
+                        small=True))  # fmt: skip
+        out.append(markup(lang.t("annex.checks.note"), "caption"))
+    bars = bars_table(results, lang)
+    if bars is not None:
+        out += [cond_break(60 * mm), h2("B.5  " + lang.t("annex.h.bars"))]
+        out.append(grid(bars, [x * mm for x in (52, 14, 18, 14, 20, 16, 20, 20)], wrap=(0,),
+                        small=True))  # fmt: skip
+    return out

@@ -1,0 +1,119 @@
+"""The report's language: one keyed catalogue of strings per language (package data,
+``report/catalogue/<code>.json``) and the one number format (decimal comma in Italian).
+
+Catalogue strings are trusted markup (``<b>``, ``<sub>``...) with ``{name}`` placeholders;
+what fills a placeholder is already escaped or a number formatted by :meth:`Lang.num`.
+Chart labels are looked up by their English text (``chart:`` keys) and numbers in them are
+re-formatted (:func:`localize_drawing`).
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from functools import cache
+from importlib import resources
+
+from reportlab.graphics.shapes import Drawing, Group, String
+
+#: languages with a catalogue
+LANGUAGES = ("en", "it")
+_NUMBER = re.compile(r"(?<![\w.,])(-?\d+(?:,\d{3})*(?:\.\d+)?)(?![\w]|\.\d)")
+
+
+@cache
+def catalogue(code: str) -> dict[str, str]:
+    """The strings of language ``code`` (key → template)."""
+    if code not in LANGUAGES:
+        raise ValueError(f"no report language {code!r} (expected one of {', '.join(LANGUAGES)})")
+    text = resources.files("frp_assess.report").joinpath("catalogue", f"{code}.json")
+    data = json.loads(text.read_text(encoding="utf-8"))
+    return {k: v for k, v in data.items() if not k.startswith("//")}
+
+
+def short(text: str, limit: int = 16) -> str:
+    """User text for a column header: at most ``limit`` characters, an ellipsis when cut."""
+    text = " ".join(str(text).split())
+    return text if len(text) <= limit else text[: limit - 1] + "…"
+
+
+def swap_separators(text: str) -> str:
+    """``1,234.5`` → ``1.234,5``: English number separators as in Italian."""
+    return text.replace(",", "\x00").replace(".", ",").replace("\x00", ".")
+
+
+class Lang:
+    """The strings and number format of one language."""
+
+    def __init__(self, code: str = "en") -> None:
+        self.code = code if code in LANGUAGES else "en"
+        self.strings = catalogue(self.code)
+
+    def t(self, key: str, **values: object) -> str:
+        """The string ``key`` with ``values`` filled in (they must be escaped already)."""
+        return self.strings[key].format(**values)
+
+    def has(self, key: str) -> bool:
+        return key in self.strings
+
+    def num(self, x: float | None, decimals: int = 2, *, grouping: bool = False) -> str:
+        """``x`` with ``decimals`` decimals (a dash for None), the language's separators."""
+        if x is None:
+            return "—"
+        text = f"{x:,.{decimals}f}" if grouping else f"{x:.{decimals}f}"
+        return swap_separators(text) if self.code == "it" else text
+
+    def gnum(self, x: float) -> str:
+        """``x`` in the shortest form (``:g``), the language's decimal separator."""
+        text = f"{x:g}"
+        return swap_separators(text) if self.code == "it" else text
+
+    def numbers_in(self, text: str) -> str:
+        """Every plain number in ``text`` (``0.25``, ``1,234``) with the language's
+        separators; dotted versions (``1.2.3``) and words with digits are left alone."""
+        if self.code == "en":
+            return text
+        return _NUMBER.sub(lambda m: swap_separators(m.group(1)), text)
+
+    def chart_label(self, text: str) -> str:
+        """A chart label in the language: its catalogue entry (``chart:<English>``) or a
+        known pattern, numbers re-formatted."""
+        key = "chart:" + text
+        if key in self.strings:
+            return self.strings[key]
+        for pattern, name in _CHART_PATTERNS:
+            m = pattern.fullmatch(text)
+            if m is not None and ("chart:" + name) in self.strings:
+                return self.numbers_in(self.strings["chart:" + name].format(*m.groups()))
+        return self.numbers_in(text)
+
+
+#: chart labels with a number in them: (English pattern, catalogue key after ``chart:``)
+_CHART_PATTERNS = (
+    (re.compile(r"mean of (\d+) records"), "mean of {} records"),
+    (re.compile(r"target = (.+)"), "target = {}"),
+    (re.compile(r"ρ = (.+) ‰ along each line"), "ρ = {} ‰ along each line"),
+    (re.compile(r"ρ from (.+) to (.+) ‰"), "ρ from {} to {} ‰"),
+    (re.compile(r"rupture ε_max = (.+) ‰"), "rupture ε_max = {} ‰"),
+    (re.compile(r"C = (.+) \(collapse\)"), "C = {} (collapse)"),
+    (re.compile(r"C = (.+) \(survives\)"), "C = {} (survives)"),
+    (re.compile(r"(\S+) centred"), "{} centred"),
+    (re.compile(r"(\S+) external"), "{} external"),
+)
+
+
+def localize_drawing(d: Drawing, lang: Lang) -> Drawing:
+    """``d`` with every string in ``lang`` (in place; returned for chaining)."""
+    if lang.code == "en":
+        return d
+
+    def walk(node: object) -> None:
+        if isinstance(node, String):
+            node.text = lang.chart_label(str(node.text))
+        elif isinstance(node, Group):
+            for child in node.contents:
+                walk(child)
+
+    for s in d.contents:
+        walk(s)
+    return d

@@ -1,0 +1,231 @@
+"""The detailed sections on the results: the unreinforced wall, the retrofit options and the
+governing time history (the calculation details of the English report)."""
+
+from __future__ import annotations
+
+from reportlab.lib.units import mm
+
+from frp_assess.report import charts, floor_section
+from frp_assess.report import tables as tb
+from frp_assess.report.doc_model import Block, with_subscripts
+from frp_assess.report.flow import (
+    cond_break,
+    esc,
+    figure,
+    gap,
+    grid,
+    h1,
+    h2,
+    keep,
+    key_value,
+    markup,
+    page_break,
+    para,
+)
+from frp_assess.results.model import AssessmentResult
+
+Results = AssessmentResult
+
+
+# --- 4 Unreinforced wall ------------------------------------------------------------------
+
+
+def unreinforced(results: Results) -> list[Block]:
+    urm = results.urm
+    out: list[Block] = [
+        page_break(),
+        h1("4  The unreinforced wall"),
+        h2("4.1  Rocking properties"),
+    ]
+    out.append(key_value(tb.wall_property_rows(results), sub_values=True))
+    out.append(h2("4.2  Incremental dynamic analysis, record by record"))
+    out.append(grid(tb.case_records_table(urm), [30 * mm, 28 * mm, 40 * mm, 28 * mm, 24 * mm]))
+    out.append(
+        para(
+            "C: the smallest multiplier of the record that overturns the wall (first collapse); "
+            "a_dyn = C·PGA; q = a_dyn / a_RM. 'no collapse ≤ C_max': the wall did not overturn "
+            "up to the largest multiplier tried.",
+            "caption",
+        )
+    )
+    out.append(key_value(tb.case_summary_rows(results, urm), sub_values=True))
+    out.append(h2("4.3  Dynamic assessment next to the code kinematic check"))
+    out.append(
+        grid(tb.comparison_table(results), [62 * mm, 24 * mm, 24 * mm, 28 * mm, 30 * mm], wrap=(0,))
+    )
+    out.append(gap(6))
+    out.append(key_value(tb.code_check_rows(results), sub_values=True))
+    note = results.code_check.note
+    if note:
+        out.append(para(note, "caption"))
+    out += floor_section.checks_part(results)
+    return out
+
+
+# --- 5 Retrofit options -------------------------------------------------------------------
+
+
+def options(results: Results) -> list[Block]:
+    out: list[Block] = [page_break(), h1("5  Retrofit options"), h2("5.1  Ranking")]
+    out.append(para("Ranking rule: " + results.ranking_rule, "small"))
+    data = tb.ranking_table(results)
+    rec_name = results.recommended
+    hl = [i for i, r in enumerate(data.rows) if r[1] == rec_name]
+    widths = [12, 25, 11, 14, 8, 11, 11, 11, 14, 12, 16, 16, 11]  # rank: 'dropped'
+    out.append(
+        grid(
+            data,
+            [x * mm for x in widths],
+            wrap=(1, 2, 3),
+            small=True,
+            numeric_from=4,
+            highlight_rows=hl,
+        )
+    )
+    out.append(
+        markup(
+            "ρ: ratio of the active bars to the wall cross-section (external bars: the same on "
+            "each face, so twice the quantity is installed). FRP masses per metre of wall and "
+            "for the whole wall; costs indicative. q = a<sub>dyn</sub>/a<sub>RM</sub>; "
+            "improvement = a<sub>dyn</sub> / a<sub>dyn</sub> of the unreinforced wall; "
+            "capacity/demand = a<sub>dyn</sub> / (FC·a<sub>g</sub>·S). '≥': lower bound, "
+            "some record did not overturn up to C_max. Highlighted: the "
+            + (
+                "recommended option."
+                if results.input_code_compliant
+                else "best ranked option (input not code-compliant: nothing is recommended)."
+            ),
+            "caption",
+        )
+    )
+    for c in results.options:  # dropped by the pivot check: no rank, the reason here
+        if c.pivot is not None and c.pivot.dropped:
+            out.append(para(c.pivot.reason, "small"))
+    out.append(cond_break(90 * mm))
+    out.append(h2("5.2  Effect of the FRP quantity"))
+    out.append(
+        keep(
+            [
+                figure(charts.options_chart(results, "improvement")),
+                para(
+                    "Figure 2. Level of seismic improvement against the FRP installed on the wall, "
+                    "one line per material and position.",
+                    "caption",
+                ),
+            ]
+        )
+    )
+    out.append(
+        keep(
+            [
+                figure(charts.options_chart(results, "capacity_demand")),
+                para(
+                    "Figure 3. Capacity/demand against the FRP installed on the wall; options "
+                    "above the target line meet it.",
+                    "caption",
+                ),
+            ]
+        )
+    )
+    out.append(cond_break(50 * mm))
+    out.append(h2("5.3  Design mode: the smallest ratio that meets the target"))
+    if results.design:
+        out.append(
+            grid(
+                tb.design_table(results),
+                [16 * mm, 18 * mm, 20 * mm, 20 * mm, 18 * mm, 18 * mm, 64 * mm],
+                wrap=(6,),
+                numeric_from=2,
+            )
+        )
+    else:
+        out.append(para("Design mode was not run for this project."))
+    out.append(cond_break(80 * mm))
+    out.append(h2("5.4  a_dyn [g] of every option and record"))
+    mat = tb.a_dyn_matrix(results)
+    n = len(mat.header) - 1
+    other = (174 - 34) / max(n, 1)
+    out.append(grid(mat, [34 * mm] + [other * mm] * n, wrap=(0,), small=True))
+    out.append(para("n.c.: no collapse up to C_max for that record.", "caption"))
+    out.append(cond_break(60 * mm))
+    out.append(h2("5.5  How far the numbers can be trusted: scatter and fragility"))
+    out.append(
+        grid(
+            tb.scatter_table(results),
+            [x * mm for x in (34, 18, 16, 13, 33, 20, 12, 28)],
+            wrap=(0, 4),
+            small=True,
+            numeric_from=1,
+        )
+    )
+    out.append(
+        para(
+            "Statistics of a_dyn over the records (a record without collapse up to C_max "
+            "enters at its lower bound C_max·PGA). Fragility: a lognormal curve fitted by "
+            "maximum likelihood to the collapse accelerations (records without collapse "
+            "right-censored); P(collapse) is its value at the demand a_g·S. With few records "
+            "the fit is coarse: read it as the scatter of the result, not as a site "
+            "probability.",
+            "caption",
+        )
+    )
+    sens = tb.sensitivity_table(results)
+    if sens is not None and results.sensitivity is not None:
+        out.append(cond_break(60 * mm))
+        out.append(h2("5.6  What the result depends on: the model conventions"))
+        out.append(grid(sens, [x * mm for x in (70, 34, 26, 34)], wrap=(0,), numeric_from=1))
+        out.append(
+            para(
+                f"{results.sensitivity.case} under the conventions the paper leaves open, "
+                "one at a time (docs/model.md §3), and a ±10 % change of the bars' elastic "
+                "modulus; the same records, the design value of a_dyn.",
+                "caption",
+            )
+        )
+    return out
+
+
+# --- 6 Governing time history -------------------------------------------------------------
+
+
+def governing(results: Results) -> list[Block]:
+    out: list[Block] = [page_break(), h1("7  The governing time history")]
+    gov = results.governing
+    if not gov or not gov.runs:
+        out.append(para("No time history is stored in the results."))
+        return out
+    rs = gov.rupture_strain
+    out.append(
+        markup(
+            f"Case <b>{esc(gov.case)}</b>, record <b>{esc(gov.record)}</b> (the record "
+            "that overturns it at the smallest multiplier). The response at the collapse "
+            "multiplier and just below it shows how the wall fails"
+            + (
+                f"; the bar ruptures when its strain reaches ε<sub>max</sub> = "
+                f"{with_subscripts(esc(tb.rupture_strain_words(results)))} = {1e3 * rs:.2f} ‰."
+                if rs is not None
+                else "."
+            )
+        )
+    )
+    out.append(
+        grid(
+            tb.governing_runs_table(results),
+            [24 * mm, 22 * mm, 24 * mm, 36 * mm, 22 * mm, 46 * mm],
+            wrap=(0, 3, 5),
+        )
+    )
+    out.append(gap(8))
+    chart = charts.history_chart(results)
+    if chart is not None:
+        out.append(figure(chart))
+        out.append(
+            para(
+                "Figure 4. Rotation θ/α (θ = α: the wall has rotated as far as its slenderness; "
+                "collapse follows the criterion of section 2.4) and strain of the acting bar, at "
+                "the collapse multiplier (red) and just below it (blue); after the record the "
+                "wall moves freely until its fate is decided.",
+                "caption",
+            )
+        )
+    return out

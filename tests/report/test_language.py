@@ -1,0 +1,100 @@
+"""The project file's ``report:`` block (language, Word template) reaches results.json, and
+``frp-assess report DIR`` rebuilds the report in that language, as PDF or DOCX."""
+
+from __future__ import annotations
+
+import json
+import shutil
+from pathlib import Path
+
+import docx
+import pytest
+
+from frp_assess.assess.from_project import inputs_from_project
+from frp_assess.cli import main
+from frp_assess.config import load_project_text, validate_data
+from frp_assess.errors import InputError
+from frp_assess.results.json_io import from_json, to_json
+from frp_assess.results.model import ReportSettings
+from tests.report.test_report import DATA
+
+MINIMAL = """\
+wall: {thickness: 0.3, height: 2.5, masonry: rubble-stone, mechanism: two-sided}
+seismic:
+  spectrum: {type: preset, name: A2}
+"""
+
+
+def test_the_report_block_defaults_to_english_and_maps_onto_the_inputs(tmp_path: Path) -> None:
+    project = load_project_text(MINIMAL, "mini.yaml").project
+    assert (project.report.language, project.report.template) == ("en", None)
+    assert inputs_from_project(project, Path(".")).report == ReportSettings("en", None)
+    text = MINIMAL + "report: {language: it, template: firm.docx}\n"
+    given = load_project_text(text, "mini.yaml").project
+    with pytest.raises(InputError, match="no such file") as err:
+        inputs_from_project(given, tmp_path)
+    assert err.value.key == "report.template"
+    docx.Document().save(str(tmp_path / "firm.docx"))
+    inputs = inputs_from_project(given, tmp_path)
+    assert inputs.report == ReportSettings("it", str(tmp_path / "firm.docx"))
+
+
+@pytest.mark.parametrize(
+    ("block", "said"),
+    [("{language: fr}", "report.language"), ("{langauge: it}", "report.langauge")],
+)
+def test_a_wrong_report_block_is_one_line_naming_the_key(block: str, said: str) -> None:
+    with pytest.raises(InputError) as err:
+        load_project_text(MINIMAL + f"report: {block}\n", "mini.yaml")
+    assert said in str(err.value) and "\n" not in str(err.value)
+
+
+def test_the_json_schema_documents_the_report_block() -> None:
+    from frp_assess.config import Project
+
+    schema = Project.model_json_schema()
+    assert "report" in schema["properties"]
+    spec = schema["$defs"]["ReportSpec"]
+    assert spec["properties"]["language"]["enum"] == ["en", "it"]
+    assert (
+        validate_data(
+            {
+                "wall": {
+                    "thickness": 0.3,
+                    "height": 2.5,
+                    "unit_weight": 18,
+                    "mechanism": "one-sided",
+                },
+                "seismic": {"spectrum": {"type": "preset", "name": "A2"}},
+                "report": {"language": "it"},
+            }
+        ).report.language
+        == "it"
+    )
+
+
+def _results_dir(tmp_path: Path, language: str) -> Path:
+    d = tmp_path / "results"
+    d.mkdir()
+    data = json.loads(DATA.read_text(encoding="utf-8"))
+    data["report"] = {"language": language, "template": None}
+    text = json.dumps(data, ensure_ascii=False, indent=1) + "\n"
+    assert from_json(text).report == ReportSettings(language, None)
+    (d / "results.json").write_text(to_json(from_json(text)), encoding="utf-8")
+    return d
+
+
+def test_report_command_rebuilds_in_the_language_of_the_results(tmp_path: Path) -> None:
+    d = _results_dir(tmp_path, "it")
+    assert main(["report", str(d), "--docx"]) == 0
+    body = [p.text for p in docx.Document(str(d / "report.docx")).paragraphs]
+    assert any(t.startswith("1  Premessa e oggetto") for t in body)
+    assert any(t.startswith("11  Analisi e verifiche svolte con l'ausilio") for t in body)
+    assert main(["report", str(d), "--out", str(tmp_path / "again.docx")]) == 0
+    assert (tmp_path / "again.docx").read_bytes() == (d / "report.docx").read_bytes()
+    assert main(["report", str(d)]) == 0
+    pdf = (d / "report.pdf").read_bytes()
+    assert pdf.startswith(b"%PDF")
+    shutil.copy(d / "report.pdf", tmp_path / "first.pdf")
+    assert main(["report", str(d)]) == 0
+    assert (d / "report.pdf").read_bytes() == (tmp_path / "first.pdf").read_bytes()
