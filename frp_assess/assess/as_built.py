@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 from frp_assess.assess.bars import (
     BAR_CATALOGUE,
@@ -39,8 +39,18 @@ from frp_assess.dynamics import Position
 from frp_assess.errors import InputError
 from frp_assess.results.as_built import AsBuilt, BarAnchorage, BarStrain
 
-if TYPE_CHECKING:
-    from frp_assess.assess.runner import DesignResult
+
+class DesignAnswer(Protocol):
+    """What :func:`design_as_built` reads of a design-mode answer (the runner's
+    ``DesignResult``; a protocol, so that this module does not import the runner)."""
+
+    @property
+    def material(self) -> Material: ...
+    @property
+    def layout(self) -> BarLayout | None: ...
+    @property
+    def ratio_model(self) -> float | None: ...
+
 
 #: f_t = this factor × τ0d for the pull-out cone (Turnšek–Čačovič, assess/bars.py)
 TENSILE_OVER_SHEAR = 1.5
@@ -181,7 +191,7 @@ def bar_strain(inputs: AssessmentInputs, material: Material) -> BarStrain:
             eta_a=None,
             partial_factor=None,
             cyclic_factor=c,
-            rupture_strain=c * material.ultimate_strain,
+            rupture_strain=inputs.rupture_strain(material),
             rule="c*eps_u: mean producer value, no design factors (bars.design_values: false)",
         )
     return BarStrain(
@@ -194,7 +204,7 @@ def bar_strain(inputs: AssessmentInputs, material: Material) -> BarStrain:
         eta_a=d.eta_a,
         partial_factor=d.partial_factor,
         cyclic_factor=d.cyclic_factor,
-        rupture_strain=d.design,
+        rupture_strain=inputs.rupture_strain(material),
         rule=(
             "c*eta_a*eps_fk/gamma_f (CNR-DT 200 R1/2013 §3.5: eta_a Table 3.2, "
             f"gamma_f = {FRP_RUPTURE_PARTIAL_FACTOR:g} Table 3.1; c = analysis.strain_factor)"
@@ -328,7 +338,7 @@ def option_as_built(inputs: AssessmentInputs, option: Option) -> AsBuilt | None:
     return as_built(inputs, option.material, option.layout, option.ratio, rule)
 
 
-def design_as_built(inputs: AssessmentInputs, result: DesignResult) -> AsBuilt | None:
+def design_as_built(inputs: AssessmentInputs, result: DesignAnswer) -> AsBuilt | None:
     """The as-built record of a design-mode answer (None when no ratio met the target)."""
     if result.layout is None or result.ratio_model is None:
         return None

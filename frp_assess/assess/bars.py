@@ -61,6 +61,10 @@ from scipy.integrate import quad
 
 from frp_assess.dynamics import Position
 from frp_assess.errors import InputError
+from frp_assess.rules import bars as rule
+from frp_assess.rules.bars import DEFAULT_STRAIN_FACTOR
+from frp_assess.rules.bars import FRP_RUPTURE_PARTIAL_FACTOR as FRP_RUPTURE_PARTIAL_FACTOR
+from frp_assess.rules.bars import characteristic_strain as characteristic_strain  # re-export
 
 Exposure = Literal["internal", "external", "aggressive"]
 EXPOSURES: tuple[str, ...] = ("internal", "external", "aggressive")
@@ -69,11 +73,8 @@ EXPOSURES: tuple[str, ...] = ("internal", "external", "aggressive")
 DEFAULT_MIN_SPACING = 0.10
 DEFAULT_MAX_SPACING = 1.0
 
-#: γ_f for the rupture of FRP at the ultimate limit state (CNR-DT 200 R1/2013 Table 3.1).
-FRP_RUPTURE_PARTIAL_FACTOR = 1.10
-
-#: Cyclic reduction of the rupture strain, c (``docs/model.md`` §2).
-CYCLIC_FACTOR = 0.5
+#: Cyclic reduction of the rupture strain, c (``docs/model.md`` §2; the rules' default).
+CYCLIC_FACTOR = DEFAULT_STRAIN_FACTOR
 
 #: η_a by fibre and exposure (CNR-DT 200 R1/2013 Table 3.2).
 ENVIRONMENTAL_FACTORS: dict[str, dict[str, float]] = {
@@ -188,14 +189,6 @@ class BarLayout:
     note: str
 
 
-def _lines(position: Position) -> int:
-    if position == "centred":
-        return 1
-    if position == "external":
-        return 2
-    raise ValueError(f"position must be 'centred' or 'external', got {position!r}")
-
-
 def bar_layout(
     ratio: float,
     thickness: float,
@@ -228,7 +221,7 @@ def bar_layout(
         raise ValueError("thickness, length and diameter must be > 0")
     if not 0 < min_spacing <= max_spacing:
         raise ValueError(f"need 0 < min_spacing <= max_spacing, got {min_spacing}, {max_spacing}")
-    lines = _lines(position)
+    lines = rule.faces(position)
     a_b = nominal_area(diameter) if bar_area is None else bar_area
     if not a_b > 0:
         raise ValueError(f"bar_area must be > 0 mm², got {a_b}")
@@ -344,17 +337,6 @@ def environmental_factor(material: str, exposure: str, *, fibre: str | None = No
 DEFAULT_STRAIN_COV = 0.10
 
 
-def characteristic_strain(mean: float, cov: float, k: float = 1.645) -> float:
-    """5 % fractile of a normal distribution, ε_fk = ε_mean·(1 − k·CoV) [-].
-
-    For producers who give the mean and the coefficient of variation instead of the
-    characteristic value (k = 1.645 for a large number of tests).
-    """
-    if not (mean > 0 and 0 <= cov < 1 / k):
-        raise ValueError(f"need mean > 0 and 0 <= cov < 1/k, got {mean}, {cov}")
-    return mean * (1.0 - k * cov)
-
-
 @dataclass(frozen=True)
 class DesignStrain:
     """ε_d = c·η_a·ε_fk/γ_f and its factors.
@@ -371,6 +353,11 @@ class DesignStrain:
     cyclic_factor: float
     exposure: str
     design: float
+
+    @property
+    def fd(self) -> float:
+        """ε_fd = η_a·ε_fk/γ_f [-], the design strain before the cyclic reduction c."""
+        return rule.fd_strain(self.characteristic, self.eta_a, self.partial_factor)
 
 
 def design_rupture_strain(
@@ -395,7 +382,7 @@ def design_rupture_strain(
         partial_factor=partial_factor,
         cyclic_factor=cyclic_factor,
         exposure=exposure,
-        design=cyclic_factor * eta * characteristic / partial_factor,
+        design=rule.design_rupture_strain(characteristic, eta, cyclic_factor, partial_factor),
     )
 
 
@@ -405,7 +392,7 @@ def design_rupture_strain(
 
 def bar_rupture_force(bar_area: float, elastic_modulus: float, strain: float) -> float:
     """Force in one bar, F = A_b·E·ε [kN] (A_b [mm²], E [GPa]: mm²·GPa = kN)."""
-    return bar_area * elastic_modulus * strain
+    return rule.bar_force(elastic_modulus, bar_area, strain)
 
 
 def cone_area(radius: float, face_distances: tuple[float, float], spacing: float) -> float:

@@ -12,8 +12,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-#: confidence factors by knowledge level (Circolare 2019 Tab. C8.5.IV): one table, the input's
-from frp_assess.config.schema import CONFIDENCE_FACTORS
+#: confidence factors by knowledge level (Circolare 2019 Tab. C8.5.IV): the one table, rules'
+from frp_assess.rules.masonry import CONFIDENCE_FACTORS, confidence_factor
 
 __all__ = ["CONFIDENCE_FACTORS", "KinematicCheck", "simple_overturning_check"]
 
@@ -50,7 +50,7 @@ def simple_overturning_check(
         raise ValueError(f"knowledge level must be LC1, LC2 or LC3, got {knowledge_level!r}")
     alpha0 = thickness / height
     e_star = 1.0
-    fc = CONFIDENCE_FACTORS[knowledge_level]
+    fc = confidence_factor(knowledge_level)
     a0 = alpha0 / (e_star * fc)
     return KinematicCheck(
         alpha0, e_star, fc, knowledge_level, behaviour_factor, a0, ag_s / behaviour_factor

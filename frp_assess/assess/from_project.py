@@ -27,6 +27,7 @@ from frp_assess.assess.inputs import (
     Option,
     RecordFile,
 )
+from frp_assess.assess.wall_model import base_problem
 from frp_assess.config import MASONRY, FrpMaterial, LoadedProject, Project, load_project
 from frp_assess.config.messages import Loc, format_path, line_of
 from frp_assess.config.problems import problems_of, raise_all
@@ -57,9 +58,8 @@ def spectrum_of(
 ) -> ElasticSpectrum:
     """The elastic spectrum described by the ``seismic.spectrum`` block."""
     if isinstance(spec, Ntc2018Spectrum):
-        return ntc2018_spectrum(
-            spec.ag, spec.F0, spec.Tc_star, spec.soil, spec.topography, spec.damping
-        )
+        ag, f0, tc = spec.parameters()
+        return ntc2018_spectrum(ag, f0, tc, spec.soil, spec.topography, spec.damping)
     if isinstance(spec, Ec8Spectrum):
         return ec8_spectrum(spec.ag, spec.ground, spec.spectrum_type, spec.damping)
     if isinstance(spec, PresetSpectrum):
@@ -210,12 +210,15 @@ def inputs_from_project(
         masonry_description = MASONRY[wall.masonry].description
     elif wall.masonry is not None:
         masonry_description = f"{MASONRY[wall.masonry].description}; unit weight given explicitly"
+    ntc = seismic.spectrum if isinstance(seismic.spectrum, Ntc2018Spectrum) else None
     inputs = AssessmentInputs(
         thickness=wall.thickness,
         height=wall.height,
         unit_weight=project.unit_weight_kn(),
         mechanism=wall.mechanism,
         spectrum=spectrum_of(seismic.spectrum),
+        site=ntc.site_hazard() if ntc is not None else None,
+        site_limit_state=ntc.chosen_limit_state if ntc is not None else "SLV",
         records=records,
         options=options,
         length=wall.length,
@@ -250,6 +253,14 @@ def inputs_from_project(
         input_file=input_file,
         bars=bar_settings_of(project.bars),
     )
+    problem = base_problem(inputs.wall_input)
+    if problem is not None:  # the one refusal of the masonry at the base (rules/masonry.py)
+        raise InputError(
+            problem,
+            file=file or input_file or None,
+            line=None if lines is None else line_of(lines, ("wall", "thickness")),
+            key="wall.thickness",
+        )
     return laid_out(project, inputs, file=file or input_file or None, lines=lines)
 
 

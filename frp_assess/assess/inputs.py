@@ -20,6 +20,7 @@ from frp_assess.assess.bars import (
     fibre_of,
 )
 from frp_assess.assess.masonry import masonry_strength
+from frp_assess.assess.wall_model import BarsInput, WallInput, rocking_model
 from frp_assess.dynamics import (
     IdaSettings,
     Mechanism,
@@ -30,9 +31,10 @@ from frp_assess.dynamics import (
     Wall,
 )
 from frp_assess.dynamics.options import STRAIN_FACTOR, VERIFY
-from frp_assess.dynamics.units import rebars_from_practice, wall_from_practice
 from frp_assess.motions import ElasticSpectrum
+from frp_assess.motions.site import SiteHazard
 from frp_assess.results.pivot import MasonryResult
+from frp_assess.rules.bars import rupture_strain
 
 #: the name of case 0, the wall without bars
 UNREINFORCED = "Unreinforced"
@@ -202,6 +204,10 @@ class AssessmentInputs:
     project: dict[str, str] = field(default_factory=dict)
     input_file: str = ""
     bars: BarSettings = BarSettings(design_values=False, whole_bars=False)
+    #: the site's hazard when the spectrum is given by coordinates (docs/site-hazard.md), and
+    #: the limit state whose a_g, F0, T_C* make ``spectrum``
+    site: SiteHazard | None = None
+    site_limit_state: str = "SLV"
 
     @property
     def masonry_strength(self) -> MasonryResult:
@@ -212,11 +218,14 @@ class AssessmentInputs:
         )
 
     @property
+    def wall_input(self) -> WallInput:
+        """The wall of the model, with f_d for the crushing pivot (assess/wall_model.py)."""
+        return WallInput(self.thickness, self.height, self.unit_weight, self.masonry_strength.f_d)
+
+    @property
     def wall(self) -> Wall:
         """The dynamics wall (SI), with f_d for the crushing pivot."""
-        return wall_from_practice(
-            self.thickness, self.height, self.unit_weight, self.masonry_strength.f_d
-        )
+        return self.wall_input.wall()
 
     def design_strain(self, material: Material) -> DesignStrain | None:
         """ε_d = c·η_a·ε_fk/γ_f of ``material`` with c = ``strain_factor`` (docs/model.md
@@ -231,29 +240,43 @@ class AssessmentInputs:
             fibre=fibre_of(material.name, material.fibre),
         )
 
-    def rupture_strain(self, material: Material) -> float:
-        """The rupture strain the model uses [-]: ε_d with design values, else c·ε_u."""
+    def strain_at_rupture(self, material: Material) -> float:
+        """The bar's strain at rupture that the cyclic factor c multiplies [-]: ε_fd =
+        η_a·ε_fk/γ_f with design values, else the mean ε_u (docs/model.md §2.1)."""
         d = self.design_strain(material)
-        return self.strain_factor * material.ultimate_strain if d is None else d.design
+        return material.ultimate_strain if d is None else d.fd
+
+    def rupture_strain(self, material: Material) -> float:
+        """The rupture strain the model uses [-]: ε_max = c·ε_fd with design values, else
+        c·ε_u (:func:`~frp_assess.rules.bars.rupture_strain`)."""
+        return rupture_strain(self.strain_at_rupture(material), self.strain_factor)
+
+    def bars_input(self, material: Material, position: Position, ratio: float) -> BarsInput:
+        """The bars of the model.  The cyclic factor c stays the model's ``strain_factor``;
+        the strain it multiplies is :meth:`strain_at_rupture`, so that c is applied once."""
+        return BarsInput(
+            material.elastic_modulus,
+            self.strain_at_rupture(material),
+            position,
+            ratio,
+            self.strain_factor,
+        )
 
     def rebars(self, material: Material, position: Position, ratio: float) -> Rebars:
-        """The bars of the model.  The cyclic factor c stays the model's ``strain_factor``;
-        with design values the strain it multiplies is η_a·ε_fk/γ_f instead of ε_u, so that
-        c is applied once (docs/model.md §2.1)."""
-        d = self.design_strain(material)
-        strain = (
-            material.ultimate_strain if d is None else d.eta_a * d.characteristic / d.partial_factor
-        )
-        return rebars_from_practice(
-            material.elastic_modulus, strain, position, ratio, self.strain_factor
-        )
+        """The dynamics bars (SI) of :meth:`bars_input`."""
+        return self.bars_input(material, position, ratio).rebars()
+
+    def model_of(self, material: Material, position: Position, ratio: float) -> RockingModel:
+        """The dynamics model of the wall with bars of ``material`` at ``position`` and ρ
+        ``ratio`` [‰] (assess/wall_model.py)."""
+        bars = self.bars_input(material, position, ratio)
+        return rocking_model(self.wall_input, self.mechanism, bars, self.model)
 
     def model_for(self, option: Option | None) -> RockingModel:
         """The dynamics model of the unreinforced wall (``None``) or of an option."""
-        bars = (
-            None if option is None else self.rebars(option.material, option.position, option.ratio)
-        )
-        return RockingModel(self.wall, self.mechanism, bars, self.model)
+        if option is None:
+            return rocking_model(self.wall_input, self.mechanism, None, self.model)
+        return self.model_of(option.material, option.position, option.ratio)
 
     def case_models(self) -> list[RockingModel]:
         """The models of every case of a run: the unreinforced wall, then each option."""

@@ -34,7 +34,7 @@ from typing import Protocol
 import numpy as np
 from numpy.typing import NDArray
 
-from frp_assess.assess.code_check import CONFIDENCE_FACTORS, simple_overturning_check
+from frp_assess.assess.code_check import simple_overturning_check
 from frp_assess.assess.inputs import AssessmentInputs, CodeCheckSettings
 from frp_assess.assess.kinematic_nonlinear import (
     DisplacementSpectrum,
@@ -65,13 +65,14 @@ from frp_assess.results.checks import (
     TimeHistoryResult,
 )
 from frp_assess.results.model import MEAN_OF_RECORDS_FROM
+from frp_assess.rules.masonry import confidence_factor
 
 # --- the confidence factor in the IDA verdict ---------------------------------------------
 
 
 def fc_basis(settings: CodeCheckSettings) -> str:
     """One sentence stating FC and where it comes from (for the report and results.json)."""
-    fc = CONFIDENCE_FACTORS[settings.knowledge_level]
+    fc = confidence_factor(settings.knowledge_level)
     rule = (
         "Circolare 2019 §C8.7.1.2.1.3: a rigid block whose masonry has infinite compressive "
         "strength uses the FC of LC1, 1.35"
@@ -92,7 +93,7 @@ def ida_confidence_factor(settings: CodeCheckSettings) -> float:
     """FC [-] that divides the IDA capacity: the knowledge level's (Circolare 2019
     Tab. C8.5.IV; LC1's 1.35 by default, the rule for a rigid block, §C8.7.1.2.1.3), or 1
     when ``fc_in_ida`` is turned off."""
-    return CONFIDENCE_FACTORS[settings.knowledge_level] if settings.fc_in_ida else 1.0
+    return confidence_factor(settings.knowledge_level) if settings.fc_in_ida else 1.0
 
 
 def ida_capacity_demand(design_a_dyn: float, demand: float, fc: float) -> float:
@@ -326,7 +327,7 @@ def case_checks(
             run ×FC when FC enters the dynamics; None: the time-history check is not made.
         ida: the IDA's a_dyn of this case; None: no IDA line.
     """
-    fc = CONFIDENCE_FACTORS[settings.knowledge_level]
+    fc = confidence_factor(settings.knowledge_level)
     wall = model.wall
     curve = capacity_curve(wall, model.rebars, fc=fc)
     # a_g,SLD = a0*/(a_Z per unit a_g·S) (eq. C8.7.1.8), in g: a0* is in m/s²
@@ -429,7 +430,7 @@ def kinematic_checks(
         )
     return KinematicChecks(
         knowledge_level=settings.knowledge_level,
-        fc=CONFIDENCE_FACTORS[settings.knowledge_level],
+        fc=confidence_factor(settings.knowledge_level),
         fc_basis=fc_basis(settings),
         fc_in_ida=settings.fc_in_ida,
         a_g=a_g,

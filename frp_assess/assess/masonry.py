@@ -38,11 +38,18 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
-from frp_assess.assess.code_check import CONFIDENCE_FACTORS
-from frp_assess.dynamics import Position
-from frp_assess.dynamics.pivot import STRESS_BLOCK_FACTOR as STRESS_BLOCK_FACTOR  # the model's
+from frp_assess.dynamics.units import KPA_PER_GPA, KPA_PER_MPA
 from frp_assess.errors import InputError
 from frp_assess.results.pivot import MasonryResult
+from frp_assess.rules import masonry as rule
+from frp_assess.rules.bars import bar_area, bar_force
+from frp_assess.rules.masonry import STRESS_BLOCK_FACTOR as STRESS_BLOCK_FACTOR  # re-export
+from frp_assess.rules.masonry import (
+    base_force,
+    compressed_zone_depth,
+    design_strength,
+    force_for_depth,
+)
 
 KnowledgeLevel = Literal["LC1", "LC2", "LC3"]
 
@@ -198,12 +205,13 @@ def masonry_type(key: str) -> MasonryType:
 def confidence_factor(knowledge_level: str) -> float:
     """FC [-] of a knowledge level (Circolare 2019 Tab. C8.5.IV); an unknown level is an
     input error on ``code_check.knowledge_level``, where the project sets it."""
-    if knowledge_level not in CONFIDENCE_FACTORS:
+    try:
+        return rule.confidence_factor(knowledge_level)
+    except KeyError:
         raise InputError(
             f"unknown knowledge level {knowledge_level!r}; choose LC1, LC2 or LC3",
             key="code_check.knowledge_level",
-        )
-    return CONFIDENCE_FACTORS[knowledge_level]
+        ) from None
 
 
 def masonry_design_values(
@@ -248,51 +256,22 @@ def masonry_design_values(
         tau_0=shear,
         confidence_factor=fc,
         partial_factor=partial_factor,
-        f_d=strength / (fc * partial_factor),
-        tau_0d=shear / (fc * partial_factor),
+        f_d=design_strength(strength, fc, partial_factor),
+        tau_0d=design_strength(shear, fc, partial_factor),
         from_project=given,
     )
 
 
 # ---------------------------------------------------------------------------------------------
-# Forces at the pivot
-
-
-def wall_weight(unit_weight: float, thickness: float, height: float) -> float:
-    """Weight of the wall per metre of length, W = w·B·H [kN/m] (w [kN/m³], B, H [m])."""
-    return unit_weight * thickness * height
-
-
-def bar_force(ratio: float, thickness: float, elastic_modulus: float, strain: float) -> float:
-    """Tension of the acting bars per metre of wall, T = E·ρ·B·ε [kN/m].
-
-    Args:
-        ratio: ρ of the acting bars [‰] (one face for external bars, ``docs/model.md`` §2).
-        thickness: B [m].
-        elastic_modulus: E of the bar [GPa].
-        strain: ε of the bar [-]: the design rupture strain, or the peak strain reached.
-    """
-    area = ratio * 1e-3 * thickness  # [m²/m]
-    return elastic_modulus * 1e6 * area * strain  # GPa → kPa = kN/m²
+# The compressed zone at the pivot (the rules of frp_assess.rules.masonry, in kN and kPa)
 
 
 def compressed_depth(force: float, f_d: float) -> float:
-    """Depth x [m] of the stress block 0.85·f_d that carries ``force`` [kN/m] (f_d [MPa])."""
+    """Depth x [m] of the stress block 0.85·f_d that carries ``force`` [kN/m] (f_d [MPa]):
+    :func:`~frp_assess.rules.masonry.compressed_zone_depth` with f_d in kPa."""
     if not f_d > 0:
         raise ValueError(f"f_d must be > 0 MPa, got {f_d}")
-    return force / (STRESS_BLOCK_FACTOR * f_d * 1e3)
-
-
-def bar_lever_arm(position: Position, thickness: float) -> float:
-    """Lever arm of the acting bar about the edge pivot [m]: B/2 centred, B external.
-
-    ``docs/model.md`` §2 (the paper's Eq. 8–9).
-    """
-    if position == "centred":
-        return 0.5 * thickness
-    if position == "external":
-        return thickness
-    raise ValueError(f"position must be 'centred' or 'external', got {position!r}")
+    return compressed_zone_depth(force, f_d * KPA_PER_MPA)
 
 
 @dataclass(frozen=True)
@@ -340,8 +319,9 @@ def pivot_check(
     """The compressed zone at the pivot and whether the rigid-block premise holds.
 
     Args:
-        weight: W [kN/m] (:func:`wall_weight`).
-        bar_force: T [kN/m] (:func:`bar_force`), at rupture or at the peak strain reached.
+        weight: W [kN/m] (:func:`~frp_assess.rules.masonry.wall_weight` of w [kN/m³]).
+        bar_force: T [kN/m] (:func:`~frp_assess.rules.bars.bar_force`), at rupture or at the
+            peak strain reached.
         thickness: B [m].
         f_d: design compressive strength [MPa] (:func:`masonry_design_values`).
         limit: largest accepted x/B [-].
@@ -350,7 +330,7 @@ def pivot_check(
         raise ValueError(f"thickness must be > 0 m, got {thickness}")
     if not 0 < limit <= 1:
         raise ValueError(f"limit must be in (0, 1], got {limit}")
-    force = weight + bar_force
+    force = base_force(weight, bar_force)
     x = compressed_depth(force, f_d)
     ratio = x / thickness
     return PivotCheck(
@@ -365,96 +345,29 @@ def pivot_check(
     )
 
 
-@dataclass(frozen=True)
-class RestoringMoment:
-    """Static restoring moment about the pivot, at rest (θ = 0), per metre of wall.
-
-    Attributes:
-        depth: x [m] (0 for the edge pivot).
-        gravity_arm: B/2 − x/2 [m].
-        bar_arm: b_r − x/2 [m] (b_r = B/2 centred, B external).
-        gravity_moment: W·(B/2 − x/2) [kN·m/m].
-        bar_moment: T·(b_r − x/2) [kN·m/m].
-        moment: their sum [kN·m/m].
-        edge_moment: W·B/2 + T·b_r, the edge-pivot value [kN·m/m].
-    """
-
-    depth: float
-    gravity_arm: float
-    bar_arm: float
-    gravity_moment: float
-    bar_moment: float
-    moment: float
-    edge_moment: float
-
-    @property
-    def reduction(self) -> float:
-        """1 − moment / edge_moment [-]: what the edge pivot overstates."""
-        return 1.0 - self.moment / self.edge_moment if self.edge_moment else 0.0
-
-
-def crushing_restoring_moment(
-    weight: float,
-    bar_force: float,
-    thickness: float,
-    position: Position,
-    f_d: float | None,
-) -> RestoringMoment:
-    """Restoring moment with the pivot moved inward by x/2 (option ``pivot: crushing``).
-
-    The compressed zone carries N = W + T on the stress block 0.85·f_d, so x = N/(0.85·f_d);
-    the resultant acts at x/2 from the edge and the lever arms of gravity (B/2) and of the
-    acting bar (b_r) both shrink by x/2.  ``f_d=None`` gives the edge pivot (x = 0).  A depth
-    x ≥ B (the section cannot carry N) is a ``ValueError``: there is no pivot to rock on.
-
-    Args:
-        weight: W [kN/m].  bar_force: T [kN/m].  thickness: B [m].
-        position: ``centred`` or ``external``.  f_d: design compressive strength [MPa].
-    """
-    arm = bar_lever_arm(position, thickness)
-    x = 0.0 if f_d is None else compressed_depth(weight + bar_force, f_d)
-    if x >= thickness:
-        raise ValueError(
-            f"the compressed zone x = {x:.3f} m is not smaller than B = {thickness} m: "
-            "the section cannot carry N = W + T"
-        )
-    g_arm = 0.5 * (thickness - x)
-    b_arm = arm - 0.5 * x
-    g_moment = weight * g_arm
-    b_moment = bar_force * b_arm
-    return RestoringMoment(
-        depth=x,
-        gravity_arm=g_arm,
-        bar_arm=b_arm,
-        gravity_moment=g_moment,
-        bar_moment=b_moment,
-        moment=g_moment + b_moment,
-        edge_moment=weight * 0.5 * thickness + bar_force * arm,
-    )
-
-
 def max_ratio_for_pivot(
     weight: float,
     thickness: float,
     elastic_modulus: float,
     strain: float,
     f_d: float,
-    limit: float = DEFAULT_PIVOT_LIMIT,
+    depth: float,
 ) -> float:
-    """Largest bar ratio ρ [‰] whose pivot check holds: x(W + T) = limit·B.
+    """Largest bar ratio ρ [‰] whose compressed zone x(W + T) stays within ``depth`` [m].
 
-    From x = (W + T)/(0.85·f_d·1 m) ≤ k·B and T = E·ρ·B·ε (:func:`bar_force`):
-    ρ_max = (k·B·0.85·f_d − W) / (E·B·ε), 0 when the wall alone already exceeds the limit.
+    The inverse of x = (W + T)/(0.85·f_d·1 m) (:func:`~frp_assess.rules.masonry.force_for_depth`)
+    with T = E·ρ·B·ε (:func:`~frp_assess.rules.bars.bar_force`):
+    ρ_max = (0.85·f_d·x_b − W) / (E·B·ε), 0 when the wall alone already reaches x_b.
 
     Args:
         weight: W [kN/m].  thickness: B [m].  elastic_modulus: E [GPa].
         strain: ε of the bar at the state checked (rupture or peak) [-].
-        f_d: [MPa].  limit: k, the largest accepted x/B [-].
+        f_d: [MPa].  depth: the bound x_b [m].
     """
     if not (thickness > 0 and elastic_modulus > 0 and strain > 0 and f_d > 0):
         raise ValueError("thickness, elastic_modulus, strain and f_d must be > 0")
-    capacity = limit * thickness * STRESS_BLOCK_FACTOR * f_d * 1e3  # [kN/m]
-    per_permille = elastic_modulus * 1e6 * 1e-3 * thickness * strain  # T of ρ = 1 ‰ [kN/m]
+    capacity = force_for_depth(depth, f_d * KPA_PER_MPA)  # [kN/m]
+    per_permille = bar_force(elastic_modulus * KPA_PER_GPA, bar_area(1.0, thickness), strain)
     return max(capacity - weight, 0.0) / per_permille
 
 
@@ -499,7 +412,7 @@ def masonry_strength(
         knowledge_level=knowledge_level,
         f_m=f_m,
         confidence_factor=fc,
-        f_d=f_m / fc,
+        f_d=design_strength(f_m, fc),
         stress_block_factor=STRESS_BLOCK_FACTOR,
         source=source,
     )

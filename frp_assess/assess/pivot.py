@@ -26,14 +26,14 @@ from frp_assess.assess.masonry import (
     DEFAULT_PIVOT_LIMIT,
     STRESS_BLOCK_FACTOR,
     PivotCheck,
-    bar_force,
-    bar_lever_arm,
     max_ratio_for_pivot,
     pivot_check,
-    wall_weight,
 )
 from frp_assess.dynamics import PivotRule, Position
+from frp_assess.dynamics.units import KPA_PER_GPA
 from frp_assess.results.pivot import PivotResult
+from frp_assess.rules.bars import bar_area, bar_force, lever_arm
+from frp_assess.rules.masonry import toe_crushes, wall_weight
 
 
 def pivot_fails(
@@ -63,18 +63,19 @@ def pivot_fails(
         return None
     if rule != "crushing":
         raise ValueError(f"pivot must be 'edge' or 'crushing', got {rule!r}")
-    if depth >= thickness:
+    if not toe_crushes(depth, thickness, bar_distance):
+        return None
+    if toe_crushes(depth, thickness):
         return (
             f"x = {depth * mm:.0f} mm >= B = {thickness * mm:.0f} mm: the base cannot carry the "
             "weight and the bar force at rupture, there is no rocking mechanism"
         )
-    if bar_distance is not None and depth >= bar_distance:
-        return (
-            f"the bar, {bar_distance * mm:.0f} mm from the compressed edge, lies inside the "
-            f"compressed zone x = {depth * mm:.0f} mm: it cannot be in tension, the mechanism "
-            "does not exist"
-        )
-    return None
+    assert bar_distance is not None  # x < B: the bar's distance is the smaller bound
+    return (
+        f"the bar, {bar_distance * mm:.0f} mm from the compressed edge, lies inside the "
+        f"compressed zone x = {depth * mm:.0f} mm: it cannot be in tension, the mechanism "
+        "does not exist"
+    )
 
 
 @dataclass(frozen=True)
@@ -141,15 +142,16 @@ def case_pivot(
 ) -> CasePivot:
     """The pivot check of the unreinforced wall (``None``) or of one option."""
     b = inputs.thickness
-    weight = wall_weight(inputs.unit_weight, b, inputs.height)
+    weight = wall_weight(inputs.unit_weight, b, inputs.height)  # [kN/m]
     f_d = inputs.masonry_strength.f_d
     rule = inputs.model.pivot
     if option is None:
         force, distance = 0.0, None
     else:
         strain = inputs.rupture_strain(option.material)  # ε_max the model uses [-]
-        force = bar_force(option.ratio, b, option.material.elastic_modulus, strain)
-        distance = bar_lever_arm(option.position, b)
+        modulus = option.material.elastic_modulus * KPA_PER_GPA  # [kPa]: T in kN/m
+        force = bar_force(modulus, bar_area(option.ratio, b), strain)
+        distance = lever_arm(option.position, b)
     check = pivot_check(weight, force, b, f_d, limit)
     model = inputs.model_for(option)
     return CasePivot(
@@ -187,8 +189,8 @@ def largest_ratio(
     ρ = (0.85·f_d·x_b − W)/(E·B·ε_max), 0 when the wall alone reaches the bound.
     """
     b = inputs.thickness
-    weight = wall_weight(inputs.unit_weight, b, inputs.height)
+    weight = wall_weight(inputs.unit_weight, b, inputs.height)  # [kN/m]
     f_d = inputs.masonry_strength.f_d
     strain = inputs.rupture_strain(material)  # ε_max the model uses [-]
-    bound = limit * b if inputs.model.pivot == "edge" else bar_lever_arm(position, b)
-    return max_ratio_for_pivot(weight, b, material.elastic_modulus, strain, f_d, bound / b)
+    bound = limit * b if inputs.model.pivot == "edge" else lever_arm(position, b)
+    return max_ratio_for_pivot(weight, b, material.elastic_modulus, strain, f_d, bound)

@@ -14,6 +14,7 @@ from frp_assess.assess.as_built import option_as_built
 from frp_assess.assess.inputs import AssessmentInputs, Costs, Material, Option
 from frp_assess.dynamics import Position
 from frp_assess.results.as_built import AsBuilt
+from frp_assess.rules.bars import bar_area, faces
 
 
 @dataclass(frozen=True)
@@ -21,11 +22,6 @@ class Quantity:
     mass_per_m: float  #: installed FRP per metre of wall length [kg/m] (both faces if external)
     mass: float  #: for the whole wall [kg]
     cost: float  #: material + installation for the whole wall [currency]
-
-
-def layers(position: Position) -> int:
-    """Layers of bars installed: 1 centred, 2 external (one on each face, docs/model.md §2)."""
-    return 1 if position == "centred" else 2
 
 
 def frp_quantity(
@@ -43,10 +39,11 @@ def frp_quantity(
         thickness, height, length: B, H, L [m].
         ratio: ρ [‰] of the active bars (an option's ``ratio``: the installed one).
     """
-    area_per_m = ratio * 1e-3 * thickness * layers(position)  # [m²/m]
+    lines = faces(position)  # 1 centred, 2 external (one on each face, docs/model.md §2)
+    area_per_m = bar_area(ratio, thickness) * lines  # [m²/m]
     mass_per_m = area_per_m * height * material.density
     mass = mass_per_m * length
-    cost = mass * material.price + costs.installation_per_metre * length * layers(position)
+    cost = mass * material.price + costs.installation_per_metre * length * lines
     return Quantity(mass_per_m, mass, cost)
 
 

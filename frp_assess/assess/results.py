@@ -32,6 +32,7 @@ from frp_assess.assess.quantities import built_quantity
 from frp_assess.assess.ranking import RANKING_RULE, Rankable, rank_options
 from frp_assess.assess.runner import CaseSummary, DesignResult, design_value_rule
 from frp_assess.assess.seismic import SeismicInput
+from frp_assess.assess.site_result import site_result
 from frp_assess.assess.statistics import fit_lognormal_fragility, record_statistics
 from frp_assess.assess.verification import NumericalCheck
 from frp_assess.dynamics import RockingModel
@@ -503,6 +504,7 @@ def build_results(
         floor_spectra=None if floor_spectra is None else floor_spectra_result(floor_spectra),
         masonry_strength=inputs.masonry_strength,
         kinematic_checks=kinematic_checks,
+        site=site_result(inputs.site, inputs.site_limit_state),
     )
 
 

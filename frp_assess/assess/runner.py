@@ -283,8 +283,7 @@ def design_search(
 
     def evaluate(k: int) -> CaseSummary:
         if k not in cache:
-            bars = inputs.rebars(material, position, model_ratio(k))
-            model = RockingModel(inputs.wall, inputs.mechanism, bars, inputs.model)
+            model = inputs.model_of(material, position, model_ratio(k))
             cache[k] = summarise(runner.run([model])[0], inputs.ida.max_multiplier, model.a_rm_g)
         return cache[k]
 

@@ -16,7 +16,7 @@ from collections.abc import Sequence
 from typing import NoReturn
 
 from frp_assess import __version__
-from frp_assess.config.problems import problems_of
+from frp_assess.app.project import problems_of
 from frp_assess.errors import Cancelled, InputError, NumericalError
 from frp_assess.text_safety import plain
 
@@ -29,6 +29,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "simulate",
     "ida",
     "records",
+    "site",
     "report",
     "schema",
     "study",

@@ -6,7 +6,7 @@ import argparse
 import json
 import math
 
-from frp_assess.api import run_ida
+from frp_assess.app.expert import G, IdaSettings, read_record, run_ida
 from frp_assess.cli.output import Column, make_console, print_table, user
 from frp_assess.cli.wall_args import (
     add_model_arguments,
@@ -14,11 +14,8 @@ from frp_assess.cli.wall_args import (
     add_record_arguments,
     build_model,
 )
-from frp_assess.dynamics import IdaSettings
 from frp_assess.dynamics.options import IDA_OPTIONS
 from frp_assess.errors import InputError
-from frp_assess.motions.readers import read_record
-from frp_assess.motions.record import G
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -63,7 +60,7 @@ def run(args: argparse.Namespace) -> int:
             }
         )
     # one definition with `run`: a record that does not collapse up to C_max counts at
-    # C_max·PGA, a lower bound (frp_assess.assess.runner.summarise, through api.run_ida)
+    # C_max·PGA, a lower bound (frp_assess.assess.runner.summarise, through app.expert.run_ida)
     summary = outcome.summary
     n_bound = sum(r["a_dyn"] is None for r in rows)
     out = {

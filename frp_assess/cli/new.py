@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from frp_assess.api import new_project_text
+from frp_assess.app.project import new_project_text
 from frp_assess.cli.output import plain_line
 from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_write_text

@@ -8,27 +8,28 @@ from __future__ import annotations
 
 import argparse
 import math
-import os
-import shutil
 import sys
-import tempfile
 from pathlib import Path
 
 from rich.console import Console
 from rich.table import Table
 
+from frp_assess.app.records import (
+    DEFAULT_T1,
+    ENVELOPES,
+    FORMATS,
+    SPECTRUM_HELP,
+    UNITS,
+    ComplianceReport,
+    ElasticSpectrum,
+    check_compliance,
+    generate_records,
+    parse_spectrum,
+    read_records,
+)
 from frp_assess.cli.arg_types import number_in, whole_number_in
 from frp_assess.config.schema import MAX_RECORD_DURATION, MAX_SEED, MIN_TIME_STEP
 from frp_assess.errors import InputError
-from frp_assess.io_utils import atomic_write_text
-from frp_assess.motions.compliance import DEFAULT_T1, ComplianceReport, check_compliance
-from frp_assess.motions.envelopes import ENVELOPES
-from frp_assess.motions.plausibility import plausibility_warnings
-from frp_assess.motions.readers import FORMATS, UNITS, read_record
-from frp_assess.motions.record import Record
-from frp_assess.motions.simqke import generate_artificial
-from frp_assess.motions.spectra import SPECTRUM_HELP, ElasticSpectrum, parse_spectrum
-from frp_assess.motions.writers import write_at2
 
 #: bounds of the arguments (those of the project file's schema)
 COUNT = whole_number_in(1, 100)
@@ -128,8 +129,11 @@ def run_generate(args: argparse.Namespace) -> int:
             f"{args.stationary:g} s",
             key="--stationary",
         )
-    records = generate_artificial(
+    out = Path(args.out)
+    # written as one set: no half-written set behind a full disk or an interrupt
+    made = generate_records(
         spectrum,
+        out,
         count=args.count,
         seed=args.seed,
         duration=args.duration,
@@ -138,60 +142,24 @@ def run_generate(args: argparse.Namespace) -> int:
         envelope=args.envelope,
         t1=args.t1,
     )
-    out = Path(args.out)
-    if out.exists() and not out.is_dir():
-        raise InputError("exists and is not a folder", file=str(out), key="--out")
-    report = check_compliance(records, spectrum, t1=args.t1)
-    # the set is written into a staging folder inside --out and moved in file by file (renames
-    # on one file system): a full disk or an interrupt leaves no half-written set behind
-    out.mkdir(parents=True, exist_ok=True)
-    staging = Path(tempfile.mkdtemp(prefix=".records-staging-", dir=out))
-    try:
-        for record in records:
-            write_at2(record, staging / f"{record.name}.AT2")
-        atomic_write_text(staging / "spectra.csv", spectra_csv(report, spectrum))
-        for path in sorted(staging.iterdir()):
-            os.replace(path, out / path.name)
-    finally:
-        shutil.rmtree(staging, ignore_errors=True)
     console = Console()
     console.print(
-        f"wrote {len(records)} records and spectra.csv to {out} "
-        f"(seed {args.seed}, set factor {float(records[0].meta['set_scale_factor']):.4f})"
+        f"wrote {len(made.records)} records and spectra.csv to {out} "
+        f"(seed {args.seed}, set factor {made.set_scale_factor:.4f})"
     )
-    print_report(report, spectrum, console)
-    return 0 if report.passed else 1
+    print_report(made.report, spectrum, console)
+    return 0 if made.report.passed else 1
 
 
 def run_check(args: argparse.Namespace) -> int:
     spectrum = parse_spectrum(args.spectrum)
     _positive(args.t1, "--t1")
-    records: list[Record] = [
-        read_record(f, format=args.format, units=args.units, dt=args.dt) for f in args.files
-    ]
-    for warning in plausibility_warnings(records):
+    records, warnings = read_records(args.files, format=args.format, units=args.units, dt=args.dt)
+    for warning in warnings:
         print(f"frp-assess: warning: {warning}", file=sys.stderr)
     report = check_compliance(records, spectrum, t1=args.t1, recorded=args.recorded)
     print_report(report, spectrum, Console())
     return 0 if report.passed else 1
-
-
-def spectra_csv(report: ComplianceReport, spectrum: ElasticSpectrum) -> str:
-    """CSV of the target, mean and per-record spectra [g] at the report's periods [s]."""
-    names = report.record_names
-    lines = [
-        f"# target: {spectrum.description}",
-        f"# damping {report.damping:g}; pseudo-accelerations in g; T1 = {report.t1:g} s",
-        ",".join(
-            ["period_s", "target_g", "mean_g", "mean_over_target"] + [f"{n}_g" for n in names]
-        ),
-    ]
-    for k, t in enumerate(report.periods):
-        row = [f"{t:.6g}", f"{report.target[k]:.6g}", f"{report.mean[k]:.6g}"]
-        row.append(f"{report.mean[k] / report.target[k]:.5f}")
-        row += [f"{report.spectra[i, k]:.6g}" for i in range(len(names))]
-        lines.append(",".join(row))
-    return "\n".join(lines) + "\n"
 
 
 def print_report(

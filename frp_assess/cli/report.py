@@ -5,15 +5,8 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from frp_assess.app.report import rebuild_report
 from frp_assess.cli.output import plain_line
-from frp_assess.output_set import FolderLock, check_out_file
-from frp_assess.report.document import (
-    CONTRACT_ERRORS,
-    build_report,
-    build_story,
-    contract_error,
-    load_results,
-)
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -29,18 +22,6 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    results_dir = Path(args.results_dir)
-    out = check_out_file(Path(args.out) if args.out else results_dir / "report.pdf")
-    results = load_results(results_dir)  # InputError -> one line, exit 2
-    try:
-        story = build_story(results)  # a value that breaks the contract fails here
-        if out.resolve().parent == results_dir.resolve():
-            # report.pdf is a member of the run's output set: replace it under the lock
-            with FolderLock(results_dir, key="RESULTS_DIR"):
-                build_report(results, out, story=story)
-        else:
-            build_report(results, out, story=story)
-    except CONTRACT_ERRORS as exc:  # nothing written: build_report writes atomically
-        raise contract_error(exc, results_dir / "results.json") from None
+    out = rebuild_report(Path(args.results_dir), Path(args.out) if args.out else None)
     print(f"wrote {plain_line(out)}")
     return 0

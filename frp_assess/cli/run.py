@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import datetime as _dt
 import sys
 import threading
 from dataclasses import replace
@@ -12,13 +13,17 @@ from typing import Any
 from rich.console import Console
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
-from frp_assess.api import default_out_dir, prepare_records, run_assessment
-from frp_assess.assess.from_project import load_inputs
-from frp_assess.assess.inputs import AssessmentInputs
+from frp_assess.app.assessment import (
+    AssessmentInputs,
+    ComplianceReport,
+    default_out_dir,
+    load_inputs,
+    prepare_records,
+    run_assessment,
+)
 from frp_assess.cli.output import Column, make_console, print_table, user
 from frp_assess.cli.wall_args import TOLERANCE
 from frp_assess.errors import Cancelled, InputError
-from frp_assess.motions import ComplianceReport
 from frp_assess.numbers import (
     checks_summary,
     fmt_against,
@@ -57,7 +62,17 @@ def register(sub: argparse._SubParsersAction) -> None:
         action="store_true",
         help="repeat every IDA at a 10x tighter tolerance and report the largest change of C",
     )
+    # hidden: fixes results.json's `created` (tests/golden; or SOURCE_DATE_EPOCH, api.run_date)
+    p.add_argument("--created", type=iso_date, default=None, help=argparse.SUPPRESS)
     p.set_defaults(handler=run)
+
+
+def iso_date(text: str) -> str:
+    """``--created YYYY-MM-DD``: the date written as the run's ``created``."""
+    try:
+        return _dt.date.fromisoformat(text).isoformat()
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a date YYYY-MM-DD, found {text!r}") from None
 
 
 def compliance_rows(rep: ComplianceReport) -> list[list[str]]:
@@ -241,6 +256,7 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
                 cancel=cancel,
                 seismic=seismic,
                 pdf=not args.no_pdf,
+                created=args.created,
             )
         except KeyboardInterrupt:
             cancel.set()

@@ -9,14 +9,12 @@ from pathlib import Path
 
 import numpy as np
 
-from frp_assess.api import simulate
+from frp_assess.app.expert import G, read_record, simulate
 from frp_assess.cli.arg_types import number_in
 from frp_assess.cli.output import plain_line
 from frp_assess.cli.wall_args import add_model_arguments, add_record_arguments, build_model
 from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_write_text
-from frp_assess.motions.readers import read_record
-from frp_assess.motions.record import G
 from frp_assess.output_set import check_out_file
 
 

@@ -50,9 +50,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from frp_assess.api import run_study
-    from frp_assess.study import load_study
-    from frp_assess.study.executors import make_executor
+    from frp_assess.app.study import load_study, make_executor, plan_and_records, run_study
 
     path = Path(args.file)
     study = load_study(path)
@@ -79,17 +77,14 @@ def run(args: argparse.Namespace) -> int:
                 bar.update(task["id"], completed=done, total=total)
 
             with console.status("generating the records"):
-                from frp_assess.study import StudyPlan, study_records
-
-                plan = StudyPlan(study)
-                records = study_records(plan)
+                plan, records = plan_and_records(study)
             console.print(
                 f"{user(study.name)}: {len(plan)} cases ({plan.n_unreinforced} unreinforced, "
                 f"{plan.n_reinforced} reinforced) × {study.records.count} records on "
                 f"{executor.describe()}"
             )
             try:
-                stats, written = run_study(
+                outcome = run_study(
                     study,
                     out_dir,
                     executor=executor,
@@ -103,10 +98,11 @@ def run(args: argparse.Namespace) -> int:
                 raise Cancelled("interrupted") from None
     finally:
         executor.close()
+    stats = outcome.stats
     console.print(
         f"{stats.computed} IDAs computed, {stats.reused} reused; {stats.seconds:.1f} s; "
         f"results in {user(out_dir)}/"
     )
-    for w in written:
+    for w in outcome.figures:
         console.print(f"wrote {user(w)}")
     return 0

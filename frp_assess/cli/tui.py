@@ -28,19 +28,11 @@ def run(args: argparse.Namespace) -> int:
         raise InputError(f"expected at least 1 job, found {args.jobs}", key="--jobs")
     path = Path(args.file) if args.file else None
     if path is not None and (path.exists() or path.is_symlink()):
-        from frp_assess.config.loader import parse_yaml
-        from frp_assess.config.yaml_source import read_text_file
-        from frp_assess.study.schema import looks_like_study
+        from frp_assess.app.project import ensure_project_file
 
-        # a folder, FIFO, device or oversized file: one line, exit 2, before any read
-        text = read_text_file(path, "project file")
-        data, _lines = parse_yaml(text, str(path))  # a YAML syntax error: one line, exit 2
-        if looks_like_study(data):
-            raise InputError(
-                "is a study file: the terminal UI edits project files; run it with "
-                f"`frp-assess study {path}` (check it with `frp-assess validate`)",
-                file=str(path),
-            )
+        # a folder, FIFO, device or oversized file, a YAML syntax error, a study file: one
+        # line, exit 2, before the screen opens
+        ensure_project_file(path)
     from frp_assess.tui.app import run_tui  # Textual is imported only for this command
 
     return run_tui(path, jobs=args.jobs)

@@ -5,29 +5,24 @@ from __future__ import annotations
 
 import argparse
 import sys
-from collections.abc import Mapping
 from pathlib import Path
 
-from frp_assess.assess.from_project import layout_problems, read_record_files
-from frp_assess.config import LoadedProject
+from frp_assess.app.project import (
+    CheckedStudy,
+    LoadedProject,
+    check_file,
+    problems_of,
+)
+from frp_assess.app.study import StudyFile
 from frp_assess.config.library import MASONRY
-from frp_assess.config.loader import load_parsed
-from frp_assess.config.messages import Loc, format_path, line_of
-from frp_assess.config.problems import problems_of, raise_all
 from frp_assess.config.schema import (
-    CONFIDENCE_FACTORS,
     Ec8Spectrum,
     Ntc2018Spectrum,
     PresetSpectrum,
     Project,
     TableSpectrum,
 )
-from frp_assess.config.yaml_source import parse_yaml, read_text_file
 from frp_assess.errors import InputError
-from frp_assess.motions.plausibility import plausibility_warnings
-from frp_assess.motions.spectra import parse_spectrum
-from frp_assess.study.plan import StudyPlan
-from frp_assess.study.schema import StudyFile, looks_like_study, parse_study, spectrum_text
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -46,8 +41,18 @@ def spectrum_summary(project: Project) -> str:
     """One line describing the spectrum of the project."""
     s = project.seismic.spectrum
     if isinstance(s, Ntc2018Spectrum):
+        ag, f0, tc = s.parameters()
+        where = ""
+        hazard = s.site_hazard()
+        if hazard is not None:
+            state = s.chosen_limit_state
+            where = (
+                f" (site {hazard.latitude:g}°N {hazard.longitude:g}°E, V_R = {hazard.V_R:g} "
+                f"years, {state} T_R = {hazard[state].TR:.0f} years)"
+            )
+            ag, f0, tc = round(ag, 4), round(f0, 3), round(tc, 3)
         return (
-            f"NTC 2018, a_g = {s.ag:g} g, F0 = {s.F0:g}, T_C* = {s.Tc_star:g} s, "
+            f"NTC 2018, a_g = {ag:g} g, F0 = {f0:g}, T_C* = {tc:g} s{where}, "
             f"soil {s.soil}, {s.topography}"
         )
     if isinstance(s, Ec8Spectrum):
@@ -75,7 +80,7 @@ def code_check_summary(project: Project) -> str:
     """Knowledge level, FC [-] and whether FC divides the IDA's capacity/demand (docs/model.md
     §5.3, §5.5), and the behaviour factor q [-]."""
     cc = project.code_check
-    fc = CONFIDENCE_FACTORS[cc.knowledge_level]
+    fc = cc.confidence_factor
     where = (
         "in the IDA verdict too" if cc.fc_in_ida else "not in the IDA verdict (fc_in_ida: false)"
     )
@@ -127,34 +132,6 @@ def summary(loaded: LoadedProject) -> list[str]:
     return lines
 
 
-def study_problems(study: StudyFile, file: str, lines: Mapping[Loc, int]) -> list[InputError]:
-    """Problems of a schema-valid study that need the libraries: materials and spectra."""
-    out: list[InputError] = []
-    try:
-        StudyPlan(study)
-    except InputError as exc:
-        path: Loc = tuple(int(p) if p.isdigit() else p for p in str(exc.key or "").split("."))
-        out.append(
-            InputError(exc.message, file=file, line=line_of(lines, path), key=format_path(path))
-        )
-    for i, spectrum in enumerate(study.spectrum):
-        try:
-            parse_spectrum(spectrum_text(spectrum))
-        except InputError as exc:
-            where: Loc = ("spectrum", i)
-            out.append(
-                InputError(
-                    f"{exc.key}: {exc.message}"
-                    if exc.key and exc.key != "spectrum"
-                    else exc.message,
-                    file=file,
-                    line=line_of(lines, where),
-                    key=format_path(where),
-                )
-            )
-    return sorted(out, key=lambda p: p.line or 0)
-
-
 def study_summary(study: StudyFile, file: str) -> list[str]:
     """The lines printed by `validate` for a study file."""
     rec = study.records
@@ -171,8 +148,7 @@ def study_summary(study: StudyFile, file: str) -> list[str]:
 
 
 def validate_file(path: Path) -> tuple[list[str], tuple[str, ...]]:
-    """Validate a project or a study file (told apart by their keys); a project's record
-    files are read too (their problems are errors, an implausible PGA a warning).
+    """Validate a project or a study file (:func:`frp_assess.app.project.check_file`).
 
     Returns:
         the summary lines and the warnings (one line each, e.g. placeholders left unchanged).
@@ -180,17 +156,10 @@ def validate_file(path: Path) -> tuple[list[str], tuple[str, ...]]:
     Raises:
         InputError: every problem (:class:`~frp_assess.config.problems.InputErrors`).
     """
-    name = str(path)
-    text = read_text_file(path, "project file")
-    data, lines = parse_yaml(text, name)
-    if looks_like_study(data):
-        study = parse_study(data, file=name, lines=lines)
-        raise_all(study_problems(study, name, lines))
-        return study_summary(study, name), ()
-    loaded = load_parsed(data, lines, name, base_dir=path.parent)
-    records, problems = read_record_files(loaded.project, loaded.base_dir)
-    raise_all(problems + layout_problems(loaded))
-    return summary(loaded), (*loaded.warnings, *plausibility_warnings(records))
+    checked = check_file(path)
+    if isinstance(checked, CheckedStudy):
+        return study_summary(checked.study, checked.file), ()
+    return summary(checked.loaded), checked.warnings
 
 
 def print_problems(error: InputError) -> None:

@@ -11,8 +11,17 @@ import math
 from collections.abc import Callable
 from typing import Any
 
+from frp_assess.app.expert import (
+    MECHANISMS,
+    POSITIONS,
+    BarsInput,
+    ModelOptions,
+    RockingModel,
+    WallInput,
+    rocking_model,
+)
+from frp_assess.app.records import FORMATS, UNITS
 from frp_assess.cli.arg_types import number_in
-from frp_assess.dynamics import MECHANISMS, POSITIONS, ModelOptions, RockingModel
 from frp_assess.dynamics.options import (
     FREE_VIBRATION_TAIL,
     INTEGRATION_TOLERANCE,
@@ -21,9 +30,7 @@ from frp_assess.dynamics.options import (
     STRAIN_FACTOR,
     Option,
 )
-from frp_assess.dynamics.units import rebars_from_practice, wall_from_practice
 from frp_assess.errors import InputError
-from frp_assess.motions.readers import FORMATS, UNITS
 
 #: bounds of the command-line wall (those of the project file's schema)
 THICKNESS = number_in(0, 5, low_open=True, unit="m")
@@ -165,12 +172,7 @@ def build_model(args: argparse.Namespace) -> RockingModel:
     B = _positive(args.thickness, "--thickness", "m")
     H = _positive(args.height, "--height", "m")
     w = _positive(args.unit_weight, "--unit-weight", "kN/m³")
-    if B >= H:
-        raise InputError(
-            f"expected thickness < height for a rocking wall, found B = {B:g} m ≥ H = {H:g} m",
-            key="--thickness",
-        )
-    wall = wall_from_practice(B, H, w)
+    wall = WallInput(B, H, w)  # no masonry strength on the command line: the edge pivot
     bar_opts = {
         "--modulus": args.modulus,
         "--ultimate-strain": args.ultimate_strain,
@@ -178,7 +180,7 @@ def build_model(args: argparse.Namespace) -> RockingModel:
         "--ratio": args.ratio,
     }
     given = [k for k, v in bar_opts.items() if v is not None]
-    rebars = None
+    rebars: BarsInput | None = None
     if given:
         missing = [k for k, v in bar_opts.items() if v is None]
         if missing:
@@ -197,9 +199,9 @@ def build_model(args: argparse.Namespace) -> RockingModel:
             raise InputError(
                 f"expected a factor in (0, 1], found {args.strain_factor:g}", key="--strain-factor"
             )
-        rebars = rebars_from_practice(
+        rebars = BarsInput(
             args.modulus, args.ultimate_strain, args.position, args.ratio, args.strain_factor
         )
     if not (math.isfinite(args.tail) and args.tail >= 0.0):
         raise InputError(f"expected a duration >= 0 s, found {args.tail:g}", key="--tail")
-    return RockingModel(wall, args.mechanism, rebars, model_options(args))
+    return rocking_model(wall, args.mechanism, rebars, model_options(args), key="--thickness")

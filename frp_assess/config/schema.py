@@ -10,6 +10,7 @@ exactly one record source) raise :class:`~pydantic_core.PydanticCustomError` who
 from __future__ import annotations
 
 import datetime as _dt
+import functools
 from pathlib import PurePath
 from typing import Annotated, Any, Literal, get_args
 
@@ -52,12 +53,18 @@ from frp_assess.dynamics.pivot import PivotRule
 from frp_assess.dynamics.rebars import POSITIONS, Position
 from frp_assess.dynamics.rocking import ModelOptions
 from frp_assess.dynamics.wall import Mechanism
+from frp_assess.errors import InputError
 from frp_assess.motions.floor import default_period
+from frp_assess.motions.site import SiteHazard, site_hazard
+from frp_assess.rules.geometry import slenderness_problem
+from frp_assess.rules.masonry import CONFIDENCE_FACTORS as CONFIDENCE_FACTORS  # re-export
+from frp_assess.rules.masonry import confidence_factor
+
+#: the hazard of a site, computed once per (latitude, longitude, V_N, use class)
+site_hazard_cached = functools.lru_cache(maxsize=64)(site_hazard)
 
 GroundType = Literal["A", "B", "C", "D", "E"]
 
-#: confidence factor FC of Circolare 2019 §C8.5.4 by knowledge level
-CONFIDENCE_FACTORS: dict[str, float] = {"LC1": 1.35, "LC2": 1.20, "LC3": 1.00}
 #: accepted ``format`` of a record file (as frp_assess.motions.readers.FORMATS)
 RecordFormat = Literal["auto", "at2", "esm", "two-column", "one-column"]
 RECORD_FORMATS: tuple[str, ...] = get_args(RecordFormat)
@@ -227,7 +234,7 @@ class WallSpec(_Model):
 
     @model_validator(mode="after")
     def _check_wall(self) -> WallSpec:
-        if self.thickness >= self.height:
+        if slenderness_problem(self.thickness, self.height) is not None:
             raise located_error(
                 f"expected thickness B < height H = {self.height:g} m, found {self.thickness:g}"
                 " (a rocking wall is slender)",
@@ -249,18 +256,125 @@ class WallSpec(_Model):
 
 
 # -------------------------------------------------------------------------------- spectra
+class SiteCoordinates(_Model):
+    """Where the site is: decimal degrees, as in the NTC reference grid (docs/site-hazard.md)."""
+
+    latitude: Number = Field(ge=-90, le=90, description="Latitude [°], decimal, e.g. 42.35.")
+    longitude: Number = Field(
+        ge=-180, le=180, description="Longitude [°], decimal, east positive, e.g. 13.40."
+    )
+
+
+UseClass = Literal["I", "II", "III", "IV"]
+LimitState = Literal["SLO", "SLD", "SLV", "SLC"]
+#: the keys of the spectrum given by its parameters, and of the one given by coordinates
+NTC_PARAMETER_KEYS = ("ag", "F0", "Tc_star")
+NTC_SITE_KEYS = ("site", "nominal_life", "use_class", "limit_state")
+
+
 class Ntc2018Spectrum(_Model):
-    """NTC 2018 §3.2.3.2.1 elastic spectrum from the site's parameters."""
+    """NTC 2018 §3.2.3.2.1 elastic spectrum, from the site's parameters a_g, F0, T_C* or from
+    the site's coordinates (``site``: the parameters of ``limit_state`` interpolated on the
+    NTC reference grid, NTC 2018 §3.2 and NTC 2008 Allegati A/B; docs/site-hazard.md)."""
 
     type: Literal["ntc2018"] = Field(description="Spectrum kind.")
-    ag: Number = Field(gt=0, le=1.5, description="a_g [g] on rock, 0 < a_g <= 1.5.")
-    F0: Number = Field(gt=0, le=5.0, description="F0 [-], maximum amplification on rock.")
-    Tc_star: Number = Field(gt=0, le=3.0, description="T_C* [s], start of the velocity branch.")
+    ag: Annotated[Number, Field(gt=0, le=1.5)] | None = Field(
+        None, description="a_g [g] on rock, 0 < a_g <= 1.5."
+    )
+    F0: Annotated[Number, Field(gt=0, le=5.0)] | None = Field(
+        None, description="F0 [-], maximum amplification on rock."
+    )
+    Tc_star: Annotated[Number, Field(gt=0, le=3.0)] | None = Field(
+        None, description="T_C* [s], start of the velocity branch."
+    )
+    site: SiteCoordinates | None = Field(
+        None,
+        description="Coordinates {latitude, longitude} [°]: a_g, F0, T_C* from the NTC "
+        "reference grid instead of ag, F0, Tc_star.",
+    )
+    nominal_life: Annotated[Number, Field(gt=0, le=1000)] | None = Field(
+        None, description="Nominal life V_N [years], 0-1000 (50), with site (Tab. 2.4.I)."
+    )
+    use_class: UseClass | None = Field(
+        None, description="Use class I-IV (II), with site: C_U = 0.7, 1, 1.5, 2 (Tab. 2.4.II)."
+    )
+    limit_state: LimitState | None = Field(
+        None, description="Limit state SLO, SLD, SLV or SLC (SLV), with site (Tab. 3.2.I)."
+    )
     soil: GroundType = Field(description="Subsoil category A-E (S_S, C_C of Tab. 3.2.IV).")
     topography: Literal["T1", "T2", "T3", "T4"] = Field(
         "T1", description="Topographic category T1-T4 (S_T of Tab. 3.2.V)."
     )
     damping: Number = Field(0.05, gt=0, lt=1, description="Viscous damping ratio [-] (0.05).")
+
+    @model_validator(mode="after")
+    def _one_form(self) -> Ntc2018Spectrum:
+        given = [k for k in NTC_PARAMETER_KEYS if getattr(self, k) is not None]
+        if self.site is not None:
+            if given:
+                raise located_error(
+                    f"give either site (coordinates) or ag, F0, Tc_star, not both; found "
+                    f"{', '.join(given)} with site",
+                    given[0],
+                )
+            self._site_hazard()
+            return self
+        for key in NTC_SITE_KEYS[1:]:
+            if getattr(self, key) is not None:
+                raise located_error(f"{key} needs site: {{latitude, longitude}}", key)
+        missing = [k for k in NTC_PARAMETER_KEYS if getattr(self, k) is None]
+        if missing:
+            fields = type(self).model_fields
+            described = "; ".join(
+                f"{k}: {(fields[k].description or '').rstrip('.')}" for k in missing
+            )
+            raise located_error(
+                f"missing required key{'s' if len(missing) > 1 else ''} "
+                f"{', '.join(repr(k) for k in missing)} ({described}), or give the site's "
+                "coordinates instead: site: {latitude, longitude}"
+            )
+        return self
+
+    @property
+    def by_coordinates(self) -> bool:
+        """The spectrum is given by the site's coordinates (not by a_g, F0, T_C*)."""
+        return self.site is not None
+
+    @property
+    def V_N(self) -> float:  # noqa: N802
+        """Nominal life V_N [years] (50 when not given)."""
+        return 50.0 if self.nominal_life is None else float(self.nominal_life)
+
+    @property
+    def chosen_limit_state(self) -> str:
+        """The limit state whose parameters make the spectrum (SLV when not given)."""
+        return self.limit_state or "SLV"
+
+    def _site_hazard(self) -> Any:
+        assert self.site is not None
+        try:
+            return site_hazard_cached(
+                float(self.site.latitude),
+                float(self.site.longitude),
+                self.V_N,
+                self.use_class or "II",
+            )
+        except InputError as exc:
+            raise located_error(exc.message, "site") from None
+
+    def site_hazard(self) -> SiteHazard | None:
+        """The hazard at the site (all four limit states), or None without ``site``."""
+        return None if self.site is None else self._site_hazard()
+
+    def parameters(self) -> tuple[float, float, float]:
+        """(a_g [g], F0 [-], T_C* [s]) of the spectrum: as given, or interpolated at the site
+        for the chosen limit state."""
+        hazard = self.site_hazard()
+        if hazard is None:
+            assert self.ag is not None and self.F0 is not None and self.Tc_star is not None
+            return float(self.ag), float(self.F0), float(self.Tc_star)
+        state = hazard[self.chosen_limit_state]
+        return state.ag, state.F0, state.Tc_star
 
 
 class Ec8Spectrum(_Model):
@@ -760,7 +874,7 @@ class CodeCheckSpec(_Model):
     @property
     def confidence_factor(self) -> float:
         """FC [-] of the knowledge level."""
-        return CONFIDENCE_FACTORS[self.knowledge_level]
+        return confidence_factor(self.knowledge_level)
 
 
 class CostsSpec(_Model):

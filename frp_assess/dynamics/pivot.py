@@ -32,12 +32,12 @@ from numpy.typing import NDArray
 from frp_assess.dynamics.rebars import Rebars
 from frp_assess.dynamics.wall import Wall
 from frp_assess.motions.record import G
+from frp_assess.rules.bars import bar_force
 from frp_assess.rules.masonry import STRESS_BLOCK_FACTOR as STRESS_BLOCK_FACTOR  # re-export
-from frp_assess.rules.masonry import compressed_zone_depth
+from frp_assess.rules.masonry import base_force, compressed_zone_depth
 
 PivotRule = Literal["edge", "crushing"]
 PIVOT_RULES: tuple[PivotRule, ...] = ("edge", "crushing")
-
 
 
 def pivot_force(wall: Wall, rebars: Rebars | None) -> float:
@@ -46,10 +46,10 @@ def pivot_force(wall: Wall, rebars: Rebars | None) -> float:
     W = w·B·H; T_u = E·A·ε_max, the acting bar (one face for external bars) at its design
     rupture strain (0 unreinforced).
     """
-    weight = wall.unit_weight * wall.thickness * wall.height
     if rebars is None:
-        return weight
-    return weight + rebars.elastic_modulus * rebars.area(wall) * rebars.rupture_strain
+        return wall.weight
+    tension = bar_force(rebars.elastic_modulus, rebars.area(wall), rebars.rupture_strain)
+    return base_force(wall.weight, tension)
 
 
 def pivot_depth(wall: Wall, rebars: Rebars | None, rule: PivotRule) -> float:

@@ -4,18 +4,16 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Literal, overload
+from typing import overload
 
 import numpy as np
 from numpy.typing import NDArray
 
 from frp_assess.dynamics.wall import Wall
-
-Position = Literal["centred", "external"]
-POSITIONS: tuple[Position, ...] = ("centred", "external")
-
-#: Default cyclic reduction of the ultimate strain, ε_max = c·ε_u (paper, after its ref. [53]).
-DEFAULT_STRAIN_FACTOR = 0.5
+from frp_assess.rules import bars as rule
+from frp_assess.rules.bars import DEFAULT_STRAIN_FACTOR as DEFAULT_STRAIN_FACTOR  # re-export
+from frp_assess.rules.bars import POSITIONS as POSITIONS
+from frp_assess.rules.bars import Position as Position
 
 
 @dataclass(frozen=True)
@@ -42,7 +40,7 @@ class Rebars:
             raise ValueError(f"elastic modulus must be > 0 Pa, got {self.elastic_modulus!r}")
         if not (math.isfinite(self.ultimate_strain) and 0.0 < self.ultimate_strain < 1.0):
             raise ValueError(f"ultimate strain must be in (0, 1), got {self.ultimate_strain!r}")
-        if self.position not in ("centred", "external"):
+        if self.position not in POSITIONS:
             raise ValueError(f"position must be 'centred' or 'external', got {self.position!r}")
         if not (math.isfinite(self.ratio) and 0.0 < self.ratio <= 20.0):
             raise ValueError(f"ratio must be in (0, 20] per mille, got {self.ratio!r}")
@@ -57,28 +55,24 @@ class Rebars:
     @property
     def rupture_strain(self) -> float:
         """Design rupture strain ε_max = c·ε_u [-]."""
-        return self.strain_factor * self.ultimate_strain
+        return rule.rupture_strain(self.ultimate_strain, self.strain_factor)
 
     def lever_arm(self, wall: Wall) -> float:
         """b_r [m]: R·sin α = B/2 centred (Eq. 8), 2R·sin α = B external (Eq. 9)."""
-        return (0.5 if self.position == "centred" else 1.0) * wall.thickness
+        return rule.lever_arm(self.position, wall.thickness)
 
     def area(self, wall: Wall) -> float:
         """A [m² per metre of wall]: active bar area, ρ·B·(1 m)."""
-        return self.ratio * 1e-3 * wall.thickness
+        return rule.bar_area(self.ratio, wall.thickness)
 
     def installed_area(self, wall: Wall) -> float:
         """Installed bar area [m² per metre of wall]: A centred, 2·A external (both faces)."""
-        return self.area(wall) * (1.0 if self.position == "centred" else 2.0)
+        return self.area(wall) * rule.faces(self.position)
 
     def stiffness_term(self, wall: Wall) -> float:
         """K [-] of Eq. 10: sin α · tan α · (r_p/2) · E·A/(m·g)."""
         a = wall.alpha
-        ea_over_mg = (
-            self.elastic_modulus
-            * self.area(wall)
-            / (wall.unit_weight * wall.thickness * wall.height)
-        )
+        ea_over_mg = self.elastic_modulus * self.area(wall) / wall.weight
         return math.sin(a) * math.tan(a) * 0.5 * self.r_p * ea_over_mg
 
     def rupture_rotation(self, wall: Wall) -> float:

@@ -19,6 +19,10 @@ N_PER_KN = 1e3
 PA_PER_GPA = 1e9
 #: pascals in a megapascal
 PA_PER_MPA = 1e6
+#: kilopascals in a megapascal and in a gigapascal: the assessment's records are in kN/m, and
+#: kN/m over kPa is metres (the rules of frp_assess.rules are homogeneous formulas)
+KPA_PER_MPA = 1e3
+KPA_PER_GPA = 1e6
 
 
 def wall_from_practice(
@@ -29,9 +33,7 @@ def wall_from_practice(
 ) -> Wall:
     """The wall of thickness B [m], height H [m], unit weight w [kN/m³] and design compressive
     strength f_d [MPa] (infinite: not given, the pivot stays at the edge)."""
-    return Wall(
-        thickness, height, unit_weight_kn * N_PER_KN, compressive_strength_mpa * PA_PER_MPA
-    )
+    return Wall(thickness, height, unit_weight_kn * N_PER_KN, compressive_strength_mpa * PA_PER_MPA)
 
 
 def rebars_from_practice(

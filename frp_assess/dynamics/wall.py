@@ -10,6 +10,14 @@ from dataclasses import dataclass
 from typing import Literal
 
 from frp_assess.motions.record import G
+from frp_assess.rules.geometry import (
+    half_diagonal,
+    size_problem,
+    slenderness,
+    slenderness_problem,
+    thickness_of,
+)
+from frp_assess.rules.masonry import wall_weight
 
 Mechanism = Literal["one-sided", "two-sided"]
 MECHANISMS: tuple[Mechanism, ...] = ("one-sided", "two-sided")
@@ -36,32 +44,34 @@ class Wall:
     def __post_init__(self) -> None:
         for name in ("thickness", "height", "unit_weight"):
             value = getattr(self, name)
-            if not (math.isfinite(value) and value > 0.0):
+            if size_problem(value) is not None:
                 raise ValueError(f"wall {name} must be a finite number > 0, got {value!r}")
         if not self.compressive_strength > 0.0:  # inf allowed, nan refused
             raise ValueError(
                 f"wall compressive strength must be > 0 Pa, got {self.compressive_strength!r}"
             )
-        if self.thickness >= self.height:
-            raise ValueError(
-                f"wall thickness B = {self.thickness} m must be smaller than its height "
-                f"H = {self.height} m for a rocking wall"
-            )
+        if (problem := slenderness_problem(self.thickness, self.height)) is not None:
+            raise ValueError(f"wall: {problem}")
 
     @property
     def alpha(self) -> float:
         """Slenderness angle α [rad], tan α = B/H."""
-        return math.atan2(self.thickness, self.height)
+        return slenderness(self.thickness, self.height)
 
     @property
     def R(self) -> float:  # noqa: N802 - the model's symbol
         """Half diagonal R [m] = ½·√(B² + H²): centre of mass to a base corner."""
-        return 0.5 * math.hypot(self.thickness, self.height)
+        return half_diagonal(self.thickness, self.height)
 
     @property
     def mass(self) -> float:
         """Mass per metre of wall m = w·B·H/g [kg/m]."""
-        return self.unit_weight * self.thickness * self.height / G
+        return self.weight / G
+
+    @property
+    def weight(self) -> float:
+        """Weight per metre of wall W = w·B·H [N/m]."""
+        return wall_weight(self.unit_weight, self.thickness, self.height)
 
     @property
     def I0(self) -> float:  # noqa: N802
@@ -91,4 +101,4 @@ class Wall:
     @classmethod
     def from_slenderness(cls, height: float, alpha: float, unit_weight: float) -> Wall:
         """The wall of height H [m] and slenderness α [rad] (B = H·tan α)."""
-        return cls(thickness=height * math.tan(alpha), height=height, unit_weight=unit_weight)
+        return cls(thickness_of(height, alpha), height, unit_weight)

@@ -8,7 +8,7 @@ from reportlab.lib.units import mm
 from reportlab.platypus import CondPageBreak, Flowable, KeepTogether, PageBreak
 
 from frp_assess.numbers import no_retrofit_caveats, numerical_check_text
-from frp_assess.report import charts, floor_section
+from frp_assess.report import charts, floor_section, site_section
 from frp_assess.report import tables as tb
 from frp_assess.report.flow import esc, gap, grid, key_value, markup, para
 from frp_assess.results.model import AssessmentResult, CaseResult
@@ -287,6 +287,7 @@ def inputs(results: Results) -> list[Flowable]:
 def seismic(results: Results) -> list[Flowable]:
     out: list[Flowable] = [PageBreak(), h1("3  Seismic input"), h2("3.1  Target spectrum")]
     out.append(key_value(tb.spectrum_rows(results), sub_values=True, verbatim_rows=(0, 1)))
+    out += site_section.site_section(results)
     out.append(h2("3.2  Records"))
     out.append(
         grid(

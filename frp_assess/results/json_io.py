@@ -5,7 +5,8 @@ One generic pair driven by the dataclasses' type hints: a new dataclass or field
 ``tuple[X, ...]``, fixed ``tuple[X, Y]``, ``list[X]``, ``dict[str, X]``, unions (``X | None``,
 ``str | float``: the first alternative that fits),
 ``float``/``int``/``str``/``bool`` and ``object`` (any JSON value, kept as read).  A field
-with a default may be missing from the file; an unknown key or a value of the wrong type is
+with a default may be missing from the file (one whose metadata has ``omit_if_none`` is not
+written when None); an unknown key or a value of the wrong type is
 an :class:`~frp_assess.errors.InputError` naming the file and the key path.
 """
 
@@ -31,7 +32,11 @@ def to_json(obj: object) -> str:
 def to_data(obj: object) -> Any:
     """``obj`` as plain JSON values (dicts, lists, numbers, text, None)."""
     if dataclasses.is_dataclass(obj) and not isinstance(obj, type):
-        return {f.name: to_data(getattr(obj, f.name)) for f in dataclasses.fields(obj)}
+        return {
+            f.name: to_data(getattr(obj, f.name))
+            for f in dataclasses.fields(obj)
+            if not (f.metadata.get("omit_if_none") and getattr(obj, f.name) is None)
+        }
     if isinstance(obj, (tuple, list)):
         return [to_data(x) for x in obj]
     if isinstance(obj, dict):

@@ -11,7 +11,7 @@ as this one.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from frp_assess.results.as_built import AsBuilt
 from frp_assess.results.checks import KinematicChecks
@@ -164,6 +164,39 @@ class SeismicResult:
     periods: tuple[float, ...]
     target_sa: tuple[float, ...]
     mean_sa: tuple[float, ...]
+
+
+@dataclass(frozen=True)
+class LimitStateSite:
+    """One limit state at the site (NTC 2018 Tab. 3.2.I): P_VR [-]; TR [years] =
+    −V_R/ln(1 − P_VR); TR_used [years], TR limited to the grid's 30–2475; ag [g] on rock,
+    F0 [-], Tc_star = T_C* [s] interpolated on the NTC reference grid at TR_used."""
+
+    P_VR: float
+    TR: float
+    TR_used: float
+    ag: float
+    F0: float
+    Tc_star: float
+
+
+@dataclass(frozen=True)
+class SiteResult:
+    """The site when the spectrum is given by its coordinates (docs/site-hazard.md):
+    latitude, longitude [°]; V_N nominal life [years]; use class I–IV; C_U [-];
+    V_R = max(V_N·C_U, 35) [years]; the four limit states SLO, SLD, SLV, SLC in order;
+    ``limit_state`` the one whose a_g, F0, T_C* make the spectrum; nearest_node [km] the
+    distance to the nearest grid node."""
+
+    latitude: float
+    longitude: float
+    V_N: float
+    use_class: str
+    C_U: float
+    V_R: float
+    limit_states: dict[str, LimitStateSite]
+    limit_state: str
+    nearest_node: float
 
 
 @dataclass(frozen=True)
@@ -493,6 +526,8 @@ class AssessmentResult:
     masonry_strength: MasonryResult | None = None
     #: the code's kinematic checks of every case (Circolare 2019 §C8.7.1); None: not computed
     kinematic_checks: KinematicChecks | None = None
+    #: the site, when the spectrum is given by its coordinates; the key is absent otherwise
+    site: SiteResult | None = field(default=None, metadata={"omit_if_none": True})
 
     @property
     def urm(self) -> CaseResult:

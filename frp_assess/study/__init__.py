@@ -4,10 +4,10 @@
 from __future__ import annotations
 
 from frp_assess.study.plan import Case, StudyMaterial, StudyPlan
+from frp_assess.study.rows import SummaryRow, read_summary
 from frp_assess.study.run import (
     LocalExecutor,
     StudyStats,
-    read_summary,
     run_study,
     study_records,
 )
@@ -20,6 +20,7 @@ __all__ = [
     "StudyMaterial",
     "StudyPlan",
     "StudyStats",
+    "SummaryRow",
     "load_study",
     "parse_study",
     "read_summary",

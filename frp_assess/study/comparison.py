@@ -1,6 +1,6 @@
 """Every trend and headline number the paper states (docs/model.md §8) against a reproduction.
 
-Input: the rows of a study's ``summary.csv`` (:func:`frp_assess.study.run.read_summary`).
+Input: the rows of a study's ``summary.csv`` (:func:`frp_assess.study.rows.read_summary`).
 Each trend is measured as the share of the like-for-like comparisons in the study that go the
 way the paper says (e.g. "q grows with H": every pair of consecutive heights of the same
 wall group); the verdict is *agrees* at ≥ 90 %, *mostly* at ≥ 70 %, else *differs*.
@@ -15,7 +15,7 @@ from collections import defaultdict
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 
-Row = dict[str, str]
+from frp_assess.study.rows import Row
 
 #: the reasons a reproduction can differ from the paper (docs/model.md §3, §6, §7)
 REASONS = {

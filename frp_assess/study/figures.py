@@ -24,9 +24,7 @@ from reportlab.lib.units import cm
 from reportlab.platypus import Paragraph, SimpleDocTemplate, Spacer, Table, TableStyle
 
 from frp_assess.study.comparison import compare
-from frp_assess.study.run import read_summary
-
-Row = dict[str, str]
+from frp_assess.study.rows import Row, read_summary
 
 #: the reference value of each axis when it is held fixed (the paper's headline case)
 REFERENCE: dict[str, str] = {

@@ -19,9 +19,15 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 from frp_assess.assess.inputs import Building
+from frp_assess.assess.wall_model import (
+    BarsInput,
+    WallInput,
+    base_problem,
+    design_strength,
+    rocking_model,
+)
 from frp_assess.config.library import FRP_MATERIALS, did_you_mean
 from frp_assess.dynamics import RockingModel
-from frp_assess.dynamics.units import rebars_from_practice, wall_from_practice
 from frp_assess.errors import InputError
 from frp_assess.study.schema import StudyFile, spectrum_label, spectrum_text
 
@@ -116,11 +122,6 @@ class StudyPlan:
         self.geometry = list(
             study.alpha_deg if study.alpha_deg is not None else study.thickness or []
         )
-        if study.thickness is not None:
-            for b in study.thickness:
-                for h in study.height:
-                    if b >= h:  # pragma: no cover - the schema rejects it
-                        raise InputError(f"thickness {b} m >= height {h} m", key="thickness")
         self.reinforcements: list[tuple[str, str, float]] = [
             (m, p, r) for m in study.material for p in study.position for r in study.ratio
         ]
@@ -139,6 +140,16 @@ class StudyPlan:
         )
         self.options = study.model.model_options(study.model.integration_tolerance)
         self.ida_settings = study.ida.settings()
+        #: f_d = f_m/FC [MPa] of every wall of the study (the crushing pivot's masonry)
+        self.design_strength = design_strength(
+            study.masonry, study.knowledge_level, study.compressive_strength
+        )
+        for h in self.heights:  # the one refusal of the masonry at the base, before any case
+            for g in self.geometry:
+                b, _ = self.thickness_and_alpha(h, g)
+                problem = base_problem(WallInput(b, h, study.unit_weight, self.design_strength))
+                if problem is not None:
+                    raise InputError(f"H = {h:g} m: {problem}", key="height")
 
     def __len__(self) -> int:
         return self.n_groups * self.group_size
@@ -161,12 +172,7 @@ class StudyPlan:
         rest, hi = divmod(rest, len(self.heights))
         si, mi = divmod(rest, len(self.mechanisms))
         h = self.heights[hi]
-        if self.by_alpha:
-            a_deg = self.geometry[gi]
-            b = h * math.tan(math.radians(a_deg))
-        else:
-            b = self.geometry[gi]
-            a_deg = math.degrees(math.atan2(b, h))
+        b, a_deg = self.thickness_and_alpha(h, self.geometry[gi])
         mat: str | None = None
         pos: str | None = None
         ratio: float | None = None
@@ -187,6 +193,13 @@ class StudyPlan:
             wall_base=self.wall_bases[zi],
         )
 
+    def thickness_and_alpha(self, height: float, geometry: float) -> tuple[float, float]:
+        """B [m] and α [°] of the wall of height H [m] and the geometry axis' value (α [°]
+        when the study gives ``alpha_deg``, else B [m])."""
+        if self.by_alpha:
+            return height * math.tan(math.radians(geometry)), geometry
+        return geometry, math.degrees(math.atan2(geometry, height))
+
     def building(self, case: Case) -> Building | None:
         """Where the wall of ``case`` stands (None: at ground level, docs/model.md §9)."""
         b = self.study.building
@@ -202,19 +215,19 @@ class StudyPlan:
 
     def model(self, case: Case) -> RockingModel:
         """The dynamics model of ``case`` (SI units inside)."""
-        wall = wall_from_practice(case.thickness, case.height, self.study.unit_weight)
+        wall = WallInput(case.thickness, case.height, self.study.unit_weight, self.design_strength)
         bars = None
         if case.material is not None:
             m = self.materials[case.material]
             assert case.position is not None and case.ratio is not None
-            bars = rebars_from_practice(
+            bars = BarsInput(
                 m.elastic_modulus,
                 m.ultimate_strain,
                 case.position,  # type: ignore[arg-type]
                 case.ratio,
                 self.study.model.strain_factor,
             )
-        return RockingModel(wall, case.mechanism, bars, self.options)  # type: ignore[arg-type]
+        return rocking_model(wall, case.mechanism, bars, self.options, key="height")  # type: ignore[arg-type]
 
     def digest(self) -> str:
         """Hash of everything that determines the study's results and its chunking."""

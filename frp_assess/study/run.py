@@ -39,6 +39,7 @@ from frp_assess.errors import Cancelled
 from frp_assess.io_utils import atomic_open, atomic_write_text
 from frp_assess.motions import G, Record, generate_artificial, parse_spectrum
 from frp_assess.study.plan import Case, StudyPlan
+from frp_assess.study.rows import read_summary as read_summary  # (old imports)
 from frp_assess.study.schema import StudyFile
 
 CACHE_DIR = ".cache"
@@ -285,9 +286,7 @@ def run_study(
                 done = base + d
                 report()
 
-            found = runner(label, building).run(
-                [plan.model(cases[i]) for i in slots], on_progress
-            )
+            found = runner(label, building).run([plan.model(cases[i]) for i in slots], on_progress)
             for i, res in zip(slots, found, strict=True):
                 results[i] = res
             done = base + len(slots) * per_case
@@ -366,7 +365,7 @@ def _write_chunk(
                     str(r.runs),
                 ]
             )
-        a_rm_g = case.thickness / case.height
+        a_rm_g = plan.model(case).a_rm_g  # about the model's pivot, as the run's summary
         s = summarise(res, c_max, a_rm_g)
         summary_rows.append(
             [
@@ -432,9 +431,3 @@ def _write_manifest(
         },
     }
     atomic_write_text(out_dir / "study.json", json.dumps(data, indent=2) + "\n")
-
-
-def read_summary(path: Path) -> list[dict[str, str]]:
-    """The rows of a summary.csv (for figures, comparison and tests)."""
-    with path.open(encoding="utf-8", newline="") as fh:
-        return list(csv.DictReader(fh))

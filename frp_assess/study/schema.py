@@ -23,10 +23,12 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from pathlib import Path
-from typing import Annotated, Any
+from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
 
+from frp_assess.assess.wall_model import slenderness_problem
+from frp_assess.config.library import MASONRY, did_you_mean
 from frp_assess.config.messages import Loc, schema_problems
 from frp_assess.config.problems import raise_all
 from frp_assess.config.schema import (
@@ -173,6 +175,22 @@ class StudyFile(_Strict):
     unit_weight: Number = Field(
         default=18.0, ge=5, le=30, description="masonry unit weight w [kN/m³], 5-30"
     )
+    masonry: str | None = Field(
+        default=None,
+        description="masonry type of Circolare 2019 Tab. C8.5.I whose f_m sizes the compressed "
+        "zone of the crushing pivot (LC1: minimum, LC2/LC3: mean; the unit weight stays "
+        "unit_weight): " + ", ".join(MASONRY),
+    )
+    compressive_strength: Number | None = Field(
+        default=None,
+        gt=0,
+        le=100,
+        description="compressive strength f_m of the masonry [MPa], 0-100; wins over masonry "
+        "(neither: the lowest f_m of Tab. C8.5.I, as a project)",
+    )
+    knowledge_level: Literal["LC1", "LC2", "LC3"] = Field(
+        default="LC1", description="knowledge level: f_d = f_m/FC, FC = 1.35, 1.20, 1.00"
+    )
     chunk_size: int = Field(
         default=64, ge=1, le=100_000, description="cases per chunk written to disk [-]"
     )
@@ -195,6 +213,16 @@ class StudyFile(_Strict):
                 raise ValueError(f"alpha_deg: a rocking wall needs α < 45°, got {a!r}")
         return v
 
+    @field_validator("masonry")
+    @classmethod
+    def _known_masonry(cls, value: str | None) -> str | None:
+        if value is not None and value not in MASONRY:
+            raise ValueError(
+                f"unknown masonry {value!r}{did_you_mean(value, MASONRY)}; "
+                f"expected one of {', '.join(MASONRY)}"
+            )
+        return value
+
     @field_validator("position", "mechanism", "material")
     @classmethod
     def _distinct(cls, v: list[str], info: Any) -> list[str]:
@@ -209,8 +237,8 @@ class StudyFile(_Strict):
         if self.thickness is not None:
             for b in self.thickness:
                 for h in self.height:
-                    if b >= h:
-                        raise ValueError(f"thickness {b} m is not smaller than height {h} m")
+                    if (problem := slenderness_problem(b, h)) is not None:
+                        raise ValueError(problem)
         reinforced = [bool(self.ratio), bool(self.material), bool(self.position)]
         if any(reinforced[:2]) and not all(reinforced):
             raise ValueError(

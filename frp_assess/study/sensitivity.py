@@ -10,7 +10,8 @@ from __future__ import annotations
 import threading
 from pathlib import Path
 
-from frp_assess.study.run import StudyProgress, read_summary, run_study
+from frp_assess.study.rows import SummaryRow, read_summary
+from frp_assess.study.run import StudyProgress, run_study
 from frp_assess.study.schema import StudyFile
 
 #: variant name -> model options changed from the study's own
@@ -30,9 +31,9 @@ def run_sensitivity(
     jobs: int | None = None,
     progress: StudyProgress | None = None,
     cancel: threading.Event | None = None,
-) -> dict[str, dict[str, dict[str, str]]]:
+) -> dict[str, dict[str, SummaryRow]]:
     """{variant: {case label: summary row}} for every variant of :data:`VARIANTS`."""
-    out: dict[str, dict[str, dict[str, str]]] = {}
+    out: dict[str, dict[str, SummaryRow]] = {}
     for i, (name, change) in enumerate(VARIANTS.items()):
         variant = study.model_copy(update={"model": study.model.model_copy(update=change)})
         sub = out_dir / f"variant-{i}"

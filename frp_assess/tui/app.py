@@ -21,9 +21,8 @@ from textual.screen import Screen
 from textual.widget import Widget
 from textual.widgets import Button, Input, Select, TabbedContent, TabPane
 
-from frp_assess.api import default_out_dir
-from frp_assess.assess.inputs import UNREINFORCED
-from frp_assess.config import Project
+from frp_assess.app.assessment import UNREINFORCED, default_out_dir
+from frp_assess.config.schema import Project
 from frp_assess.errors import InputError
 from frp_assess.numbers import numerical_check_text, recommendation_text
 from frp_assess.tui.analysis_pane import AnalysisPane

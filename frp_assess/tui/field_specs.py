@@ -13,9 +13,9 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import Any
 
-from frp_assess.assess.code_check import CONFIDENCE_FACTORS
-from frp_assess.config import MASONRY
+from frp_assess.config.library import MASONRY
 from frp_assess.config.schema import (
+    CONFIDENCE_FACTORS,
     MIN_ARTIFICIAL_DURATION,
     AnalysisSpec,
     ArtificialRecords,
@@ -29,6 +29,7 @@ from frp_assess.config.schema import (
     ProjectInfo,
     RecordsSpec,
     SeismicSpec,
+    SiteCoordinates,
     TableSpectrum,
     WallSpec,
 )
@@ -169,13 +170,52 @@ BUILDING_FIELDS = in_variant(
 
 
 NTC, EC8 = Ntc2018Spectrum, Ec8Spectrum
+#: how the NTC 2018 spectrum is given: by a_g, F0, T_C* or by the site's coordinates
+NTC_INPUT = replace(
+    FieldSpec(
+        (*SP, "given_by"),
+        "Given by",
+        "choice",
+        choices=(("parameters a_g, F0, T_C*", "parameters"), ("site coordinates", "coordinates")),
+        width=28,
+        virtual=True,
+        selects="ntc",
+        help="NTC 2018 spectrum from its parameters a_g, F0, T_C*, or from the site's "
+        "coordinates (the NTC reference grid, docs/site-hazard.md).",
+    ),
+    variant=("spectrum", "ntc2018"),
+)
+#: what the coordinates start with when chosen (L'Aquila, V_N 50, class II, SLV)
+NTC_SITE_DEFAULTS: dict[str, Any] = {
+    "type": "ntc2018",
+    "site": {"latitude": 42.35, "longitude": 13.4},
+    "soil": "B",
+    "topography": "T1",
+}
+NTC_FIELDS: dict[str, tuple[FieldSpec, ...]] = {
+    "parameters": in_variant(
+        "ntc",
+        "parameters",
+        num((*SP, "ag"), "a_g", "g, on rock", NTC),
+        num((*SP, "F0"), "F0", "-", NTC),
+        num((*SP, "Tc_star"), "T_C*", "s", NTC),
+    ),
+    "coordinates": in_variant(
+        "ntc",
+        "coordinates",
+        num((*SP, "site", "latitude"), "Latitude", "°", SiteCoordinates),
+        num((*SP, "site", "longitude"), "Longitude", "°", SiteCoordinates),
+        num((*SP, "nominal_life"), "Nominal life V_N", "years", NTC, optional=True, default=50),
+        choice((*SP, "use_class"), "Use class", None, NTC, width=8, optional=True,
+               default="II"),
+        choice((*SP, "limit_state"), "Limit state", None, NTC, width=8, optional=True,
+               default="SLV"),
+    ),
+}  # fmt: skip
 SITE_FIELDS: dict[str, tuple[FieldSpec, ...]] = {
     "ntc2018": in_variant(
         "spectrum",
         "ntc2018",
-        num((*SP, "ag"), "a_g", "g, on rock", NTC),
-        num((*SP, "F0"), "F0", "-", NTC),
-        num((*SP, "Tc_star"), "T_C*", "s", NTC),
         choice((*SP, "soil"), "Soil", None, NTC, width=8),
         choice((*SP, "topography"), "Topography", None, NTC, width=8),
         num((*SP, "damping"), "Damping ξ", "-", NTC, optional=True),

@@ -17,7 +17,7 @@ from textual.containers import Horizontal, Vertical
 from textual.message import Message
 from textual.widgets import Button, Input, Label, Select, Static
 
-from frp_assess.assess.results import below_collapse
+from frp_assess.app.history import below_collapse
 from frp_assess.dynamics.options import IDA_TOLERANCE
 from frp_assess.results.model import AssessmentResult, RecordResult
 from frp_assess.tui.core.session import HistoryData, RunOutcome, case_history

@@ -12,7 +12,7 @@ from typing import Any, ClassVar
 from rich.text import Text
 from textual.binding import Binding, BindingType
 
-from frp_assess.config import FRP_MATERIALS
+from frp_assess.config.library import FRP_MATERIALS
 from frp_assess.config.schema import Intervention, SweepAxes, option_name
 from frp_assess.tui.core.model import expand_item, format_value, frp_mass_per_m
 from frp_assess.tui.fields import choice, items, num, text

@@ -10,7 +10,7 @@ from pathlib import Path
 
 from textual.message import Message
 
-from frp_assess.config import Project
+from frp_assess.config.schema import Project
 from frp_assess.errors import Cancelled, InputError
 from frp_assess.tui.core.session import (
     RunEvent,

@@ -17,7 +17,7 @@ from textual.binding import Binding, BindingType
 from textual.containers import Horizontal
 from textual.widgets import Button, Input, Label
 
-from frp_assess.config import FRP_MATERIALS
+from frp_assess.config.library import FRP_MATERIALS
 from frp_assess.config.messages import Loc
 from frp_assess.config.schema import MaterialSpec
 from frp_assess.tui.core.model import MISSING, format_value, get_path, set_path

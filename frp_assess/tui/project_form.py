@@ -15,8 +15,8 @@ from typing import Any
 from textual.dom import DOMNode
 from textual.widgets import Input, Select, Static
 
-from frp_assess.config import Project
 from frp_assess.config.messages import Loc, format_path
+from frp_assess.config.schema import Project
 from frp_assess.tui.core.model import (
     Problem,
     get_path,
@@ -33,6 +33,7 @@ from frp_assess.tui.field_specs import (
     ARTIFICIAL_DEFAULTS,
     BUILDING_DEFAULTS,
     DESIGN_DEFAULTS,
+    NTC_SITE_DEFAULTS,
     SECTIONS,
     SPECTRUM_DEFAULTS,
 )
@@ -48,11 +49,15 @@ from frp_assess.tui.site_pane import SitePane
 from frp_assess.tui.wall_pane import WallPane
 
 #: the variant groups: which fields are part of the data (spectrum type, record source...)
-VARIANT_GROUPS = ("spectrum", "records", "design", "building")
+VARIANT_GROUPS = ("spectrum", "ntc", "records", "design", "building")
+#: a variant group shown only inside a variant of another (NTC 2018 by parameters or by
+#: coordinates, inside the NTC 2018 spectrum)
+VARIANT_PARENTS: dict[str, tuple[str, str]] = {"ntc": ("spectrum", "ntc2018")}
 #: the blocks of the file each variant group stands for: left out of what is carried over
 #: from the file when the variant chosen is not the file's (another spectrum type...)
 VARIANT_BLOCKS: dict[str, tuple[Loc, ...]] = {
     "spectrum": (("seismic", "spectrum"),),
+    "ntc": (),  # its keys are all the fields' (an emptied ``site`` goes with them)
     "records": (("seismic", "records", "artificial"), ("seismic", "records", "files")),
     "design": (("design",),),
     "building": (("building",),),
@@ -70,6 +75,9 @@ def variant_of(data: Any, group: str) -> str:
     if group == "spectrum":
         t = get_path(data, ("seismic", "spectrum", "type"))
         return t if t in SPECTRUM_DEFAULTS else "ntc2018"
+    if group == "ntc":
+        spectrum = get_path(data, ("seismic", "spectrum"), {})
+        return "coordinates" if isinstance(spectrum, dict) and "site" in spectrum else "parameters"
     if group == "records":
         recs = get_path(data, ("seismic", "records"), {})
         return "files" if isinstance(recs, dict) and "files" in recs else "artificial"
@@ -82,6 +90,9 @@ def variant_defaults(group: str, value: str) -> dict[str, Any]:
     """The data shown by the fields of a variant the project does not use."""
     if group == "spectrum":
         return {"seismic": {"spectrum": SPECTRUM_DEFAULTS[value]}}
+    if group == "ntc":
+        default = NTC_SITE_DEFAULTS if value == "coordinates" else SPECTRUM_DEFAULTS["ntc2018"]
+        return {"seismic": {"spectrum": default}}
     if group == "records":
         return {"seismic": {"records": {"artificial": ARTIFICIAL_DEFAULTS}}}
     if group == "building":
@@ -116,6 +127,7 @@ class ProjectForm:
         self.variants: dict[str, str] = {"spectrum": "ntc2018", "records": "artificial"}
         self.variants["design"] = "off"
         self.variants["building"] = "off"
+        self.variants["ntc"] = "parameters"
         #: the project data as opened, and its variants: what no field or table edits (the
         #: ``bars:`` block, say) is carried from it into the data unchanged
         self.opened_data: dict[str, Any] = {}
@@ -162,7 +174,7 @@ class ProjectForm:
                     row.set_value(self.variants[spec.selects])
                     continue
                 source = data
-                if spec.variant is not None and self.variants[spec.variant[0]] != spec.variant[1]:
+                if spec.variant is not None and not self.variant_on(spec.variant):
                     source = variant_defaults(*spec.variant)
                 row.set_value(get_path(source, spec.path))
         files = get_path(data, ("seismic", "records", "files"), [])
@@ -206,7 +218,7 @@ class ProjectForm:
             spec = row.spec
             if spec.virtual:
                 continue
-            if spec.variant is not None and self.variants[spec.variant[0]] != spec.variant[1]:
+            if spec.variant is not None and not self.variant_on(spec.variant):
                 continue
             set_path(data, spec.path, row.data_value())
         if self.variants["records"] == "files":
@@ -242,8 +254,16 @@ class ProjectForm:
 
     def active(self, row: FieldRow) -> bool:
         """Whether the row is part of the data (its variant is the one chosen)."""
-        v = row.spec.variant
-        return v is None or self.variants[v[0]] == v[1]
+        return self.variant_on(row.spec.variant)
+
+    def variant_on(self, variant: tuple[str, str] | None) -> bool:
+        """Whether ``variant`` (group, value) is chosen, and so is its parent's, if any."""
+        if variant is None:
+            return True
+        group, value = variant
+        if self.variants.get(group) != value:
+            return False
+        return self.variant_on(VARIANT_PARENTS.get(group))
 
     def show_problems(self, problems: list[Problem]) -> None:
         """Each problem under its field, in its table, or in its section; ✗ on the tabs."""
@@ -278,7 +298,7 @@ class ProjectForm:
 
     def show_derived(self, data: dict[str, Any], project: Project | None) -> None:
         """Derived wall values, spectrum preview, FRP quantities and record summary."""
-        wall = wall_derived(data.get("wall"))
+        wall = wall_derived(data.get("wall"), data.get("analysis"), data.get("code_check"))
         spectrum = spectrum_preview(get_path(data, ("seismic", "spectrum")))
         pga = None if isinstance(spectrum, str) else spectrum.pga_g
         n_options = None if project is None else len(project.expand_interventions())

@@ -9,7 +9,7 @@ from textual.app import ComposeResult
 from textual.containers import Vertical, VerticalScroll
 from textual.widgets import Static
 
-from frp_assess.config import Project
+from frp_assess.config.schema import Project
 from frp_assess.tui.core.project_info import records_summary
 from frp_assess.tui.field_specs import ARTIFICIAL_FIELDS, RECORD_SOURCE, SCALE_FIELD
 from frp_assess.tui.fields import FieldRow, section_error

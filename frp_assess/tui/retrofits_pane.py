@@ -10,7 +10,7 @@ from textual.app import ComposeResult
 from textual.containers import Vertical
 from textual.widgets import Static
 
-from frp_assess.config import Project
+from frp_assess.config.schema import Project
 from frp_assess.tui.core.project_info import option_rows, retrofits_summary
 from frp_assess.tui.interventions import InterventionsEditor
 from frp_assess.tui.literal import literal

@@ -10,12 +10,21 @@ from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.widgets import Static
 
-from frp_assess.tui.field_specs import SITE_FIELDS, SITE_TYPE, T1_FIELD
+from frp_assess.tui.field_specs import NTC_FIELDS, NTC_INPUT, SITE_FIELDS, SITE_TYPE, T1_FIELD
 from frp_assess.tui.fields import FieldRow, section_error
 from frp_assess.tui.plots import PlotView, Rule, Series
 
 #: the preview's period range [s]
 T_MAX = 4.0
+
+
+def ntc_parameters(spectrum: Any) -> str:
+    """The line 'a_g = … g, F0 = …, T_C* = … s' of an NTC 2018 spectrum (derived from the
+    coordinates, or as typed), with a newline; "" for another kind of spectrum."""
+    p = getattr(spectrum, "parameters", None) or {}
+    if getattr(spectrum, "kind", "") != "ntc2018" or not {"ag", "F0", "Tc_star"} <= set(p):
+        return ""
+    return f"a_g = {p['ag']:.4f} g, F0 = {p['F0']:.3f}, T_C* = {p['Tc_star']:.3f} s\n"
 
 
 class SitePane(VerticalScroll):
@@ -29,6 +38,12 @@ class SitePane(VerticalScroll):
                 yield FieldRow(SITE_TYPE)
                 for kind, specs in SITE_FIELDS.items():
                     with Vertical(classes="variant", id=f"var-spectrum-{kind}"):
+                        if kind == "ntc2018":  # by parameters or by coordinates
+                            yield FieldRow(NTC_INPUT)
+                            for given_by, ntc_specs in NTC_FIELDS.items():
+                                with Vertical(classes="variant", id=f"var-ntc-{given_by}"):
+                                    for spec in ntc_specs:
+                                        yield FieldRow(spec)
                         for spec in specs:
                             yield FieldRow(spec)
                 yield FieldRow(T1_FIELD)
@@ -77,6 +92,7 @@ class SitePane(VerticalScroll):
                 ("a_g·S = ", "bold cyan"),
                 (f"{spectrum.pga_g:.4f} g", "bold"),
                 (f"   plateau {spectrum.plateau_g:.4f} g\n", ""),
+                (ntc_parameters(spectrum), ""),
                 (corners, "dim"),
             )
         )

@@ -79,7 +79,11 @@ def derived_wall_table(
     t.add_row("α", f"{wall.alpha_deg:.3f}°", f"{wall.alpha:.4f} rad")
     t.add_row("R", f"{wall.R:.3f} m", "half diagonal")
     t.add_row("p", f"{wall.p:.3f} rad/s", "frequency")
-    t.add_row("a_RM", f"{wall.a_rm:.4f} g", "g·tan α")
+    if wall.pivot == "crushing":
+        t.add_row("x_W", f"{wall.depth * 1e3:.0f} mm", "W on 0.85·f_d")
+        t.add_row("a_RM", f"{wall.a_rm:.4f} g", "g·(B − x_W)/H")
+    else:
+        t.add_row("a_RM", f"{wall.a_rm:.4f} g", "g·tan α")
     t.add_row("mass", f"{wall.mass:.0f} kg/m", "per metre")
     t.add_row("w", f"{wall.unit_weight:g} kN/m³", "unit weight")
     if pga_g is not None:

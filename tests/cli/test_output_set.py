@@ -96,7 +96,7 @@ def test_failed_pdf_keeps_the_previous_set(
     assert main(["run", str(project), "--out", str(out), "--jobs", "1"]) == 0
     before = tree(out)
 
-    import frp_assess.api as api
+    import frp_assess.app.report as api
 
     def broken(results: dict, path: Path) -> bool:
         path.write_bytes(b"%PDF half")

@@ -72,7 +72,10 @@ def test_open_edit_derived_values_and_validation_messages(small_project: Path):
             # a change updates the derived values as it is typed
             await type_into(pilot, "#f-wall-thickness-control", "0.4")
             assert "7.595°" in plain(derived)
-            assert "0.1333 g" in plain(derived)  # a_RM = tan α
+            # a_RM = (B − x_W)/H about the crushing pivot (the run's model): solid brick and
+            # lime mortar, Circolare 2019 Tab. C8.5.I f_m = 2.6 MPa, LC1 FC = 1.35,
+            # x_W = 18 kN/m³·0.4·3 / (0.85·2.6/1.35 MPa) = 13.2 mm: (0.4 − 0.0132)/3 = 0.1289 g
+            assert "0.1289 g" in plain(derived)
             assert app.project is not None and app.project.wall.thickness == 0.4
 
             # thickness >= height: the loader's own message, under the field
@@ -102,7 +105,7 @@ def test_open_edit_derived_values_and_validation_messages(small_project: Path):
             assert app.project is not None
             assert app.project.seismic.spectrum.type == "ntc2018"
             assert "a_g·S = 0.3" in plain(app.query_one("#spectrum-info", Static))
-            await type_into(pilot, "#f-seismic-spectrum-ag-ntc2018-control", "2")
+            await type_into(pilot, "#f-seismic-spectrum-ag-parameters-control", "2")
             assert row_error(app, ("seismic", "spectrum", "ag")) == (
                 "expected a number in (0, 1.5], found 2"
             )

@@ -145,7 +145,14 @@ def test_derived_wall_values_are_the_dynamics_ones():
     assert d.alpha == pytest.approx(w.alpha)
     assert d.R == pytest.approx(w.R)
     assert d.p == pytest.approx(w.p)
-    assert d.a_rm == pytest.approx(0.4 / 3.0)
+    # pivot: crushing (the default): rubble stone LC1, f_d = 1.0/1.35 MPa, W = 22.8 kN/m,
+    # x_W = 22.8/(0.85·740.7) = 0.036212 m, a_RM = (B − x_W)/H (tests/assess/test_wall_model.py)
+    assert d.a_rm == pytest.approx((0.4 - 0.036212) / 3.0, abs=1e-6)
+    edge = wall_derived(
+        {"thickness": 0.4, "height": 3.0, "masonry": "rubble-stone", "mechanism": "two-sided"},
+        {"pivot": "edge"},
+    )
+    assert not isinstance(edge, str) and edge.a_rm == pytest.approx(0.4 / 3.0)
     assert d.alpha_deg == pytest.approx(math.degrees(w.alpha))
     bad = wall_derived({"thickness": 4, "height": 3.0, "unit_weight": 18, "mechanism": "one-sided"})
     assert isinstance(bad, str) and "thickness" in bad

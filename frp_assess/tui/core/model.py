@@ -9,7 +9,6 @@ the file) and the whole dict is validated by the loader's own models and message
 from __future__ import annotations
 
 import copy
-import math
 import re
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
@@ -18,14 +17,18 @@ from typing import Any
 
 from pydantic import TypeAdapter, ValidationError
 
-from frp_assess.config import FRP_MATERIALS, FrpMaterial, Project, validate_data
-from frp_assess.config.loader import check_record_files, parse_yaml
+from frp_assess.app.preview import WallDerived, elastic_spectrum, frp_mass_per_metre
+from frp_assess.app.preview import wall_derived as wall_preview
+from frp_assess.app.project import check_record_files, parse_yaml, validate_data
+from frp_assess.config.library import FRP_MATERIALS, FrpMaterial
 from frp_assess.config.messages import Loc, describe, format_path, locate
 from frp_assess.config.schema import (
     MaterialSpec,
+    Project,
     Spectrum,
     WallSpec,
 )
+from frp_assess.dynamics.options import PIVOT
 from frp_assess.errors import InputError
 
 
@@ -233,34 +236,28 @@ def record_file_problem(project: Project, base_dir: Path) -> Problem | None:
 
 
 # ------------------------------------------------------------------------ derived values
-@dataclass(frozen=True)
-class WallDerived:
-    """Derived constants of the wall (per metre of length; docs/model.md §1)."""
+def wall_derived(wall: Any, analysis: Any = None, code_check: Any = None) -> WallDerived | str:
+    """The derived constants of the unreinforced wall's model, or the loader's message if the
+    ``wall`` block is invalid.
 
-    alpha: float  #: slenderness α [rad]
-    R: float  #: half diagonal [m]  # noqa: N815
-    p: float  #: frequency parameter [rad/s]
-    a_rm: float  #: rocking activation acceleration tan α [g]
-    mass: float  #: [kg/m]
-    unit_weight: float  #: [kN/m³]
-
-    @property
-    def alpha_deg(self) -> float:
-        """α [°]."""
-        return math.degrees(self.alpha)
-
-
-def wall_derived(wall: Any) -> WallDerived | str:
-    """The derived constants of the ``wall`` block, or the loader's message if it is invalid."""
-    from frp_assess.dynamics.units import wall_from_practice
-
+    The model is the one ``run`` builds: ``analysis.pivot`` and the masonry's f_d
+    (``wall.masonry`` or ``wall.compressive_strength`` over the FC of
+    ``code_check.knowledge_level``); a value of those two blocks that is not valid yet counts
+    as its default.
+    """
     try:
         spec = WallSpec.model_validate(wall)
     except ValidationError as err:
         path, message = describe(WallSpec, err.errors(include_url=False)[0])
         return f"{format_path(('wall', *path))}: {message}"
-    w = wall_from_practice(spec.thickness, spec.height, spec.unit_weight_kn)
-    return WallDerived(w.alpha, w.R, w.p, w.a_rm_g, w.mass, spec.unit_weight_kn)
+    pivot = analysis.get("pivot") if isinstance(analysis, Mapping) else None
+    pivot = pivot if pivot in PIVOT.choices else PIVOT.default
+    level = code_check.get("knowledge_level") if isinstance(code_check, Mapping) else None
+    level = level if level in ("LC1", "LC2", "LC3") else "LC1"
+    try:
+        return wall_preview(spec, pivot, level)
+    except InputError as exc:
+        return f"wall.thickness: {exc.message}"
 
 
 _SPECTRUM: TypeAdapter[Any] = TypeAdapter(Spectrum)
@@ -269,15 +266,13 @@ _SPECTRUM: TypeAdapter[Any] = TypeAdapter(Spectrum)
 def spectrum_preview(spec: Any) -> Any:
     """The :class:`~frp_assess.motions.ElasticSpectrum` of a ``seismic.spectrum`` block, or
     a message (text) if the block is invalid."""
-    from frp_assess.assess.from_project import spectrum_of
-
     try:
         model = _SPECTRUM.validate_python(spec)
     except ValidationError as err:
         e = err.errors(include_url=False)[0]
         return f"spectrum: {e['msg']}"
     try:
-        return spectrum_of(model)
+        return elastic_spectrum(model)
     except (InputError, ValueError) as exc:
         return f"spectrum: {exc}"
 
@@ -312,24 +307,13 @@ def frp_mass_per_m(
 ) -> float | None:
     """Installed FRP [kg per metre of wall] of one option (both faces when external), or None
     when the wall, the material or the ratio is not valid yet."""
-    from frp_assess.assess.from_project import material_of
-    from frp_assess.assess.inputs import Costs
-    from frp_assess.assess.quantities import frp_quantity
-
     if isinstance(wall, str) or material is None or position not in ("centred", "external"):
         return None
     if isinstance(ratio, bool) or not isinstance(ratio, int | float) or not 0 < ratio <= 20:
         return None
-    q = frp_quantity(
-        float(wall_data["thickness"]),
-        float(wall_data["height"]),
-        1.0,
-        material_of(material),
-        position,
-        float(ratio),
-        Costs(),
+    return frp_mass_per_metre(
+        float(wall_data["thickness"]), float(wall_data["height"]), material, position, float(ratio)
     )
-    return q.mass_per_m
 
 
 def expand_item(item: Any) -> list[tuple[str, str, Any]]:

@@ -5,9 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from frp_assess.api import new_project_text
-from frp_assess.config import load_project_text, project_data
-from frp_assess.config.loader import parse_yaml
+from frp_assess.app.project import load_project_text, new_project_text, parse_yaml, project_data
 from frp_assess.errors import InputError
 
 

@@ -1,17 +1,22 @@
 """Progress of a run per case, without Textual.
 
-:func:`frp_assess.api.run_assessment` names every (case, record) IDA as it finishes through
-its ``case_progress`` callback (cache hits of an earlier run first, as they count as done);
-:class:`CaseProgress` turns those calls into per-case counts.  The callback comes from the
-worker threads, so the counts are guarded by a lock.
+:func:`frp_assess.app.assessment.run_assessment` names every (case, record) IDA as it
+finishes through its ``case_progress`` callback (cache hits of an earlier run first, as they
+count as done); :class:`CaseProgress` turns those calls into per-case counts.  The callback
+comes from the worker threads, so the counts are guarded by a lock.
 """
 
 from __future__ import annotations
 
 import threading
 from dataclasses import dataclass
+from typing import Protocol
 
-from frp_assess.assess.inputs import AssessmentInputs
+
+class HasCases(Protocol):
+    """What names the cases of a run (the assessment inputs, or a prepared run's)."""
+
+    def case_names(self) -> list[str]: ...
 
 
 @dataclass(frozen=True)
@@ -26,11 +31,11 @@ class CaseCount:
 class CaseProgress:
     """Per-case counts of finished IDAs of a run.
 
-    The cases are those of :func:`~frp_assess.api.run_assessment`, in its order: the
-    unreinforced wall, then every option of ``inputs.options``.
+    The cases are those of :func:`~frp_assess.app.assessment.run_assessment`, in its order:
+    the unreinforced wall, then every option of ``inputs.options``.
     """
 
-    def __init__(self, inputs: AssessmentInputs, n_records: int):
+    def __init__(self, inputs: HasCases, n_records: int):
         self.names = inputs.case_names()
         self.per_case = n_records
         self._done = [0] * len(self.names)

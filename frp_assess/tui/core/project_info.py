@@ -2,48 +2,16 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from frp_assess.app.preview import OptionRow, design_value_rule, option_rows
+from frp_assess.config.schema import Project
 
-from frp_assess.assess.from_project import material_of
-from frp_assess.assess.inputs import Costs
-from frp_assess.assess.quantities import frp_quantity
-from frp_assess.assess.runner import design_value_rule
-from frp_assess.config import Project
-
-
-@dataclass(frozen=True)
-class OptionRow:
-    """One retrofit option the run will compare, with its FRP quantity and cost."""
-
-    name: str
-    mass_per_m: float  #: FRP mass per metre of wall length [kg/m]
-    mass: float  #: FRP mass over the wall length [kg]
-    cost: float  #: FRP and installation cost [currency]
+__all__ = ["OptionRow", "option_rows", "record_count", "records_summary", "retrofits_summary"]
 
 
 def record_count(project: Project) -> int:
     """How many records the run uses (artificial ones or files)."""
     recs = project.seismic.records
     return recs.artificial.count if recs.artificial is not None else len(recs.files or [])
-
-
-def option_rows(project: Project) -> list[OptionRow]:
-    """The options after expanding sweeps, with their quantities (wall length L)."""
-    w, table = project.wall, project.material_table()
-    costs = Costs(str(project.costs.currency), project.costs.installation_per_metre)
-    rows = []
-    for o in project.expand_interventions():
-        q = frp_quantity(
-            w.thickness,
-            w.height,
-            w.length,
-            material_of(table[o.material]),
-            o.position,
-            o.ratio,
-            costs,
-        )
-        rows.append(OptionRow(str(o.name), q.mass_per_m, q.mass, q.cost))
-    return rows
 
 
 def retrofits_summary(project: Project | None) -> str:

@@ -1,0 +1,429 @@
+"""Prepare and run an assessment; show the last run again.
+
+:func:`run_assessment` takes validated :class:`~frp_assess.assess.inputs.AssessmentInputs`,
+runs everything (records, cached parallel IDAs, ranking, sensitivity, design search, the
+code's checks), writes the results directory as one set (:func:`frp_assess.app.report.
+write_outputs`) and returns the typed results (:class:`~frp_assess.results.model.
+AssessmentResult`, docs/results-json.md).  :func:`prepare_run`, :func:`run_prepared` and
+:func:`load_previous` do the same from a project being edited (the TUI).  Progress and
+cancellation are plain callables and :class:`threading.Event`, never UI objects.
+"""
+
+from __future__ import annotations
+
+import datetime as _dt
+import os
+import threading
+from collections.abc import Callable, Sequence
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+from frp_assess.app.report import write_outputs
+from frp_assess.assess.cache import IdaCache, cache_file, record_digest, task_key
+from frp_assess.assess.code_check import simple_overturning_check
+from frp_assess.assess.floor_input import floor_record, floor_spectra
+from frp_assess.assess.from_project import inputs_from_project, load_inputs
+from frp_assess.assess.inputs import UNREINFORCED, AssessmentInputs, Material
+from frp_assess.assess.kinematic_checks import (
+    IdaSummary,
+    floor_ratio,
+    ida_confidence_factor,
+    kinematic_checks,
+)
+from frp_assess.assess.results import (
+    below_collapse,
+    build_results,
+    case_result,
+    history_run,
+    rank_cases,
+)
+from frp_assess.assess.runner import (
+    DesignResult,
+    IdaRunner,
+    design_search,
+    summarise,
+)
+from frp_assess.assess.seismic import SeismicInput, build_records
+from frp_assess.assess.sensitivity import sensitivity
+from frp_assess.assess.verification import verify
+from frp_assess.config import Project
+from frp_assess.errors import Cancelled, InputError
+from frp_assess.motions import ComplianceReport
+from frp_assess.results.json_io import from_json
+from frp_assess.results.model import (
+    AssessmentResult,
+    CaseResult,
+    Governing,
+    Sensitivity,
+    SensitivityRow,
+)
+
+__all__ = [
+    "CACHE_DIR",
+    "UNREINFORCED",
+    "AssessmentInputs",
+    "ComplianceReport",
+    "PairDone",
+    "PreparedRun",
+    "Progress",
+    "RunOutcome",
+    "SOURCE_DATE_EPOCH",
+    "RunStats",
+    "SeismicInput",
+    "default_out_dir",
+    "governing_histories",
+    "inputs_from_project",
+    "load_inputs",
+    "load_previous",
+    "missing_idas",
+    "prepare_records",
+    "prepare_run",
+    "run_assessment",
+    "run_date",
+    "run_prepared",
+]
+
+#: progress(stage, done, total); stages: "records", "ida", "verify", "sensitivity",
+#: "design", "checks", "writing"
+Progress = Callable[[str, int, int], None]
+#: case_progress(case_index, record_index): one (case, record) IDA of the "ida" stage finished
+#: (case 0 is the unreinforced wall); called from the worker threads
+PairDone = Callable[[int, int], None]
+
+CACHE_DIR = ".cache"
+
+
+@dataclass(frozen=True)
+class RunStats:
+    computed: int  #: (case, record) IDAs computed in this run
+    reused: int  #: (case, record) IDAs taken from the cache
+    out_dir: Path
+
+
+def _noop(stage: str, done: int, total: int) -> None:
+    return None
+
+
+#: seconds since 1970-01-01 UTC that fix the date of a run (reproducible-builds.org)
+SOURCE_DATE_EPOCH = "SOURCE_DATE_EPOCH"
+
+
+def run_date() -> str:
+    """The ISO date (``YYYY-MM-DD``, UTC) a run records as ``created``: the day of
+    ``SOURCE_DATE_EPOCH`` [s since 1970-01-01 UTC] when that variable is set (the
+    reproducible-builds convention: same input, same bytes), else today."""
+    epoch = os.environ.get(SOURCE_DATE_EPOCH, "")
+    if not epoch:
+        return _dt.date.today().isoformat()
+    try:
+        when = _dt.datetime.fromtimestamp(int(epoch), tz=_dt.UTC)
+    except (ValueError, OverflowError, OSError):
+        raise InputError(
+            f"expected whole seconds since 1970-01-01 UTC, found {epoch!r}",
+            key=SOURCE_DATE_EPOCH,
+        ) from None
+    return when.date().isoformat()
+
+
+def prepare_records(inputs: AssessmentInputs) -> SeismicInput:
+    """Generate or read the records and check them (the first stage of a run)."""
+    return build_records(inputs)
+
+
+def run_assessment(
+    inputs: AssessmentInputs,
+    out_dir: Path,
+    *,
+    jobs: int | None = None,
+    progress: Progress | None = None,
+    case_progress: PairDone | None = None,
+    cancel: threading.Event | None = None,
+    seismic: SeismicInput | None = None,
+    created: str | None = None,
+    pdf: bool = True,
+    write: bool = True,
+) -> tuple[AssessmentResult, RunStats]:
+    """Run the assessment and write ``out_dir``; returns (results, stats).
+
+    ``progress`` reports each stage overall; ``case_progress`` additionally names every
+    (case, record) IDA of the "ida" stage as it finishes, for per-case progress bars.
+    ``write=False`` returns the results without writing the result files (the cache is
+    still read and filled): how the TUI shows the last run again when it opens a project.
+
+    Finished (case, record) IDAs are cached in ``out_dir/.cache`` as they complete, so a
+    cancelled run (:class:`~frp_assess.errors.Cancelled`) loses nothing; result files are
+    only written once everything is computed, as one set (:func:`write_outputs`, which
+    locks the folder; ``frp-assess run`` holds that lock for the whole run).
+    """
+    report = progress or _noop
+    created = created or run_date()  # a bad SOURCE_DATE_EPOCH stops here, before any work
+    out_dir = Path(out_dir)
+    if seismic is None:
+        report("records", 0, 1)
+        seismic = build_records(inputs)
+        report("records", 1, 1)
+    records = seismic.records
+    names = [r.name for r in records]
+    demand = inputs.spectrum.pga_g
+    runner = IdaRunner(records, inputs, IdaCache(out_dir / CACHE_DIR), jobs=jobs, cancel=cancel)
+
+    models = inputs.case_models()
+    all_results = runner.run(
+        models, progress=lambda d, n: report("ida", d, n), on_pair=case_progress
+    )
+    numerical_check = None
+    if inputs.verify:
+        numerical_check = verify(
+            runner,
+            models,
+            all_results,
+            inputs.ida.tolerance,
+            progress=lambda d, n: report("verify", d, n),
+        )
+    # q = a_dyn / a_RM of each case's own model (about its pivot: docs/model.md §1.1)
+    summaries = [
+        summarise(r, inputs.ida.max_multiplier, m.a_rm_g)
+        for m, r in zip(models, all_results, strict=True)
+    ]
+    urm_design = summaries[0].design_a_dyn
+    options = [None, *inputs.options]
+    # FC divides the IDA capacity (code_check.fc_in_ida): capacity/demand = a_dyn/(FC·a_g·S)
+    fc = ida_confidence_factor(inputs.code_check)
+    # the floor spectra at the wall's base, once (a wall above ground only)
+    spectra = (
+        None
+        if inputs.building is None
+        else floor_spectra(records, inputs.spectrum, inputs.building, floors=runner.motions)
+    )
+    floor_pga = None if spectra is None else spectra.floor_pga
+    cases, recommended = rank_cases(
+        [
+            case_result(inputs, o, m, s, names, demand, urm_design, fc=fc, floor_pga=floor_pga)
+            for o, m, s in zip(options, models, summaries, strict=True)
+        ],
+        inputs.target,
+    )
+    report("sensitivity", 0, 1)
+    focus = next((i for i, c in enumerate(cases) if c.rank == 1), 0)
+    # the same cache, its own counts: RunStats reports the assessment's IDAs
+    sens_runner = IdaRunner(records, inputs, runner.cache, jobs=jobs, cancel=cancel)
+    conventions = Sensitivity(
+        case=cases[focus].name,
+        rows=tuple(
+            SensitivityRow(**asdict(row))
+            for row in sensitivity(
+                sens_runner, models[focus], fc * demand, inputs.ida.max_multiplier
+            )
+        ),
+    )
+    report("sensitivity", 1, 1)
+
+    design: list[DesignResult] | None = None
+    if inputs.design is not None:
+        pairs = [(m, p) for m in inputs.design.materials for p in inputs.design.positions]
+        design = []
+        for k, (mat, pos) in enumerate(pairs):
+            report("design", k, len(pairs))
+            design.append(design_search(runner, inputs, mat, pos, fc * demand))
+        report("design", len(pairs), len(pairs))
+
+    report("checks", 0, 1)
+    # the code's checks; the IDA's a_dyn passed in, only the time-history check runs the model
+    checks = kinematic_checks(
+        inputs,
+        records=records,
+        ida={
+            c.name: IdaSummary(s.mean_a_dyn, s.min_a_dyn, len(records))
+            for c, s in zip(cases, summaries, strict=True)
+        },
+        building=inputs.building,
+    )
+    report("checks", 1, 1)
+    governing = governing_histories(inputs, cases, records, all_results, recommended)
+    materials: dict[str, Material] = {}
+    for o in inputs.options:
+        materials.setdefault(o.material.name, o.material)
+    if inputs.design is not None:
+        for mat in inputs.design.materials:
+            materials.setdefault(mat.name, mat)
+    results = build_results(
+        inputs=inputs,
+        seismic=seismic,
+        cases=cases,
+        recommended=recommended,
+        # above ground the linear check's demand is a_Z, the floor's peak acceleration at Z
+        check=simple_overturning_check(
+            inputs.thickness,
+            inputs.height,
+            demand * floor_ratio(inputs.spectrum, inputs.building),
+            inputs.code_check.knowledge_level,
+            inputs.code_check.behaviour_factor,
+        ),
+        design=design,
+        governing=governing,
+        materials=materials,
+        created=created,
+        numerical_check=numerical_check,
+        sensitivity=conventions,
+        floor_spectra=spectra,
+        kinematic_checks=checks,
+    )
+    if write:
+        report("writing", 0, 1)
+        write_outputs(results, seismic, out_dir, pdf=pdf)
+        report("writing", 1, 1)
+    return results, RunStats(runner.computed, runner.reused, out_dir)
+
+
+def governing_histories(
+    inputs: AssessmentInputs,
+    cases: Sequence[CaseResult],
+    records: list,
+    all_results: list,
+    recommended: str | None,
+) -> Governing | None:
+    """θ/α(t) and bar strain of the recommended option (else the unreinforced wall) under the
+    record that fails first, at the collapse multiplier and just below it."""
+    idx = next((i for i, c in enumerate(cases) if c.name == recommended), 0)
+    res = all_results[idx]
+    failing = [(r.collapse_multiplier, k) for k, r in enumerate(res) if r.collapse_multiplier]
+    if not failing:
+        return None
+    c, k = min(failing)
+    model = inputs.model_for(None if idx == 0 else inputs.options[idx - 1])
+    rec = floor_record(records[k], inputs.building)  # the motion the IDA ran
+    below = below_collapse(c, res[k].survivor_multiplier, inputs.ida.tolerance)
+    alpha = model.alpha  # θ/α about the model's pivot (the edge's α, or α' with crushing)
+    runs = (
+        history_run("collapse", c, model.run(rec.acc, rec.dt, c, history=True), alpha),
+        history_run("just below", below, model.run(rec.acc, rec.dt, below, history=True), alpha),
+    )
+    bars = model.rebars
+    return Governing(
+        case=cases[idx].name,
+        record=rec.name,
+        runs=runs,
+        rupture_strain=None if bars is None else bars.rupture_strain,
+    )
+
+
+def missing_idas(inputs: AssessmentInputs, seismic: SeismicInput, out_dir: Path) -> int:
+    """How many (case, record) IDAs of a run are not in ``out_dir``'s cache yet (0: the IDA
+    stage of a run computes nothing; design mode may still search new ratios, and a cache
+    written before the sensitivity table existed lacks its variants)."""
+    directory = Path(out_dir) / CACHE_DIR
+    hashes = [record_digest(r.acc, r.dt) for r in seismic.records]
+    return sum(
+        not cache_file(directory, task_key(m, h, inputs.ida, inputs.building)).is_file()
+        for m in inputs.case_models()
+        for h in hashes
+    )
+
+
+def default_out_dir(project_file: Path) -> Path:
+    """``<stem>-results/`` next to the project file."""
+    return project_file.with_name(f"{project_file.stem}-results")
+
+
+# ----------------------------------------------------------------------------------------------
+# A project being edited (the TUI): the same inputs, cache and result files as `run`.
+
+
+@dataclass(frozen=True)
+class PreparedRun:
+    """A project turned into assessment inputs, with its records generated or read and
+    checked: the first stage of a run, after which the cases and records are known."""
+
+    project: Project
+    inputs: AssessmentInputs
+    seismic: SeismicInput
+
+
+@dataclass(frozen=True)
+class RunOutcome:
+    """A finished run: what the results, the plots and the history viewer need."""
+
+    results: AssessmentResult
+    seismic: SeismicInput
+    inputs: AssessmentInputs
+    out_dir: Path
+    stats: RunStats
+    project: Project
+
+
+def prepare_run(
+    project: Project, base_dir: Path, input_file: str, *, progress: Progress | None = None
+) -> PreparedRun:
+    """The inputs of ``project`` (record paths relative to ``base_dir``; ``input_file`` is
+    the name results.json records) and its records (:func:`prepare_records`), reported as
+    the "records" stage (0 of 1 once the inputs are valid, 1 of 1 when the records are
+    ready)."""
+    report = progress or _noop
+    inputs = inputs_from_project(project, base_dir, input_file)
+    report("records", 0, 1)
+    seismic = prepare_records(inputs)
+    report("records", 1, 1)
+    return PreparedRun(project, inputs, seismic)
+
+
+def run_prepared(
+    prepared: PreparedRun,
+    out_dir: Path,
+    *,
+    cancel: threading.Event,
+    progress: Progress | None = None,
+    case_progress: PairDone | None = None,
+    jobs: int | None = None,
+) -> RunOutcome:
+    """Every IDA (cached in ``out_dir/.cache``), ranking and result files, report.pdf
+    included, as ``frp-assess run`` writes them.
+
+    Raises :class:`~frp_assess.errors.Cancelled` when ``cancel`` is set (finished IDAs stay
+    in the cache), :class:`~frp_assess.errors.InputError` for a problem the user can fix.
+    """
+    if cancel.is_set():
+        raise Cancelled("cancelled")
+    results, stats = run_assessment(
+        prepared.inputs,
+        out_dir,
+        jobs=jobs,
+        progress=progress,
+        case_progress=case_progress,
+        cancel=cancel,
+        seismic=prepared.seismic,
+        pdf=True,
+    )
+    return RunOutcome(
+        results, prepared.seismic, prepared.inputs, Path(out_dir), stats, prepared.project
+    )
+
+
+def load_previous(
+    project: Project,
+    base_dir: Path,
+    input_file: str,
+    out_dir: Path,
+    *,
+    cancel: threading.Event,
+    jobs: int | None = None,
+) -> RunOutcome | None:
+    """The last run into ``out_dir`` again, rebuilt from its cache for the project as it is.
+
+    No result file is written (a design-mode search may add IDAs to the cache).  None when
+    there was no run (no ``results.json``) or when some (case, record) IDA of the project is
+    not in the cache (the project changed since the run); the date of the results is that of
+    the stored run.
+    """
+    stored = Path(out_dir) / "results.json"
+    try:
+        created = from_json(stored.read_text(encoding="utf-8"), file=str(stored)).created
+    except (OSError, UnicodeDecodeError, InputError):  # none, or not readable as this version
+        return None
+    inputs = inputs_from_project(project, base_dir, input_file)
+    seismic = prepare_records(inputs)
+    if missing_idas(inputs, seismic, out_dir):
+        return None
+    results, stats = run_assessment(
+        inputs, out_dir, jobs=jobs, cancel=cancel, seismic=seismic, created=created, write=False
+    )
+    return RunOutcome(results, seismic, inputs, Path(out_dir), stats, project)

@@ -1,0 +1,123 @@
+"""The output set of a run, the PDF report and the export of a run to another folder.
+
+:func:`write_outputs` writes results.json, results.csv, spectra.csv, records/*.AT2 and
+report.pdf as one set (:mod:`frp_assess.output_set`); :func:`rebuild_report` makes the PDF
+again from a stored results.json (`frp-assess report`); :func:`export_run` writes a finished
+run into a folder the user picks (the TUI's export).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from frp_assess.errors import InputError
+from frp_assess.io_utils import atomic_write_text
+from frp_assess.motions import write_at2
+from frp_assess.output_set import FolderLock, check_out_file, staged_set
+from frp_assess.results.csv_files import results_csv, spectra_csv
+from frp_assess.results.json_io import to_json
+from frp_assess.results.model import AssessmentResult
+from frp_assess.text_safety import plain
+
+if TYPE_CHECKING:
+    from frp_assess.app.assessment import RunOutcome
+    from frp_assess.assess.seismic import SeismicInput
+
+__all__ = ["build_pdf", "export_run", "rebuild_report", "write_outputs"]
+
+
+def write_outputs(
+    results: AssessmentResult, seismic: SeismicInput, out_dir: Path, *, pdf: bool
+) -> None:
+    """Write the output set — results.json, results.csv, spectra.csv, records/*.AT2 and (if
+    ``pdf`` and available) report.pdf — as one set (:mod:`frp_assess.output_set`).
+
+    The folder is locked for the duration, the set is written into a fresh staging folder
+    inside ``out_dir`` and swapped in only once complete: any failure (disk full, an error in
+    the PDF, an interrupt) leaves the previous set as it was.  A record name that is not a
+    plain file name is refused (:class:`~frp_assess.errors.InputError`) before anything is
+    written.
+    """
+    for rec in seismic.records:
+        if not _is_plain_file_name(rec.name):
+            raise InputError(
+                f"record name {rec.name!r} cannot be a file name (no '/', '\\', '..', "
+                "leading dot or control characters)",
+                key="records",
+            )
+    with FolderLock(out_dir), staged_set(out_dir) as staging:
+        for rec in seismic.records:
+            write_at2(rec, staging / "records" / f"{rec.name}.AT2", f"{rec.name}: {rec.source}")
+        atomic_write_text(staging / "spectra.csv", spectra_csv(results))
+        atomic_write_text(staging / "results.csv", results_csv(results))
+        atomic_write_text(staging / "results.json", to_json(results))
+        if pdf:
+            build_pdf(results, staging / "report.pdf")
+
+
+def _is_plain_file_name(name: str) -> bool:
+    return (
+        bool(name)
+        and not name.startswith(".")
+        and "/" not in name
+        and "\\" not in name
+        and "\x00" not in name
+        and name == plain(name)
+        and len(name.encode("utf-8")) <= 200
+    )
+
+
+def build_pdf(results: AssessmentResult, path: Path) -> bool:
+    """Build the PDF report if the report package is installed; returns whether it did."""
+    try:
+        from frp_assess.report.document import build_report
+    except ImportError:
+        return False
+    build_report(results, path)
+    return True
+
+
+def export_run(outcome: RunOutcome, directory: Path) -> list[Path]:
+    """Write report.pdf, results.json/.csv, spectra.csv and records/ of a finished run into
+    ``directory``; returns the files and folders written."""
+    directory = Path(directory)
+    if directory.exists() and not directory.is_dir():
+        raise InputError(f"{directory} is a file, not a directory")
+    try:
+        write_outputs(outcome.results, outcome.seismic, directory, pdf=True)
+    except OSError as exc:
+        raise InputError(f"cannot write into {directory}: {exc.strerror or exc}") from None
+    names = ["report.pdf", "results.json", "results.csv", "spectra.csv", "records"]
+    return [directory / n for n in names if (directory / n).exists()]
+
+
+def rebuild_report(results_dir: Path, out: Path | None = None) -> Path:
+    """The PDF report of the stored run in ``results_dir`` (its results.json; no analysis is
+    rerun), written to ``out`` (default ``results_dir/report.pdf``); returns the file.
+
+    A results.json that breaks the report's contract is one located
+    :class:`~frp_assess.errors.InputError` and nothing is written; report.pdf inside the
+    results folder is a member of the run's output set and is replaced under its lock.
+    """
+    from frp_assess.report.document import (
+        CONTRACT_ERRORS,
+        build_report,
+        build_story,
+        contract_error,
+        load_results,
+    )
+
+    results_dir = Path(results_dir)
+    out = check_out_file(Path(out) if out is not None else results_dir / "report.pdf")
+    results = load_results(results_dir)  # InputError -> one line, exit 2
+    try:
+        story = build_story(results)  # a value that breaks the contract fails here
+        if out.resolve().parent == results_dir.resolve():
+            with FolderLock(results_dir, key="RESULTS_DIR"):
+                build_report(results, out, story=story)
+        else:
+            build_report(results, out, story=story)
+    except CONTRACT_ERRORS as exc:  # nothing written: build_report writes atomically
+        raise contract_error(exc, results_dir / "results.json") from None
+    return out

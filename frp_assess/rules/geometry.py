@@ -1,0 +1,46 @@
+"""The rectangular rocking block (SI units: m, rad; docs/model.md §1, paper Eqs. 2–5).
+
+A wall of thickness B and height H rocks about a base corner only if it is a block at all
+(finite sizes > 0) and taller than thick (B < H: slenderness α < 45°).
+"""
+
+from __future__ import annotations
+
+import math
+
+
+def size_problem(value: float, what: str = "size", unit: str = "m") -> str | None:
+    """Why a size is not a finite number > 0 (one line), ``None`` when it is."""
+    if isinstance(value, bool) or not (math.isfinite(value) and value > 0.0):
+        return f"expected {what} > 0 {unit}, found {value!r}"
+    return None
+
+
+def is_rocking_block(thickness: float, height: float) -> bool:
+    """Whether B [m] and H [m] make a rocking wall: both finite and > 0, and B < H."""
+    return size_problem(thickness) is None and size_problem(height) is None and thickness < height
+
+
+def slenderness_problem(thickness: float, height: float) -> str | None:
+    """Why B [m] ≥ H [m] is no rocking wall (one line), ``None`` when B < H."""
+    if thickness < height:
+        return None
+    return (
+        f"expected thickness < height for a rocking wall, found B = {thickness:g} m "
+        f">= H = {height:g} m"
+    )
+
+
+def slenderness(thickness: float, height: float) -> float:
+    """Slenderness α [rad], tan α = B/H."""
+    return math.atan2(thickness, height)
+
+
+def thickness_of(height: float, alpha: float) -> float:
+    """B = H·tan α [m] of the wall of height H [m] and slenderness α [rad]."""
+    return height * math.tan(alpha)
+
+
+def half_diagonal(thickness: float, height: float) -> float:
+    """R = ½·√(B² + H²) [m], centre of mass to a base corner."""
+    return 0.5 * math.hypot(thickness, height)
