@@ -32,18 +32,22 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "scripts"))
 sys.path.insert(0, str(HERE))
 
-from floor import FloorWall, floor_params, load  # noqa: E402
+from floor import Floor, FloorWall, floor_params, load  # noqa: E402
 from floor.scipy_events import run_unreinforced  # noqa: E402
 from make_example_records import synthetic  # noqa: E402
 
 from frp_assess.dynamics import IdaSettings, Rebars, RockingModel, Wall, ida  # noqa: E402
+from frp_assess.motions import Record  # noqa: E402
 
 H = 3.0
 B = H * math.tan(math.radians(7.5))
 W = 18e3  # N/m³
 F_D = 2.0e6  # Pa
 STEPS = (2e-3, 1e-3, 5e-4, 2.5e-4)  # [s]
-AGREE = 0.01
+C_GATE = 0.01  #: the issue's accuracy gate on collapse multipliers
+C_BAR = 2e-3  #: docs/model.md §4: C within 0.2 % at a 100x tighter tolerance
+PEAK_BAR = 1e-3  #: docs/model.md §4: peaks within 0.1 %
+PERTURBATION = 1e-6  #: relative change of the record that tests a result's conditioning
 
 
 def walls(f_d: float) -> list[tuple[str, RockingModel, FloorWall]]:
@@ -60,60 +64,96 @@ def walls(f_d: float) -> list[tuple[str, RockingModel, FloorWall]]:
     ]
 
 
+def floor_speed(
+    floor: Floor, fwall: FloorWall, h: float, records: list[Record]
+) -> tuple[float, list[float | None], list[float]]:
+    """(simulated s per CPU-s of the floor's IDAs, their C, a timing-free list) at step h."""
+    prm, a_rm = floor_params(fwall, h)
+    t0 = time.process_time()
+    runs = [floor.ida(r.acc, r.dt, prm, a_rm) for r in records]
+    cpu = time.process_time() - t0
+    simulated = sum(f.runs * r.duration for f, r in zip(runs, records, strict=True))
+    return simulated / cpu, [f.multiplier for f in runs], []
+
+
+def rel(a: float | None, b: float | None) -> float:
+    """Relative difference of two results (inf when one is missing)."""
+    if a is None or b is None:
+        return 0.0 if a is b else math.inf
+    return abs(a - b) / abs(b)
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--records", type=int, default=7, help="records of the set (default 7)")
     ap.add_argument(
         "--fd", type=float, default=F_D / 1e6, help="f_d [MPa] (default 2.0; inf: edge pivot)"
     )
+    ap.add_argument("--dt", type=float, default=0.005, help="sample interval [s] (default 0.005)")
+    ap.add_argument(
+        "--rtol", type=float, default=None, help="the kernel's tolerance (default: its default)"
+    )
     ap.add_argument("--no-scipy", action="store_true", help="skip the solve_ivp measurement")
     args = ap.parse_args()
     floor = load()
-    records = [synthetic(seed, pga_g=0.106) for seed in range(1, args.records + 1)]
+    records = [synthetic(seed, dt=args.dt, pga_g=0.106) for seed in range(1, args.records + 1)]
     print(f"{len(records)} records of {records[0].duration:.0f} s at dt = {records[0].dt} s")
     settings = IdaSettings()
     ok = True
     for label, model, fwall in walls(args.fd * 1e6):
+        if args.rtol is not None:
+            model = model.with_options(tolerance=args.rtol)
         ida(model, records[0].acc, records[0].dt, settings)  # compile / load numba's cache
         t0 = time.process_time()
         kernel = [ida(model, r.acc, r.dt, settings) for r in records]
-        cpu = time.process_time() - t0
-        simulated = sum(k.runs * r.duration for k, r in zip(kernel, records, strict=True))
-        speed_k = simulated / cpu
+        speed_k = sum(k.runs * r.duration for k, r in zip(kernel, records, strict=True)) / (
+            time.process_time() - t0
+        )
         tight = model.with_options(tolerance=model.options.tolerance / 100.0)
         ref = [ida(tight, r.acc, r.dt, settings).collapse_multiplier for r in records]
-        good = [
-            i
-            for i, (k, c) in enumerate(zip(kernel, ref, strict=True))
-            if k.collapse_multiplier and c and abs(k.collapse_multiplier - c) <= AGREE * c
+        # C is judged where the kernel's own answer does not move with its tolerance
+        good = [i for i, k in enumerate(kernel) if rel(k.collapse_multiplier, ref[i]) <= C_BAR]
+        half = [0.5 * (c or kernel[i].c0 * 100.0) for i, c in enumerate(ref)]
+        peak_ref = [
+            tight.run(r.acc, r.dt, c).max_rotation for r, c in zip(records, half, strict=True)
         ]
+        # a peak is judged where a change of the record by one part in a million
+        # (far below any accelerogram's precision) does not move it: rocking near its
+        # collapse boundary can be chaotic, and there no solver's peak means anything
+        nudged = [
+            tight.run(r.acc, r.dt, c * (1.0 + PERTURBATION)).max_rotation
+            for r, c in zip(records, half, strict=True)
+        ]
+        stable = [i for i in range(len(records)) if rel(nudged[i], peak_ref[i]) <= PEAK_BAR / 10]
+        peak_k = [
+            model.run(r.acc, r.dt, c).max_rotation for r, c in zip(records, half, strict=True)
+        ]
+        err_k = max((rel(peak_k[i], peak_ref[i]) for i in stable), default=0.0)
         print(
-            f"{label}: kernel {speed_k:,.0f} simulated s per CPU-s ({sum(k.runs for k in kernel)} "
-            f"runs); well-conditioned records {len(good)}/{len(records)}"
+            f"{label}: kernel {speed_k:,.0f} simulated s per CPU-s "
+            f"({sum(k.runs for k in kernel)} runs); C well-conditioned on {len(good)}/"
+            f"{len(records)} records, the peak at C/2 on {len(stable)}; largest peak error "
+            f"there {err_k:.1e}"
         )
         if floor is None:
             continue
         converged = None
         for h in STEPS:
-            prm, a_rm = floor_params(fwall, h)
-            t0 = time.process_time()
-            runs = [floor.ida(r.acc, r.dt, prm, a_rm) for r in records]
-            cpu_f = time.process_time() - t0
-            speed_f = sum(f.runs * r.duration for f, r in zip(runs, records, strict=True)) / cpu_f
-            agree = all(
-                runs[i].multiplier is not None
-                and abs(runs[i].multiplier - ref[i]) <= AGREE * ref[i]  # type: ignore[operator]
-                for i in good
-            )
+            speed_f, cs, _ = floor_speed(floor, fwall, h, records)
+            prm, _ = floor_params(fwall, h)
+            peaks = [floor.run(r.acc, r.dt, c, prm)[2] for r, c in zip(records, half, strict=True)]
+            err_f = max((rel(peaks[i], peak_ref[i]) for i in stable), default=0.0)
+            c_ok = all(rel(cs[i], ref[i]) <= C_GATE for i in good)
+            fine = c_ok and err_f <= PEAK_BAR
             print(
-                f"  floor RK4 h = {h * 1e3:g} ms: {speed_f:,.0f} simulated s per CPU-s, "
-                f"C within 1 % on the well-conditioned records: {'yes' if agree else 'no'}; "
-                f"kernel/floor = {speed_k / speed_f:.2f}"
+                f"  floor RK4 h = {h * 1e3:g} ms: {speed_f:,.0f} simulated s per CPU-s; C within "
+                f"{C_GATE:.0%}: {'yes' if c_ok else 'no'}; largest peak error at C/2 "
+                f"{err_f:.1e}; kernel/floor = {speed_k / speed_f:.2f}"
             )
-            if agree and converged is None:
+            if fine and converged is None:
                 converged = (h, speed_f)
         if converged is None:
-            print("  the floor did not converge at 0.25 ms")
+            print(f"  the floor did not converge at {STEPS[-1] * 1e3:g} ms")
             ok = False
             continue
         ratio = speed_k / converged[1]

@@ -135,16 +135,21 @@ class Floor:
         self._simulate.argtypes = [
             ctypes.POINTER(ctypes.c_double), ctypes.c_long, ctypes.c_double, ctypes.c_double,
             ctypes.POINTER(Params), ctypes.POINTER(ctypes.c_long),
+            ctypes.POINTER(ctypes.c_double),
         ]  # fmt: skip
 
     def run(
         self, acc: NDArray[np.float64], dt: float, scale: float, prm: Params
-    ) -> tuple[int, int]:
-        """(1 collapse / 0 none / -1 undecided, RK4 steps) of one time history."""
+    ) -> tuple[int, int, float]:
+        """(1 collapse / 0 none / -1 undecided, RK4 steps, peak |θ| [rad]) of one time history."""
         steps = ctypes.c_long(0)
+        peak = ctypes.c_double(0.0)
         ptr = acc.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
-        out = self._simulate(ptr, acc.shape[0], dt, scale, ctypes.byref(prm), ctypes.byref(steps))
-        return int(out), int(steps.value)
+        out = self._simulate(
+            ptr, acc.shape[0], dt, scale, ctypes.byref(prm), ctypes.byref(steps),
+            ctypes.byref(peak),
+        )  # fmt: skip
+        return int(out), int(steps.value), float(peak.value)
 
     def ida(
         self,
@@ -163,7 +168,7 @@ class Floor:
         total = [0, 0]
 
         def collapses(c: float) -> bool:
-            out, steps = self.run(acc, dt, c, prm)
+            out, steps, _ = self.run(acc, dt, c, prm)
             total[0] += 1
             total[1] += steps
             if out < 0:

@@ -106,10 +106,11 @@ static int cannot_fall(double th, double om, double s, int ip, int in, const Par
 /*
  * One time history under scale*acc (acc [m/s2] every dt [s]).  Returns 1 when the wall
  * collapses (falls or crushes its toe), 0 when it can no longer fall, -1 when the fate is not
- * certain after max_free seconds of free vibration.  *steps receives the RK4 steps taken.
+ * certain after max_free seconds of free vibration.  *steps receives the RK4 steps taken and
+ * *peak the largest |theta| at the ends of the steps and at the events [rad].
  */
 int floor_simulate(const double *acc, long n, double dt, double scale, const Params *P,
-                   long *steps)
+                   long *steps, double *peak)
 {
     double inv_g = scale / P->g;
     double p = sqrt(P->p2);
@@ -117,6 +118,7 @@ int floor_simulate(const double *acc, long n, double dt, double scale, const Par
     int resting = 1;
     int ip = P->bar_mode != 0, in = P->bar_mode != 0;
     long nsteps = 0;
+    double pk = 0.0;
     long n_free_max = (long)ceil(P->max_free / dt);
     int per = (int)ceil(dt / P->h - 1e-9);
     double hstep = dt / (per > 0 ? per : 1);
@@ -124,8 +126,8 @@ int floor_simulate(const double *acc, long n, double dt, double scale, const Par
     for (long i = 0;; i++) {
         int free_motion = i >= n - 1;
         if (free_motion) {
-            if (resting || cannot_fall(th, om, s, ip, in, P)) { *steps = nsteps; return 0; }
-            if (i - (n - 1) >= n_free_max) { *steps = nsteps; return -1; }
+            if (resting || cannot_fall(th, om, s, ip, in, P)) { *peak = pk; *steps = nsteps; return 0; }
+            if (i - (n - 1) >= n_free_max) { *peak = pk; *steps = nsteps; return -1; }
         }
         double ua = i < n ? acc[i] * inv_g : 0.0;
         double ub = i + 1 < n ? acc[i + 1] * inv_g : 0.0;
@@ -155,7 +157,8 @@ int floor_simulate(const double *acc, long n, double dt, double scale, const Par
             int ev = crossed(s * th1, on, P);
             if (ev == EV_NONE) {
                 th = th1; om = om1; x += hh;
-                if (free_motion && cannot_fall(th, om, s, ip, in, P)) { *steps = nsteps; return 0; }
+                if (fabs(th) > pk) pk = fabs(th);
+                if (free_motion && cannot_fall(th, om, s, ip, in, P)) { *peak = pk; *steps = nsteps; return 0; }
                 continue;
             }
             /* locate the event: the shortest sub-step that has crossed a level */
@@ -168,7 +171,8 @@ int floor_simulate(const double *acc, long n, double dt, double scale, const Par
             rk4(th, om, hi, u0, slope, s, k, kap, P, &th1, &om1);
             ev = crossed(s * th1, on, P);
             x += hi;
-            if (ev == EV_FALL || ev == EV_CRUSH) { *steps = nsteps; return 1; }
+            if (fabs(th1) > pk) pk = fabs(th1);
+            if (ev == EV_FALL || ev == EV_CRUSH) { *peak = pk; *steps = nsteps; return 1; }
             if (ev == EV_IMPACT) {
                 th = 0.0;
                 if (P->one_sided) om = -P->e_impact * om1;
@@ -181,7 +185,7 @@ int floor_simulate(const double *acc, long n, double dt, double scale, const Par
                 om = copysign(sqrt(om1 * om1 + 2.0 * P->rupture_energy), om1);
             }
             if (free_motion && (resting || cannot_fall(th, om, s, ip, in, P))) {
-                *steps = nsteps; return 0;
+                *peak = pk; *steps = nsteps; return 0;
             }
         }
     }
