@@ -202,7 +202,6 @@ def run(args: argparse.Namespace) -> int:
         return _run(args, inputs, out_dir)
 
 
-
 def activation_text(results: AssessmentResult) -> str:
     """``a_RM = … g`` [g] of the unreinforced wall's model, with the crushing pivot's depth x
     [mm] when the model turns about it (then a_RM = g·(B − x)/H, not g·tan α; docs/model.md
@@ -212,6 +211,7 @@ def activation_text(results: AssessmentResult) -> str:
     if piv is not None and piv.model_pivot == "crushing" and piv.pivot_shift > 0.0:
         text += f" about the crushing pivot (x = {piv.depth * 1000:.0f} mm)"
     return text
+
 
 def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> int:
     console = make_console()
