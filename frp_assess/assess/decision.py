@@ -54,7 +54,7 @@ DECISION_RULE = (
 RANKING_RULE = (
     "Options passing every deciding check first, cheapest first (then lightest); then the "
     "others by governing margin, highest first (a lower bound at its bound, ahead of an equal "
-    "exact value). Options the pivot check drops (docs/model.md §1.1) get no rank."
+    "exact value). Every option is ranked: none is dropped for the masonry at its base."
 )
 
 

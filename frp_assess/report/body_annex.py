@@ -9,7 +9,7 @@ from reportlab.lib.units import mm
 from frp_assess.report.body_front import position_words
 from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import cond_break, grid, h1, h2, markup
-from frp_assess.report.formats import TableData
+from frp_assess.report.formats import TableData, column_blocks
 from frp_assess.report.lang import Lang, short
 from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.text_safety import Markup
@@ -143,10 +143,10 @@ def annex(results: Results, lang: Lang) -> list[Block]:
         table = options_table(results, lang)
         out.append(grid(table, widths, wrap=(1,), numeric_from=2, small=True))
     out += [cond_break(60 * mm), h2("B.2  " + lang.t("annex.h.a_dyn"))]
-    names = len(results.records)
-    other = (174 - 48) / max(names, 1)
-    out.append(grid(a_dyn_table(results, lang), [48 * mm] + [other * mm] * names, wrap=(0,),
-                    small=True))  # fmt: skip
+    for block in column_blocks(a_dyn_table(results, lang)):
+        names = len(block.header) - 1
+        other = (174 - 48) / max(names, 1)
+        out.append(grid(block, [48 * mm] + [other * mm] * names, wrap=(0,), small=True))
     out.append(markup(lang.t("annex.nc.note"), "caption"))
     out += [cond_break(60 * mm), h2("B.3  " + lang.t("annex.h.scatter"))]
     out.append(grid(scatter_table(results, lang), [x * mm for x in (62, 34, 24, 40)], wrap=(0,),

@@ -28,6 +28,30 @@ class TableData:
     rows: list[list[str]]
 
 
+#: most record columns one table of a page's width holds; more are split into several tables
+RECORD_COLUMNS = 10
+
+
+def column_blocks(
+    table: TableData, keep: int = 1, per_block: int = RECORD_COLUMNS
+) -> list[TableData]:
+    """``table`` cut into tables of at most ``per_block`` columns after its first ``keep``
+    (repeated in each): a table with a column per record stays readable for any number of
+    records (100 records made one table of 101 columns that no page could hold)."""
+    rest = len(table.header) - keep
+    if rest <= per_block:
+        return [table]
+    blocks = []
+    for start in range(keep, len(table.header), per_block):
+        cols = list(range(keep)) + list(range(start, min(start + per_block, len(table.header))))
+        blocks.append(
+            TableData(
+                [table.header[c] for c in cols], [[row[c] for c in cols] for row in table.rows]
+            )
+        )
+    return blocks
+
+
 def head(template: str, **user: object) -> Markup:
     """A header cell of constant markup ``template`` with user values (escaped) filled in."""
     return Markup(template.format(**{k: pdf(v) for k, v in user.items()}))

@@ -22,6 +22,7 @@ from frp_assess.report.flow import (
     page_break,
     para,
 )
+from frp_assess.report.formats import column_blocks
 from frp_assess.results.model import AssessmentResult
 
 Results = AssessmentResult
@@ -142,10 +143,10 @@ def options(results: Results) -> list[Block]:
         out.append(para("Design mode was not run for this project."))
     out.append(cond_break(80 * mm))
     out.append(h2("5.4  a_dyn [g] of every option and record"))
-    mat = tb.a_dyn_matrix(results)
-    n = len(mat.header) - 1
-    other = (174 - 34) / max(n, 1)
-    out.append(grid(mat, [34 * mm] + [other * mm] * n, wrap=(0,), small=True))
+    for mat in column_blocks(tb.a_dyn_matrix(results)):
+        n = len(mat.header) - 1
+        other = (174 - 34) / max(n, 1)
+        out.append(grid(mat, [34 * mm] + [other * mm] * n, wrap=(0,), small=True))
     out.append(para("n.c.: no collapse up to C_max for that record.", "caption"))
     out.append(cond_break(60 * mm))
     out.append(h2("5.5  How far the numbers can be trusted: scatter and fragility"))

@@ -183,3 +183,19 @@ def test_summary_names_the_statistic_it_shows(
     text = " ".join(story_text(build_story(typed(r))).split())
     sentence = next(s for s in text.split("The wall as it is.")[1:])[:300]
     assert said in sentence and "mean ground acceleration" not in sentence
+
+
+def test_a_column_per_record_is_cut_into_tables_of_ten() -> None:
+    """101 columns (an option column and 100 records) become 10 tables of 1 + 10 columns, the
+    option column repeated, every cell kept once and in order (issue: 100 records)."""
+    from frp_assess.report.formats import TableData, column_blocks
+
+    header = ["option"] + [f"r{k}" for k in range(100)]
+    rows = [["A"] + [str(k) for k in range(100)], ["B"] + [str(-k) for k in range(100)]]
+    blocks = column_blocks(TableData(header, rows))
+    assert len(blocks) == 10
+    assert all(b.header[0] == "option" and len(b.header) == 11 for b in blocks)
+    assert [h for b in blocks for h in b.header[1:]] == header[1:]
+    assert [c for b in blocks for c in b.rows[1][1:]] == rows[1][1:]
+    small = TableData(header[:8], [r[:8] for r in rows])
+    assert column_blocks(small) == [small]
