@@ -15,7 +15,7 @@ import datetime as _dt
 import os
 import threading
 from collections.abc import Callable, Sequence
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, replace
 from pathlib import Path
 
 from frp_assess.app.report import write_outputs
@@ -142,6 +142,7 @@ def run_assessment(
     created: str | None = None,
     pdf: bool = True,
     write: bool = True,
+    inputs_digest: str = "",
 ) -> tuple[AssessmentResult, RunStats]:
     """Run the assessment and write ``out_dir``; returns (results, stats).
 
@@ -149,6 +150,8 @@ def run_assessment(
     (case, record) IDA of the "ida" stage as it finishes, for per-case progress bars.
     ``write=False`` returns the results without writing the result files (the cache is
     still read and filled): how the TUI shows the last run again when it opens a project.
+    ``inputs_digest`` is written as results.json's ``inputs_digest`` (:mod:`frp_assess.app.
+    rerun`).
 
     Finished (case, record) IDAs are cached in ``out_dir/.cache`` as they complete, so a
     cancelled run (:class:`~frp_assess.errors.Cancelled`) loses nothing; result files are
@@ -268,6 +271,8 @@ def run_assessment(
         floor_spectra=spectra,
         kinematic_checks=checks,
     )
+    if inputs_digest:
+        results = replace(results, inputs_digest=inputs_digest)
     if write:
         report("writing", 0, 1)
         write_outputs(results, seismic, out_dir, pdf=pdf)
@@ -416,7 +421,7 @@ def load_previous(
     """
     stored = Path(out_dir) / "results.json"
     try:
-        created = from_json(stored.read_text(encoding="utf-8"), file=str(stored)).created
+        previous = from_json(stored.read_text(encoding="utf-8"), file=str(stored))
     except (OSError, UnicodeDecodeError, InputError):  # none, or not readable as this version
         return None
     inputs = inputs_from_project(project, base_dir, input_file)
@@ -424,6 +429,13 @@ def load_previous(
     if missing_idas(inputs, seismic, out_dir):
         return None
     results, stats = run_assessment(
-        inputs, out_dir, jobs=jobs, cancel=cancel, seismic=seismic, created=created, write=False
+        inputs,
+        out_dir,
+        jobs=jobs,
+        cancel=cancel,
+        seismic=seismic,
+        created=previous.created,
+        write=False,
+        inputs_digest=previous.inputs_digest,
     )
     return RunOutcome(results, seismic, inputs, Path(out_dir), stats, project)

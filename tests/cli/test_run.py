@@ -9,6 +9,7 @@ from pathlib import Path
 
 import pytest
 
+from frp_assess.app.rerun import SIDECAR
 from frp_assess.assess.from_project import load_inputs
 from frp_assess.assess.inputs import ArtificialRecords, RecordFile
 from frp_assess.cli import main
@@ -64,6 +65,9 @@ def test_small_project_end_to_end_and_instant_rerun(tmp_path, capsys):
     assert "Best ranked (input not code-compliant): " in said and "Recommended:" not in said
     assert "INPUT NOT CODE-COMPLIANT" in said
 
+    assert main(["run", str(project), "--no-pdf"]) == 0
+    assert "unchanged since " in capsys.readouterr().out  # nothing read but results.json
+    (out_dir / SIDECAR).unlink()  # without the digest: the run again, from the cache
     assert main(["run", str(project), "--no-pdf"]) == 0
     assert "0 IDAs computed" in capsys.readouterr().out
     second = json.loads((out_dir / "results.json").read_text())
