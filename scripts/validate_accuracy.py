@@ -1,6 +1,6 @@
 """Accuracy bar of the integrator on the convergence corpus (docs/model.md §4).
 
-    python3 scripts/validate_accuracy.py [--quick] [--tolerance TOL]
+    python3 scripts/validate_accuracy.py [--quick] [--tolerance TOL] [--only TEXT]
 
 For every wall of tests/validation/corpus.py and every record, the first-collapse multiplier C
 (IDA, bisection to 0.1 %) and the peak rotation at 0.5·C and at the IDA's survivor multiplier
@@ -157,9 +157,11 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--quick", action="store_true", help="every 4th record only")
     parser.add_argument("--tolerance", type=float, default=DEFAULT_TOLERANCE)
+    parser.add_argument("--only", default="", help="only the walls whose name contains TEXT")
     args = parser.parse_args()
     recs = records()[:: 4 if args.quick else 1]
-    jobs = [(n, m, r) for n, m in walls() for r in recs]
+    chosen = [(n, m) for n, m in walls() if args.only in n]
+    jobs = [(n, m, r) for n, m in chosen for r in recs]
     t0 = time.perf_counter()
     with ThreadPoolExecutor(default_jobs()) as pool:
         rows = [
@@ -168,7 +170,7 @@ def main() -> int:
     seconds = time.perf_counter() - t0
     failed = [r for r in rows if r.gated and not r.ok]
     print(
-        f"tolerance {args.tolerance:g}: {len(walls())} walls x {len(recs)} records, {seconds:.0f} s"
+        f"tolerance {args.tolerance:g}: {len(chosen)} walls x {len(recs)} records, {seconds:.0f} s"
     )
     for q in sorted({r.quantity for r in rows}):
         sel = [r for r in rows if r.quantity == q]

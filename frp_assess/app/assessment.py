@@ -298,7 +298,7 @@ def governing_histories(
     model = inputs.model_for(None if idx == 0 else inputs.options[idx - 1])
     rec = floor_record(records[k], inputs.building)  # the motion the IDA ran
     below = below_collapse(c, res[k].survivor_multiplier, inputs.ida.tolerance)
-    alpha = model.alpha  # θ/α about the model's pivot (the edge's α, or α' with crushing)
+    alpha = model.alpha  # θ/α_x: α_x = atan((B − x_W)/H), the edge's α with pivot: edge
     runs = (
         history_run("collapse", c, model.run(rec.acc, rec.dt, c, history=True), alpha),
         history_run("just below", below, model.run(rec.acc, rec.dt, below, history=True), alpha),

@@ -86,7 +86,7 @@ def case_history(
         record=rec.name,
         multiplier=float(multiplier),
         time=h.time[:n],
-        theta_over_alpha=h.theta[:n] / model.wall.alpha,
+        theta_over_alpha=h.theta[:n] / model.alpha,  # α_x, as peak_ratio (docs/model.md §1.1)
         strain=h.strain[:n],
         collapsed=res.collapsed,
         collapse_time=res.collapse_time,

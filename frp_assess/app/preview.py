@@ -21,7 +21,7 @@ from frp_assess.assess.wall_model import WallInput, design_strength, rocking_mod
 from frp_assess.config import FrpMaterial, Project
 from frp_assess.config.schema import Spectrum, WallSpec
 from frp_assess.dynamics import ModelOptions, Position
-from frp_assess.dynamics.pivot import PivotRule
+from frp_assess.dynamics.base_reaction import PivotRule
 from frp_assess.motions import ElasticSpectrum
 
 __all__ = [

@@ -25,12 +25,13 @@ import numpy as np
 
 from frp_assess import __version__
 from frp_assess.assess.inputs import Building
-from frp_assess.dynamics import IdaResult, IdaSettings, RockingModel
+from frp_assess.dynamics import FAILURE_MODES, IdaResult, IdaSettings, RockingModel
 from frp_assess.io_utils import atomic_write_text
 from frp_assess.text_safety import plain
 
 #: Bump when the numerics change in a way that changes results.
-CACHE_VERSION = 3  # 2: IdaResult.survivor_multiplier; 3: keyed on every ModelOptions field
+#: 4: the base reaction of docs/model.md §1.1 and IdaResult.failure_mode
+CACHE_VERSION = 4  # 2: IdaResult.survivor_multiplier; 3: keyed on every ModelOptions field
 
 
 def record_digest(acc: np.ndarray, dt: float) -> str:
@@ -54,8 +55,8 @@ def task_key(
         "cache": CACHE_VERSION,
         "version": __version__,
         "wall": [model.wall.thickness, model.wall.height, model.wall.unit_weight],
-        # the masonry's strength moves only the crushing pivot (docs/model.md §1.1)
-        "pivot_depth": model.pivot.depth,
+        # the masonry's strength enters only through the base reaction (docs/model.md §1.1)
+        "weight_depth": model.base_reaction.weight_depth,
         "mechanism": model.mechanism,
         "bars": None
         if bars is None
@@ -138,6 +139,13 @@ def _curve(key: str, v: object) -> tuple[object, ...]:
     return tuple(points)
 
 
+def _failure_mode(key: str, v: object) -> object:
+    """One of :data:`~frp_assess.dynamics.FAILURE_MODES`, or None."""
+    if v is not None and v not in FAILURE_MODES:
+        raise DamagedEntry(f"{key} = {v!r} is not a failure mode")
+    return v
+
+
 #: how each field of an IdaResult is checked (every field must have one: see the tests)
 FIELD_CHECKS: dict[str, Callable[[str, Any], object]] = {
     "pga": _positive,
@@ -148,6 +156,7 @@ FIELD_CHECKS: dict[str, Callable[[str, Any], object]] = {
     "runs": _count,
     "survivor_multiplier": lambda k, v: _positive(k, v, optional=True),
     "curve": _curve,
+    "failure_mode": _failure_mode,
 }
 
 

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import math
+from collections import Counter
 from collections.abc import Sequence
 from dataclasses import asdict, replace
 from typing import Any
@@ -91,9 +92,9 @@ def material_result(m: Material) -> MaterialResult:
 
 
 def wall_result(inputs: AssessmentInputs) -> WallResult:
-    """The wall; ``a_rm`` is that of the unreinforced wall's model about its pivot
-    (g·tan α at the edge, g·(B − x)/H with ``pivot: crushing``), ``alpha`` the geometric
-    slenderness (tan α = B/H)."""
+    """The wall; ``a_rm`` is that of the unreinforced wall's model, g·tan α_x (g·tan α with
+    ``pivot: edge``, g·(B − x_W)/H with ``pivot: crushing``, the same for every option),
+    ``alpha`` the geometric slenderness (tan α = B/H)."""
     w = inputs.wall
     return WallResult(
         thickness=inputs.thickness,
@@ -178,6 +179,7 @@ def case_result(
             # every time history of the search, by C: (C, collapsed, peak θ/α)
             curve=tuple((p.multiplier, p.collapsed, p.peak_ratio) for p in res.curve),
             floor_pga=fp,
+            failure_mode=res.failure_mode,
         )
         for name, res, a, fp in zip(names, summary.results, summary.a_dyn, pgas, strict=True)
     )
@@ -215,7 +217,23 @@ def case_result(
         as_built=built,
         pivot=case_pivot(inputs, option).result(),
         fc=fc,
+        failure_mode=case_failure_mode(records),
     )
+
+
+def case_failure_mode(records: Sequence[RecordResult]) -> str | None:
+    """The failure mode met most often over ``records``; a tie goes to the mode of the least
+    favourable record (lowest a_dyn) among the tied; None when none collapsed."""
+    counts = Counter(r.failure_mode for r in records if r.failure_mode is not None)
+    if not counts:
+        return None
+    top = max(counts.values())
+    tied = {mode for mode, n in counts.items() if n == top}
+    worst = min(
+        (r for r in records if r.failure_mode in tied and r.a_dyn is not None),
+        key=lambda r: r.a_dyn if r.a_dyn is not None else math.inf,
+    )
+    return worst.failure_mode
 
 
 def shaken_by(building: Building) -> str:
@@ -263,20 +281,12 @@ def floor_spectra_result(spectra: FloorSpectra) -> FloorSpectraResult:
 def rank_cases(
     cases: Sequence[CaseResult], target: float
 ) -> tuple[tuple[CaseResult, ...], str | None]:
-    """The cases with ``rank`` set on every option (not the unreinforced wall, the first)
-    but those dropped by the pivot check (``pivot.dropped``: rank None, the reason in
-    ``pivot.reason``), and the name of the rank-1 option if it meets ``target`` (else None).
+    """The cases with ``rank`` set on every option (not the unreinforced wall, the first),
+    and the name of the rank-1 option if it meets ``target`` (else None).  Every option is
+    ranked: none is dropped for the masonry at its base (docs/model.md §1.1).
     Pure: ``cases`` are not changed."""
     items = [
-        Rankable(
-            i,
-            c.capacity_demand,
-            c.frp_cost,
-            c.frp_mass,
-            dropped=c.pivot is not None and c.pivot.dropped,
-        )
-        for i, c in enumerate(cases)
-        if i > 0
+        Rankable(i, c.capacity_demand, c.frp_cost, c.frp_mass) for i, c in enumerate(cases) if i > 0
     ]
     order = rank_options(items, target)
     rank_of = {idx: rank for rank, idx in enumerate(order, start=1)}
@@ -333,9 +343,7 @@ def compliance_result(seismic: SeismicInput) -> Compliance:
     )
 
 
-def code_check_result(
-    check: KinematicCheck, mass: float, above_ground: bool = False
-) -> CodeCheck:
+def code_check_result(check: KinematicCheck, mass: float, above_ground: bool = False) -> CodeCheck:
     """The linear check of results.json; ``above_ground``: its demand is a_Z/q."""
     at_height = (
         " Above ground the demand is a_Z/q, a_Z the peak acceleration of the floor at the "
@@ -408,9 +416,8 @@ def history_run(label: str, multiplier: float, res: Any, alpha: float) -> Histor
 
 
 def applied_restitution_ratio(inputs: AssessmentInputs) -> float:
-    """The velocity ratio [-] applied at an impact of the unreinforced wall's model: Eqs. 13–14
-    at the slenderness about its pivot (α' with ``pivot: crushing``, docs/model.md §1.1), as
-    ``wall.a_rm`` is stated about that pivot; each option's own ratio follows its own α'."""
+    """The velocity ratio [-] applied at an impact: Eqs. 13–14 at the wall's slenderness α
+    (the corners strike, in both pivot models; docs/model.md §1.1)."""
     return inputs.model_for(None).impact_velocity_ratio
 
 

@@ -12,7 +12,6 @@ from frp_assess.assess.bars import BarLayout
 from frp_assess.assess.cache import IdaCache, record_digest, task_key
 from frp_assess.assess.floor_input import floor_record, in_ground_terms
 from frp_assess.assess.inputs import AssessmentInputs, Building, Material
-from frp_assess.assess.pivot import largest_ratio
 from frp_assess.dynamics import (
     IdaResult,
     IdaSettings,
@@ -230,9 +229,9 @@ def design_search(
     and capacity/demand is that of the bars as built.  The installed ratio never decreases
     along the grid (each size's rounding is monotone, and a size that stops fitting the
     spacing rule never comes back), so the bisection keeps its premise.  Grid ratios beyond
-    the largest installable one are left out of the search, and so are those whose model
-    ratio the pivot check would drop (:func:`~frp_assess.assess.pivot.largest_ratio`: kept up
-    to it with ``pivot: edge``, strictly below it with ``crushing``); the message says so.
+    the largest installable one are left out of the search; the message says so.  (No ratio
+    is left out for the masonry at the base: a toe that crushes is the IDA's failure mode,
+    docs/model.md §1.1.)
     """
     assert inputs.design is not None
     lo_r, hi_r = inputs.design.ratio_range
@@ -261,25 +260,6 @@ def design_search(
 
     def model_ratio(k: int) -> float:
         return layout(k).ratio_installed if inputs.bars.whole_bars else k * res
-
-    pivot_top = largest_ratio(inputs, material, position)
-    crushing = inputs.model.pivot == "crushing"
-
-    def pivot_keeps(k: int) -> bool:
-        r = model_ratio(k)
-        return r < pivot_top if crushing else r <= pivot_top * (1.0 + 1e-12)
-
-    if grid_hi >= grid_lo and not pivot_keeps(grid_hi):
-        # the model ratio never decreases along the grid: bisect for the last kept k
-        # grid_lo - 1 kept (or below the range), grid_hi dropped
-        grid_hi = bisect_boundary(grid_lo - 1, grid_hi, pivot_keeps)[0]
-        capped = True
-        hi_shown = grid_hi * res
-        relation = "below" if crushing else "up to"
-        cap_note = (  # the tighter bound: it replaces the installable one
-            f" (the search stops at {max(hi_shown, 0.0):g} ‰: the pivot check (pivot: "
-            f"{inputs.model.pivot}) keeps a model ratio only {relation} {pivot_top:.3g} ‰)"
-        )
 
     def evaluate(k: int) -> CaseSummary:
         if k not in cache:

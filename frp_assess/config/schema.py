@@ -30,6 +30,7 @@ from pydantic import (
 from pydantic_core import PydanticCustomError
 
 from frp_assess.config.library import FRP_MATERIALS, MASONRY, FrpMaterial, did_you_mean
+from frp_assess.dynamics.base_reaction import PivotRule
 from frp_assess.dynamics.ida import IdaSettings
 from frp_assess.dynamics.options import (
     COLLAPSE,
@@ -49,7 +50,6 @@ from frp_assess.dynamics.options import (
     Option,
     RuptureRule,
 )
-from frp_assess.dynamics.pivot import PivotRule
 from frp_assess.dynamics.rebars import POSITIONS, Position
 from frp_assess.dynamics.rocking import ModelOptions
 from frp_assess.dynamics.wall import Mechanism

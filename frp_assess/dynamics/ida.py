@@ -10,7 +10,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from frp_assess.dynamics.options import IDA_MAX_MULTIPLIER, IDA_STEP_RATIO, IDA_TOLERANCE
-from frp_assess.dynamics.rocking import RockingModel
+from frp_assess.dynamics.rocking import FailureMode, RockingModel
 from frp_assess.errors import Cancelled
 
 
@@ -45,7 +45,7 @@ class IdaPoint:
 
     multiplier: float  #: C [-]
     collapsed: bool
-    peak_ratio: float  #: peak |θ|/α [-] (the fall itself included when it collapsed)
+    peak_ratio: float  #: peak |θ|/α_x [-] (the fall itself included when it collapsed)
 
 
 @dataclass(frozen=True)
@@ -70,6 +70,9 @@ class IdaResult:
     #: every time history the search ran, sorted by C: the IDA curve (a wall that stands
     #: again above its first collapse shows here)
     curve: tuple[IdaPoint, ...] = ()
+    #: how the wall failed at the first collapse (docs/model.md §1.1): overturning, rupture
+    #: then overturning, crushing, rupture then crushing; None without collapse
+    failure_mode: FailureMode | None = None
 
 
 def ida(
@@ -90,28 +93,38 @@ def ida(
 
     ``should_stop`` is polled between time histories; when it returns True the search
     raises :class:`~frp_assess.errors.Cancelled`.
+
+    A centred bar already inside the compressed zone of the weight (x_W ≥ B/2, θ_cr = 0)
+    crushes the toe as the wall uplifts: the first collapse is C₀, no time history is run.
     """
     acc = np.ascontiguousarray(acc, dtype=np.float64)
     pga = float(np.max(np.abs(acc)))
     if not (math.isfinite(pga) and pga > 0.0):
         raise ValueError("the record has no ground motion (PGA = 0 or not finite)")
-    a_rm = model.a_rm  # about the model's pivot (docs/model.md §1.1)
+    a_rm = model.a_rm  # g·tan α_x (docs/model.md §1.1)
     c0 = a_rm / pga
     c_max = settings.max_multiplier * c0
     points: list[IdaPoint] = []
+    modes: dict[float, FailureMode | None] = {}
+
+    if model.crushing_rotation == 0.0:
+        crushed = IdaPoint(c0, True, 0.0)
+        return IdaResult(pga, c0, c0, c0 * pga, c0 * pga / a_rm, 0, None, (crushed,), "crushing")
 
     def collapses(c: float) -> bool:
         if should_stop is not None and should_stop():
             raise Cancelled("IDA cancelled")
         res = model.run(acc, dt, c)
         points.append(IdaPoint(c, res.collapsed, res.max_rotation_ratio))
+        modes[c] = res.failure_mode
         return res.collapsed
 
     def result(c_hi: float | None, c_lo: float) -> IdaResult:
         curve = tuple(sorted(points, key=lambda p: p.multiplier))
         a_dyn = None if c_hi is None else c_hi * pga
         q = None if a_dyn is None else a_dyn / a_rm
-        return IdaResult(pga, c0, c_hi, a_dyn, q, len(points), c_lo or None, curve)
+        mode = None if c_hi is None else modes[c_hi]
+        return IdaResult(pga, c0, c_hi, a_dyn, q, len(points), c_lo or None, curve, mode)
 
     c_lo = 0.0
     c_hi = math.nan

@@ -17,7 +17,7 @@ import math
 from dataclasses import dataclass
 from typing import Any, Generic, Literal, TypeVar, get_args
 
-from frp_assess.dynamics.pivot import PIVOT_RULES, PivotRule
+from frp_assess.dynamics.base_reaction import PIVOT_RULES, PivotRule
 from frp_assess.dynamics.rebars import DEFAULT_STRAIN_FACTOR
 from frp_assess.dynamics.restitution import Restitution
 
@@ -172,9 +172,9 @@ PIVOT: Option[PivotRule] = Option(
     key="pivot",
     flag="",
     default="crushing",
-    help="Where the wall pivots: crushing (at x/2 from the edge, x the depth of masonry at "
-    "0.85*f_d that carries the weight and the bar force at rupture; needs the masonry's "
-    "strength, without it the pivot stays at the edge) or edge (the base corner, the paper's "
+    help="The masonry at the base: crushing (the weight and the bar force N act at x/2 from "
+    "the corner, x = N/(0.85*f_d), and the toe crushes when x reaches the bar; needs the "
+    "masonry's strength, without it the edge model is used) or edge (x = 0, the paper's "
     "model)",
     choices=PIVOT_RULES,
 )

@@ -10,8 +10,10 @@ from typing import Literal
 import numpy as np
 from numpy.typing import NDArray
 
+from frp_assess.dynamics.base_reaction import PIVOT_RULES, BaseReaction, PivotRule
 from frp_assess.dynamics.kernel import history_length, simulate
 from frp_assess.dynamics.kernel import params as kp
+from frp_assess.dynamics.kernel.fate import tipping_angle
 from frp_assess.dynamics.options import (
     COLLAPSE,
     COLLAPSE_RULES,
@@ -24,14 +26,24 @@ from frp_assess.dynamics.options import (
     CollapseRule,
     RuptureRule,
 )
-from frp_assess.dynamics.pivot import PIVOT_RULES, PivotGeometry, PivotRule, pivot_depth
 from frp_assess.dynamics.rebars import Rebars
 from frp_assess.dynamics.restitution import Restitution, velocity_ratio
 from frp_assess.dynamics.wall import Mechanism, Wall
 from frp_assess.errors import NumericalError
 from frp_assess.motions.record import G
 
-Fate = Literal["fell", "at rest", "exceeded", "standing"]
+Fate = Literal["fell", "at rest", "exceeded", "standing", "crushed"]
+#: How a wall that collapsed failed (docs/model.md §1.1): it fell (or met the α_x limit of the
+#: other collapse rules), or its toe crushed under an intact bar, after a bar broke or not.
+FailureMode = Literal[
+    "overturning", "rupture then overturning", "crushing", "rupture then crushing"
+]
+FAILURE_MODES: tuple[FailureMode, ...] = (
+    "overturning",
+    "rupture then overturning",
+    "crushing",
+    "rupture then crushing",
+)
 
 #: Default local error tolerance of the Dormand–Prince pair [-] (the measurement that chose it:
 #: :data:`~frp_assess.dynamics.options.INTEGRATION_TOLERANCE`).
@@ -44,6 +56,7 @@ _FATES: dict[int, Fate] = {
     kp.FATE_AT_REST: "at rest",
     kp.FATE_EXCEEDED: "exceeded",
     kp.FATE_STANDING: "standing",
+    kp.FATE_CRUSHED: "crushed",
 }
 _STATUS_MESSAGES = {
     kp.STATUS_EVENT_OVERFLOW: "too many events in one sample interval",
@@ -74,9 +87,10 @@ class ModelOptions:
             error-controlled pair (the independent reference of the tests and benchmarks).
         method: the embedded pair, ``"dopri5"`` (Dormand–Prince 5(4), default) or ``"bs3"``
             (Bogacki–Shampine 3(2); kept for the benchmark that chose the default).
-        pivot: ``"crushing"`` (default: at x/2 inside a compressed zone x of the masonry's
-            strength f_d, :attr:`Wall.compressive_strength`; a wall without a strength keeps
-            the edge pivot) or ``"edge"`` (the paper: the base corner; docs/model.md §1.1).
+        pivot: ``"crushing"`` (default: the base reaction N = W + T(θ) acts at x/2 from the
+            corner, x = N/(0.85·f_d), f_d = :attr:`Wall.compressive_strength`, and the toe can
+            crush; a wall without a strength is the edge model) or ``"edge"`` (the paper:
+            x = 0; docs/model.md §1.1).
     """
 
     restitution: Restitution = RESTITUTION.default
@@ -137,11 +151,12 @@ class Rupture:
 class RockingResult:
     """What one time history gives."""
 
-    fate: Fate  #: fell, at rest (overturning); exceeded, standing (the α-based rules)
+    #: fell, at rest (overturning); exceeded, standing (the α_x-based rules); crushed (any)
+    fate: Fate
     decided_time: float  #: when the fate became certain [s]
     collapse_time: float | None  #: [s]; None without collapse
     max_rotation: float  #: peak |θ| [rad], the free vibration after the record included
-    max_rotation_ratio: float  #: peak |θ| / α [-]
+    max_rotation_ratio: float  #: peak |θ| / α_x [-]
     peak_strain: float  #: peak strain of an intact acting bar [-] (0 when unreinforced)
     rupture_strain: float | None  #: ε_max = c·ε_u of the bars [-]; None when unreinforced
     impacts: int
@@ -154,8 +169,17 @@ class RockingResult:
 
     @property
     def collapsed(self) -> bool:
-        """The collapse rule's verdict: the wall fell (or met the α limit of the other rules)."""
-        return self.fate in ("fell", "exceeded")
+        """The collapse rule's verdict: the wall fell (or met the α_x limit of the other
+        rules), or its toe crushed."""
+        return self.fate in ("fell", "exceeded", "crushed")
+
+    @property
+    def failure_mode(self) -> FailureMode | None:
+        """How the wall failed (``None``: it did not collapse)."""
+        if not self.collapsed:
+            return None
+        head = "rupture then " if self.ruptures else ""
+        return f"{head}{'crushing' if self.fate == 'crushed' else 'overturning'}"  # type: ignore[return-value]
 
 
 @dataclass(frozen=True)
@@ -176,32 +200,23 @@ class RockingModel:
             raise ValueError(
                 f"mechanism must be 'one-sided' or 'two-sided', got {self.mechanism!r}"
             )
+        _ = self.base_reaction  # x_W ≥ B: the base cannot carry the wall's weight
 
     @cached_property
-    def pivot(self) -> PivotGeometry:
-        """The block about its pivot (``options.pivot``, docs/model.md §1.1).
-
-        With ``crushing``, a base that cannot carry N = W + T_u at all (x ≥ B) has no rocking
-        mechanism: the assessment drops such an option (:mod:`frp_assess.assess.pivot`); the
-        model falls back to the edge pivot so that every run completes (:attr:`pivot_used`).
-        """
-        depth = pivot_depth(self.wall, self.rebars, self.options.pivot)
-        return PivotGeometry(self.wall, self.rebars, depth if depth < self.wall.thickness else 0.0)
-
-    @property
-    def pivot_used(self) -> PivotRule:
-        """The pivot the time histories use: ``crushing`` when the pivot moved inward."""
-        return "crushing" if self.pivot.depth > 0.0 else "edge"
+    def base_reaction(self) -> BaseReaction:
+        """The stress block at the base (``options.pivot``, docs/model.md §1.1)."""
+        return BaseReaction(self.wall, self.rebars, self.options.pivot)
 
     @property
     def alpha(self) -> float:
-        """Slenderness about the pivot α [rad] (the wall's α for the edge pivot)."""
-        return self.wall.alpha if self.pivot.depth == 0.0 else self.pivot.alpha
+        """α_x [rad], where the wall tips: atan((B − x_W)/H), the wall's α with the edge
+        pivot.  The α of the collapse rules and of θ/α in the outputs."""
+        return self.base_reaction.alpha_x
 
     @property
     def a_rm(self) -> float:
-        """Ground acceleration that starts rocking, g·tan α about the pivot [m/s²]."""
-        return self.wall.a_rm if self.pivot.depth == 0.0 else self.pivot.a_rm
+        """Ground acceleration that starts rocking, g·tan α_x = g·(B − x_W)/H [m/s²]."""
+        return self.base_reaction.a_rm
 
     @property
     def a_rm_g(self) -> float:
@@ -210,26 +225,24 @@ class RockingModel:
 
     @property
     def impact_velocity_ratio(self) -> float:
-        """Eqs. 13–14 by the restitution convention, at the slenderness about the pivot."""
-        return velocity_ratio(self.options.restitution, self.mechanism, self.alpha)
+        """Eqs. 13–14 by the restitution convention, at the wall's α (its corners)."""
+        return velocity_ratio(self.options.restitution, self.mechanism, self.wall.alpha)
 
     @property
     def K(self) -> float:  # noqa: N802 - the paper's symbol
         """K of Eq. 10 [-] (0 when unreinforced)."""
-        if self.rebars is None:
-            return 0.0
-        if self.pivot.depth == 0.0:
-            return self.rebars.stiffness_term(self.wall)
-        return self.pivot.K
+        return 0.0 if self.rebars is None else self.rebars.stiffness_term(self.wall)
 
     @property
     def theta_max(self) -> float:
         """Rupture rotation θ_max [rad] (``inf``: unreinforced, or a bar that cannot break)."""
-        if self.rebars is None:
-            return math.inf
-        if self.pivot.depth == 0.0:
-            return self.rebars.rupture_rotation(self.wall)
-        return self.pivot.theta_max
+        return math.inf if self.rebars is None else self.rebars.rupture_rotation(self.wall)
+
+    @property
+    def crushing_rotation(self) -> float:
+        """θ_cr [rad]: the toe crushes there under the intact acting bar (``inf``: never;
+        0: at the first uplift)."""
+        return self.base_reaction.crushing_rotation
 
     def with_options(self, **changes: object) -> RockingModel:
         """The same wall and bars with some options changed."""
@@ -240,30 +253,26 @@ class RockingModel:
         """The kernel's constants (docs/model.md §1–4), derived once."""
         wall, bars, o = self.wall, self.rebars, self.options
         theta_max = self.theta_max
-        edge = self.pivot.depth == 0.0  # the paper's closed forms, bit for bit
-        p2 = wall.p2 if edge else self.pivot.p2
-        alpha = self.alpha
+        alpha = wall.alpha
         if bars is None:
             bar_mode, rupture_energy = kp.BAR_NONE, 0.0
         else:
             bar_mode = kp.BAR_SHARED if bars.position == "centred" else kp.BAR_PER_SIDE
             rupture_energy = 0.0
             if math.isfinite(theta_max):
-                rupture_energy = (
-                    bars.stored_energy(wall, theta_max) / wall.I0
-                    if edge
-                    else self.pivot.stored_energy(theta_max) / self.pivot.inertia
-                )
-        return kp.KernelParams(
+                rupture_energy = bars.stored_energy(wall, theta_max) / wall.I0
+        base = self.base_reaction
+        k_bar = self.K
+        prm = kp.KernelParams(
             g=G,
-            p2=p2,
-            p=math.sqrt(p2),
+            p2=wall.p2,
+            p=math.sqrt(wall.p2),
             alpha=alpha,
             sin_a=math.sin(alpha),
             cos_a=math.cos(alpha),
             one_sided=self.mechanism == "one-sided",
             bar_mode=bar_mode,
-            k_bar=self.K,
+            k_bar=k_bar,
             theta_max=theta_max,
             rupture_energy=rupture_energy,
             e_impact=self.impact_velocity_ratio,
@@ -280,7 +289,15 @@ class RockingModel:
             else (kp.METHOD_DOPRI5 if o.method == "dopri5" else kp.METHOD_BS3),
             tolerance=o.tolerance,
             fixed_step=math.inf if o.fixed_step is None else o.fixed_step,
+            xi=base.xi,
+            kappa_per_k=base.kappa / k_bar if k_bar > 0.0 else 0.0,
+            theta_cr=base.crushing_rotation,
+            alpha_x=base.alpha_x,
+            tan_ax=base.tan_alpha_x,
+            tip_bar=math.nan,
         )
+        # θ* with the bar intact: the compiled rule itself, so the kernel and this agree
+        return prm._replace(tip_bar=float(tipping_angle(k_bar, prm)))
 
     def run(
         self,
@@ -323,7 +340,7 @@ class RockingModel:
             theta = h_theta[:n].copy()
             strain = np.zeros(n)
             if self.rebars is not None:
-                strain = self.pivot.strains(theta) * h_bar[:n]
+                strain = self.rebars.strain(self.wall, theta) * h_bar[:n]
             time = np.arange(n, dtype=np.float64) * dt
             hist = History(time, theta, h_omega[:n].copy(), strain)
         ruptures = tuple(
@@ -336,7 +353,7 @@ class RockingModel:
             collapse_time=None if math.isnan(out.collapse_time) else float(out.collapse_time),
             max_rotation=float(out.peak),
             max_rotation_ratio=float(out.peak) / self.alpha,
-            peak_strain=0.0 if bars is None else self.pivot.strain(float(out.peak_with_bar)),
+            peak_strain=0.0 if bars is None else bars.strain(self.wall, float(out.peak_with_bar)),
             rupture_strain=None if bars is None else bars.rupture_strain,
             impacts=int(out.impacts),
             ruptures=ruptures,

@@ -18,6 +18,7 @@ CSV_FIELDS = [
     "record_collapse_multiplier",
     "record_a_dyn_g",
     "record_q",
+    "record_failure_mode",
     "case_mean_a_dyn_g",
     "case_least_favourable_a_dyn_g",
     "case_design_a_dyn_g",
@@ -27,6 +28,7 @@ CSV_FIELDS = [
     "case_frp_cost",
     "case_meets_target",
     "case_rank",
+    "case_failure_mode",
 ]
 
 
@@ -58,6 +60,7 @@ def results_csv(results: AssessmentResult) -> str:
                     _g(r.collapse_multiplier),
                     _g(r.a_dyn),
                     _g(r.q),
+                    r.failure_mode or "",
                     _g(c.mean_a_dyn),
                     _g(c.min_a_dyn),
                     _g(c.design_a_dyn),
@@ -67,6 +70,7 @@ def results_csv(results: AssessmentResult) -> str:
                     _g(c.frp_cost),
                     c.meets_target,
                     "" if c.rank is None else c.rank,
+                    c.failure_mode or "",
                 ]
             )
     return buf.getvalue()

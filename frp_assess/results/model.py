@@ -281,6 +281,9 @@ class RecordResult:
     #: PGA of the motion at the wall's base [g]: the floor motion at Z for a wall above
     #: ground (unscaled, as the IDA received it); None at ground level (it is ``pga``)
     floor_pga: float | None = None
+    #: how the wall failed at the first collapse (docs/model.md §1.1): overturning | rupture
+    #: then overturning | crushing | rupture then crushing; None without collapse
+    failure_mode: str | None = None
 
 
 @dataclass(frozen=True)
@@ -317,8 +320,8 @@ class CaseResult:
     q [-]; capacity_demand = design_a_dyn / (fc·demand.pga) [-]; improvement = design_a_dyn over
     that of the unreinforced wall [-]; frp_mass_per_m [kg/m]; frp_mass [kg] and frp_cost
     [currency] for the whole wall (of the bars as built when ``as_built`` is set); rank 1 =
-    recommended, None for the unreinforced wall and for an option the pivot check dropped;
-    q and mean_q are over the a_RM of this case's own model (about its pivot).
+    recommended, None for the unreinforced wall; q and mean_q are over a_RM = g·tan α_x
+    (the same for every case of a wall).
     """
 
     name: str
@@ -342,7 +345,7 @@ class CaseResult:
     frp_mass: float
     frp_cost: float
     meets_target: bool
-    rank: int | None  #: None: the unreinforced wall, or an option dropped (``pivot.dropped``)
+    rank: int | None  #: None: the unreinforced wall
     #: ρ asked [‰] (``ratio`` is the ratio the model uses: installed with bars.whole_bars);
     #: None for the unreinforced wall
     ratio_asked: float | None = None
@@ -354,6 +357,10 @@ class CaseResult:
     #: FC [-], the confidence factor dividing this case's capacity/demand (the knowledge
     #: level's, Circolare 2019 Tab. C8.5.IV; 1.0 when code_check.fc_in_ida is false)
     fc: float = 1.0
+    #: the failure mode met most often over the records (``records[i].failure_mode``; a tie
+    #: goes to the mode of the least favourable record among the tied); None when no record
+    #: collapsed up to C_max
+    failure_mode: str | None = None
 
     @property
     def is_unreinforced(self) -> bool:

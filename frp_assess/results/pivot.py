@@ -39,21 +39,23 @@ class PivotResult:
 
     Attributes:
         rule: ``analysis.pivot`` of the project: ``edge`` | ``crushing``.
-        model_pivot: the pivot the IDA of this case ran with (``edge`` when ``crushing`` has
-            no mechanism, x ≥ B: that case is dropped, its numbers are not a capacity).
+        model_pivot: the model the IDA of this case ran with: ``crushing`` (the base reaction
+            of docs/model.md §1.1) or ``edge`` (x = 0: ``pivot: edge``, or no f_d).
         weight: W = w·B·H [kN/m].
         bar_force: T_u = E·A·ε_max, the acting bar at its design rupture strain [kN/m]
             (0 unreinforced).
         force: N = W + T_u, the largest compression at the pivot [kN/m].
         depth: x = N / (0.85·f_d·1 m), depth of the compressed zone [m].
         depth_ratio: x/B [-].
-        pivot_shift: how far the model's pivot sits from the compressed edge [m]: x/2 with
-            the crushing pivot, 0 with the edge pivot.
+        pivot_shift: where the base reaction acts at rest, x_W/2 from the corner [m] (x_W of
+            the weight alone; 0 with the edge model): a_RM = g·(B − 2·pivot_shift)/H for
+            every case.  The wall turns about its corner in both models.
         bar_distance: distance of the acting bar from the compressed edge [m] (B/2 centred,
             B external); null unreinforced.
         limit: largest x/B accepted with the edge pivot [-] (0.10).
-        dropped: the option fails the pivot check and leaves the ranking.
-        reason: one line: the check's numbers and why the case holds or is dropped.
+        dropped: always false: no option is dropped for its base any more (a toe that
+            crushes is the IDA's failure mode; kept for older readers).
+        reason: one line: the numbers and what they mean for the model.
     """
 
     rule: str

@@ -18,6 +18,10 @@ class _Outcome:
     collapsed: bool
     max_rotation_ratio: float = 0.0
 
+    @property
+    def failure_mode(self) -> str | None:
+        return "overturning" if self.collapsed else None
+
 
 class StubModel:
     """Collapses for C in any of ``bands`` (list of (lo, hi)); counts calls."""
@@ -25,6 +29,7 @@ class StubModel:
     def __init__(self, bands):
         self.wall = Wall(thickness=0.4, height=3.0, unit_weight=18e3)
         self.a_rm = self.wall.a_rm  # the edge pivot's
+        self.crushing_rotation = np.inf  # the toe never crushes
         self.bands = bands
         self.calls = []
 

@@ -113,8 +113,11 @@ def test_record_files_are_not_called_recorded_records(tmp_path: Path) -> None:
 def test_dropped_count_agrees_with_its_verb(tmp_path: Path) -> None:
     r = small_result(tmp_path)
     n = len(r.options)
-    assert sum(c.rank is None for c in r.options) == 1  # CFRP centred 2 ‰: no mechanism
-    text = story_text(build_story(r))
+    # no option is dropped for its base any more (docs/model.md §1.1): every one is ranked
+    assert sum(c.rank is None for c in r.options) == 0
+    assert "fails the pivot check" not in story_text(build_story(r))
+    one = replace(r, cases=(*r.cases[:-1], replace(r.cases[-1], rank=None)))  # an older file
+    text = story_text(build_story(one))
     assert f"1 of {n} options fails the pivot check" in text
     assert "and is dropped from the ranking: see section 6.4" in text
     every = replace(r, cases=(r.cases[0], *(replace(c, rank=None) for c in r.options)))

@@ -1,12 +1,12 @@
-"""Issue 16 §1–2 in the results: the pivot check drops options from the ranking (and says
-why), design mode stops below the pivot's largest ratio, the bars as built and the masonry
-strength are in results.json, the report and the CLI.
+"""Issue 16 §1–2 and issue 22 in the results: the compression at the base of each case is
+recorded and no option is dropped for it (a toe that crushes is the IDA's failure mode), design
+mode searches the whole range, the bars as built, the masonry strength and the failure modes
+are in results.json, the report and the CLI.
 
 References (hand calculations written here, docs/model.md §1.1): the weight W = w·B·H
 [kN/m], the bar at rupture T_u = E·ρ·B·ε [kN/m] (E in GPa → ·10⁶ kN/m², ρ in ‰ → ·10⁻³),
-the stress block x = N/(0.85·f_d·1 m) with f_d in MPa (·10³ kN/m²), the crushing drop rule
-x ≥ the bar's distance from the compressed edge (B/2 centred, B external), and a_RM about
-the crushed pivot g·(B − x)/H.  The ranking rule is that of docs/results-json.md.
+the stress block x = N/(0.85·f_d·1 m) with f_d in MPa (·10³ kN/m²), and a_RM = g·(B − x_W)/H
+with x_W of the weight alone.  The ranking rule is that of docs/results-json.md.
 """
 
 from __future__ import annotations
@@ -21,12 +21,11 @@ import pytest
 
 from frp_assess.api import run_assessment
 from frp_assess.assess.inputs import DesignRequest
-from frp_assess.assess.results import rank_cases
+from frp_assess.assess.results import case_failure_mode, rank_cases
 from frp_assess.assess.runner import design_search
-from frp_assess.cli.run import built_lines, dropped_lines, ranking_rows
+from frp_assess.cli.run import built_lines, ranking_rows
 from frp_assess.report import as_built_section
 from frp_assess.report.document import build_report
-from frp_assess.report.tables import ranking_table
 from frp_assess.results.json_io import from_json, to_json
 from frp_assess.results.model import AssessmentResult
 from tests.assess.test_as_built import RatioRunner, inputs_of
@@ -45,9 +44,7 @@ def small_result(tmp_path: Path) -> AssessmentResult:
     return _CACHE["r"]
 
 
-def test_the_pivot_check_of_each_case_by_hand_and_the_dropped_get_no_rank(
-    tmp_path: Path,
-) -> None:
+def test_the_base_of_each_case_by_hand_and_every_option_is_ranked(tmp_path: Path) -> None:
     r = small_result(tmp_path)
     m = r.masonry_strength
     assert m is not None and m.f_d == pytest.approx(m.f_m / m.confidence_factor)
@@ -68,44 +65,54 @@ def test_the_pivot_check_of_each_case_by_hand_and_the_dropped_get_no_rank(
         x = (weight + t_u) / block
         assert case.pivot.force == pytest.approx(weight + t_u, rel=1e-9)
         assert case.pivot.depth == pytest.approx(x, rel=1e-9)
-        assert case.pivot.dropped == (x >= distance)
-        assert (case.rank is None) == case.pivot.dropped
-        if case.pivot.dropped:
-            assert "dropped:" in case.pivot.reason
-    # the unreinforced wall turns about the crushed pivot: q = a_dyn / a_RM with
-    # a_RM = (B − x)/H [g], x of the weight alone
-    urm = r.urm
-    x0 = weight / block
-    a_rm = (b - x0) / h
+        assert not case.pivot.dropped and case.rank is not None
+        assert ("the toe crushes before the bar breaks" in case.pivot.reason) == (x >= distance)
+    # every case turns about its corner: q = a_dyn / a_RM with a_RM = (B − x_W)/H [g], x_W of
+    # the weight alone, for the unreinforced wall and every option alike
+    a_rm = (b - weight / block) / h
     assert r.wall.a_rm == pytest.approx(a_rm, rel=1e-9)
-    assert urm.mean_q == pytest.approx(urm.mean_a_dyn / a_rm, rel=1e-9)
-    assert urm.pivot is not None and urm.pivot.pivot_shift == pytest.approx(x0 / 2, rel=1e-9)
+    for case in r.cases:
+        assert case.mean_q == pytest.approx(case.mean_a_dyn / a_rm, rel=1e-9)
+    for case in r.cases:  # the reaction at rest acts at x_W/2 from the corner
+        assert case.pivot is not None
+        assert case.pivot.pivot_shift == pytest.approx(weight / block / 2, rel=1e-9)
 
 
-def test_ranking_drops_a_failing_option_and_says_why(tmp_path: Path) -> None:
+def test_failure_modes_per_record_and_per_case(tmp_path: Path) -> None:
+    """Every collapsed record names its failure mode; the case's is the most frequent."""
+    r = small_result(tmp_path)
+    modes = {"overturning", "rupture then overturning", "crushing", "rupture then crushing"}
+    for case in r.cases:
+        for rec in case.records:
+            assert (rec.failure_mode is None) == (rec.collapse_multiplier is None)
+            assert rec.failure_mode is None or rec.failure_mode in modes
+        found = [rec.failure_mode for rec in case.records if rec.failure_mode is not None]
+        if found:
+            assert found.count(case.failure_mode) == max(found.count(f) for f in set(found))
+    assert {rec.failure_mode for rec in r.urm.records} <= {"overturning", None}
+    # an invented case: a tie goes to the least favourable record's mode
+    rec = r.urm.records[0]
+    tied = (
+        replace(rec, a_dyn=0.3, failure_mode="overturning"),
+        replace(rec, a_dyn=0.2, failure_mode="crushing"),
+    )
+    assert case_failure_mode(tied) == "crushing"
+    assert case_failure_mode((replace(rec, a_dyn=None, failure_mode=None),)) is None
+
+
+def test_ranking_ignores_the_compression_at_the_base(tmp_path: Path) -> None:
+    """No option is dropped for its base: the cheapest option meeting the target ranks
+    first, whatever its pivot record says (even a file written when options were dropped)."""
     r = small_result(tmp_path)
     urm, a, b = (replace(c, rank=None) for c in r.cases)
-    assert a.pivot is not None
-    holds = replace(a.pivot, dropped=False)
-    fails = replace(a.pivot, dropped=True, reason="B: x/B = 0.600; dropped: too deep")
-    # b would rank first (cheapest, meets the target) but fails the pivot check
-    a = replace(a, capacity_demand=4.0, meets_target=True, frp_cost=50.0, pivot=holds)
-    b = replace(b, capacity_demand=5.0, meets_target=True, frp_cost=1.0, pivot=fails)
+    assert b.pivot is not None
+    old = replace(b.pivot, dropped=True, reason="B: x/B = 0.600; dropped: too deep")
+    a = replace(a, capacity_demand=4.0, meets_target=True, frp_cost=50.0)
+    b = replace(b, capacity_demand=5.0, meets_target=True, frp_cost=1.0, pivot=old)
     ranked, best = rank_cases((urm, a, b), target=3.0)
-    assert [c.rank for c in ranked] == [None, 1, None]
-    assert best == a.name
-    # the same options with b standing: b first
-    ranked2, best2 = rank_cases((urm, a, replace(b, pivot=holds)), target=3.0)
-    assert [c.rank for c in ranked2] == [None, 2, 1] and best2 == b.name
-    # the reason is shown: CLI ranking and summary line, report ranking table
-    result = replace(r, cases=ranked, recommended=best)
-    rows = ranking_rows(result)
-    assert [row[0] for row in rows] == ["—", "1", "dropped"]
-    assert dropped_lines(result) == ["B: x/B = 0.600; dropped: too deep"]
-    assert [row[0] for row in ranking_table(result).rows] == ["—", "1", "dropped"]
-    assert as_built_section.dropped_reasons(result) == ["B: x/B = 0.600; dropped: too deep"]
-    pivot_rows = as_built_section.pivot_table(result.cases).rows
-    assert [row[-1] for row in pivot_rows] == ["holds", "holds", "dropped"]
+    assert [c.rank for c in ranked] == [None, 2, 1] and best == b.name
+    rows = ranking_rows(replace(r, cases=ranked, recommended=best))
+    assert "dropped" not in [row[0] for row in rows]
 
 
 def test_new_fields_round_trip_and_old_files_still_read(tmp_path: Path) -> None:
@@ -132,9 +139,9 @@ def test_new_fields_round_trip_and_old_files_still_read(tmp_path: Path) -> None:
     assert old.cases[1].as_built is None and old.cases[1].ratio_asked is None
 
 
-def test_design_mode_stops_below_the_pivots_largest_ratio() -> None:
-    # B = 0.2 m, H = 3 m, L = 1 m, solid brick (LC default), GFRP centred, crushing pivot: a
-    # model ratio is kept only while x < B/2, i.e. ρ < (0.85·f_d·10³·B/2 − W)/(E·10⁶·B·ε·10⁻³)
+def test_design_mode_searches_past_the_old_pivot_cap() -> None:
+    # B = 0.2 m, H = 3 m, L = 1 m, solid brick (LC default), GFRP centred, crushing pivot:
+    # the old drop rule kept a model ratio only while x < B/2; the search now goes beyond it
     inputs = inputs_of("  []", b=0.2, length=1.0)
     inputs = replace(inputs, design=DesignRequest((), ("centred",), (0.5, 20.0), 0.5))
     gfrp = inputs_of("  - {material: GFRP, position: centred, ratio: 1}").options[0].material
@@ -143,17 +150,12 @@ def test_design_mode_stops_below_the_pivots_largest_ratio() -> None:
     eps = inputs.rupture_strain(gfrp)
     f_d = inputs.masonry_strength.f_d
     top = (0.85 * f_d * 1e3 * 0.1 - weight) / (gfrp.elastic_modulus * 1e6 * 0.2 * eps * 1e-3)
-    assert 0.5 < top < 20.0  # the cap bites inside the range
+    assert 0.5 < top < 20.0  # the old cap was inside the range
     runner = RatioRunner()
     res = design_search(runner, inputs, gfrp, "centred", 100.0)  # type: ignore[arg-type]
     assert res.ratio is None  # the target is never met
-    assert runner.ratios and max(runner.ratios) < top
-    assert "pivot check (pivot: crushing)" in res.message and "below" in res.message
-    # a demand met everywhere: the answer is the lower end, below the cap too
-    runner2 = RatioRunner()
-    ok = design_search(runner2, inputs, gfrp, "centred", 0.01)  # type: ignore[arg-type]
-    assert ok.ratio == pytest.approx(0.5) and ok.ratio_model is not None
-    assert ok.ratio_model < top
+    assert runner.ratios and max(runner.ratios) > top
+    assert "pivot check" not in res.message
 
 
 def test_the_report_sections_render(tmp_path: Path) -> None:

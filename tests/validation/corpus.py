@@ -4,7 +4,9 @@ Records: SIMQKE sets (frp_assess.motions.generate_artificial) for the paper's pr
 and an EC8 type-1 ground-C spectrum, several seeds, at dt = 0.005 and 0.01 s (28 records),
 plus the bundled example records under projects/records (10 records).  Walls: unreinforced
 one- and two-sided walls at α = 5°, 7.5°, 10° and H = 3, 6 m, and GFRP/CFRP bars, centred
-and external, on a 3 m wall at α = 7.5°, one- and two-sided.
+and external, on a 3 m wall at α = 7.5°, one- and two-sided; and the same 3 m wall with the
+base reaction of docs/model.md §1.1 (f_d = 1 MPa: x_W = 18 mm of B = 395 mm), unreinforced and
+with bars whose toe crushes before they break.
 """
 
 from __future__ import annotations
@@ -16,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
-from frp_assess.dynamics import Rebars, RockingModel, Wall
+from frp_assess.dynamics import ModelOptions, Rebars, RockingModel, Wall
 from frp_assess.motions import generate_artificial, parse_spectrum, read_record
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -83,5 +85,22 @@ def reinforced_walls() -> list[tuple[str, RockingModel]]:
     return out
 
 
+def base_reaction_walls() -> list[tuple[str, RockingModel]]:
+    """The 3 m wall at α = 7.5° with f_d = 1 MPa and ``pivot: crushing``."""
+    ref = Wall.from_slenderness(3.0, math.radians(7.5), UNIT_WEIGHT)
+    wall = Wall(ref.thickness, ref.height, UNIT_WEIGHT, 1.0e6)
+    opts = ModelOptions(pivot="crushing")
+    cases: tuple[tuple[str, str, Rebars | None], ...] = (
+        ("URM two-sided f_d=1MPa", "two-sided", None),
+        ("GFRP centred 2‰ one-sided f_d=1MPa", "one-sided", Rebars(46e9, 0.015, "centred", 2.0)),
+        (
+            "CFRP external 1‰ two-sided f_d=1MPa",
+            "two-sided",
+            Rebars(150e9, 0.013, "external", 1.0),
+        ),
+    )
+    return [(n, RockingModel(wall, mech, bars, opts)) for n, mech, bars in cases]  # type: ignore[arg-type]
+
+
 def walls() -> list[tuple[str, RockingModel]]:
-    return unreinforced_walls() + reinforced_walls()
+    return unreinforced_walls() + reinforced_walls() + base_reaction_walls()

@@ -2,7 +2,8 @@
 
 Modules, in the order a step uses them: :mod:`.params` (the typed record of constants and
 the named codes and tolerances), :mod:`.steppers` (Eq. 10 and one Dormand–Prince or RK4
-step), :mod:`.events` (dense output and event location on the integrator), :mod:`.fate`
+step), :mod:`.events` (dense output and event location on the integrator), :mod:`.jumps`
+(the state's jumps at uplift, impact and rupture), :mod:`.fate`
 (when a freely moving wall can no longer fall), :mod:`.simulate` (the driver).
 """
 

@@ -2,15 +2,18 @@
 
 With no ground motion the mechanical energy per unit I0 on side s,
 
-    E = ½θ'² + V_s(θ),   V_s(θ) = p²·[cos(α − |θ|) + K_s·(1 − cos θ)],
+    E = ½θ'² + V_s(θ),
+    V_s(θ) = p²·[cos(α − |θ|) + K_s·(1 − cos θ) − ξ·∫₀^|θ| n_s(φ)²·cos φ dφ],
 
-only falls at impacts (θ = 0, where every V_s = p²·cos α), is kept by an Eq. 12 rupture and
-lowered by a velocity-continuous one.  V_s rises from θ = 0 up to the tipping angle θ*_s
-(tan θ* = sin α / (cos α − K_s); none below π/2 when K_s ≥ cos α; α with no bar).  On its
-way out the wall meets first either θ*_s (beyond it, it falls) or θ_max of an intact bar (an
-event that changes the potential).  So while the wall is inside that well (|θ| below the nearer
-of the two) with E below V_s there on every side it can still reach, no event can ever happen
-again: the wall cannot fall.
+(the last term is the base reaction, n_s = 1 + κ_s·sin(φ/2); docs/model.md §1.1) only falls at
+impacts (θ = 0, where every V_s = p²·cos α), and jumps at a rupture by Eq. 12's U_r and by the
+bar's share of the reaction term (both are recomputed from the new bar state).  V_s rises from
+θ = 0 up to the tipping angle θ*_s (the first zero of the restoring moment; with the edge pivot
+tan θ* = sin α / (cos α − K_s), none below π/2 when K_s ≥ cos α; α_x with no bar).  On its way
+out the wall meets first either θ*_s (beyond it, it falls), θ_max of an intact bar (an event
+that changes the potential) or θ_cr of an intact bar (the toe crushes: a failure).  So while the
+wall is inside that well (|θ| below the nearest of the three) with E below V_s there on every
+side it can still reach, no event can ever happen again: the wall cannot fall.
 """
 
 from __future__ import annotations
@@ -22,28 +25,77 @@ from numba import njit
 from frp_assess.dynamics.kernel.params import KernelParams
 
 _HALF_PI = 0.5 * math.pi
+#: Grid on [0, π/2] on which the first zero of the restoring moment is bracketed.
+_TIP_GRID = 256
+
+
+@njit(cache=True, nogil=True)
+def reaction_integral(t: float, kappa: float) -> float:
+    """∫₀^t n(φ)²·cos φ dφ, n = 1 + κ·sin(φ/2), t ≥ 0 [-] (closed form: with c = cos(t/2),
+    ∫ sin(φ/2)·cos φ = 2c − 4c³/3 − 2/3 and ∫ sin²(φ/2)·cos φ = ½ sin t − t/4 − sin 2t/8)."""
+    st = math.sin(t)
+    c = math.cos(0.5 * t)
+    linear = 2.0 * c - (4.0 / 3.0) * c * c * c - 2.0 / 3.0
+    square = 0.5 * st - 0.25 * t - 0.25 * st * math.cos(t)
+    return st + 2.0 * kappa * linear + kappa * kappa * square
 
 
 @njit(cache=True, nogil=True)
 def potential(theta: float, k_s: float, prm: KernelParams) -> float:
-    """V_s(θ) per unit I0 [rad²/s²]: gravity about the pivot plus the acting bar's energy."""
-    return prm.p2 * (math.cos(prm.alpha - abs(theta)) + k_s * (1.0 - math.cos(theta)))
+    """V_s(θ) per unit I0 [rad²/s²]: gravity about the corner, the acting bar's energy and
+    the base reaction."""
+    v = math.cos(prm.alpha - abs(theta)) + k_s * (1.0 - math.cos(theta))
+    if prm.xi != 0.0:
+        v -= prm.xi * reaction_integral(abs(theta), k_s * prm.kappa_per_k)
+    return prm.p2 * v
+
+
+@njit(cache=True, nogil=True)
+def restoring(theta: float, k_s: float, prm: KernelParams) -> float:
+    """The restoring moment per m·g·R at θ ≥ 0 [-]: sin(α − θ) + K_s·sin θ − ξ·n²·cos θ."""
+    m = math.sin(prm.alpha - theta) + k_s * math.sin(theta)
+    if prm.xi != 0.0:
+        n = 1.0 + k_s * prm.kappa_per_k * math.sin(0.5 * theta)
+        m -= prm.xi * n * n * math.cos(theta)
+    return m
 
 
 @njit(cache=True, nogil=True)
 def tipping_angle(k_s: float, prm: KernelParams) -> float:
-    """θ*: where V_s stops rising, tan θ* = sin α/(cos α − K_s); π/2 when K_s ≥ cos α [rad]."""
-    if k_s >= prm.cos_a:
-        return _HALF_PI
-    return math.atan2(prm.sin_a, prm.cos_a - k_s)
+    """θ*: where V_s stops rising, the first zero of :func:`restoring` in (0, π/2] [rad].
+
+    Edge pivot: tan θ* = sin α/(cos α − K_s), π/2 when K_s ≥ cos α.  With the base reaction:
+    α_x with no bar, else bracketed on a grid and bisected (π/2 when it stays positive).
+    """
+    if prm.xi == 0.0:
+        if k_s >= prm.cos_a:
+            return _HALF_PI
+        return math.atan2(prm.sin_a, prm.cos_a - k_s)
+    if k_s == 0.0:
+        return prm.alpha_x
+    lo = 0.0
+    for i in range(1, _TIP_GRID + 1):
+        hi = _HALF_PI * i / _TIP_GRID
+        if restoring(hi, k_s, prm) <= 0.0:
+            for _ in range(200):
+                mid = 0.5 * (lo + hi)
+                if restoring(mid, k_s, prm) > 0.0:
+                    lo = mid
+                else:
+                    hi = mid
+                if hi - lo <= 1e-15:
+                    break
+            return 0.5 * (lo + hi)
+        lo = hi
+    return _HALF_PI
 
 
 @njit(cache=True, nogil=True)
 def barrier_angle(bar_intact: bool, prm: KernelParams) -> float:
-    """Largest |θ| the wall can reach on a side without an event: min(θ*, θ_max) [rad]."""
+    """Largest |θ| the wall can reach on a side without an event: min(θ*, θ_max, θ_cr) [rad]."""
     if not bar_intact:
-        return prm.alpha
-    return min(tipping_angle(prm.k_bar, prm), prm.theta_max)
+        return prm.alpha_x
+    return min(prm.tip_bar, prm.theta_max, prm.theta_cr)
 
 
 @njit(cache=True, nogil=True)

@@ -18,8 +18,8 @@ RUPTURE_ENERGY_TRANSFER = 0  #: Eq. 12: ½I0θ'₊² = ½I0θ'₋² + U_r(θ_max
 RUPTURE_VELOCITY_CONTINUOUS = 1  #: θ' unchanged at rupture (the bar's energy is lost)
 
 COLLAPSE_OVERTURNING = 0  #: the wall falls (|θ| = π/2), followed into free vibration
-COLLAPSE_END_OF_RECORD = 1  #: |θ| ≥ α when the input ends (or |θ| reaches π/2 earlier)
-COLLAPSE_FIRST_EXCEEDANCE = 2  #: |θ| reaches α at any time
+COLLAPSE_END_OF_RECORD = 1  #: |θ| ≥ α_x when the input ends (or |θ| reaches π/2 earlier)
+COLLAPSE_FIRST_EXCEEDANCE = 2  #: |θ| reaches α_x at any time
 
 METHOD_DOPRI5 = 0  #: Dormand–Prince 5(4) with local error control (the default)
 METHOD_RK4 = 1  #: classical RK4 at a fixed step (the independent reference)
@@ -27,8 +27,9 @@ METHOD_BS3 = 2  #: Bogacki–Shampine 3(2) with local error control
 
 FATE_FELL = 0  #: |θ| reached π/2
 FATE_AT_REST = 1  #: `overturning`: the wall can no longer fall
-FATE_EXCEEDED = 2  #: `end-of-record`/`first-exceedance`: the rule's limit |θ| ≥ α was met
+FATE_EXCEEDED = 2  #: `end-of-record`/`first-exceedance`: the rule's limit |θ| ≥ α_x was met
 FATE_STANDING = 3  #: `end-of-record`/`first-exceedance`: the input ended below the limit
+FATE_CRUSHED = 4  #: the compressed zone reached the intact acting bar: the toe crushed
 
 STATUS_OK = 0
 STATUS_EVENT_OVERFLOW = 1  #: too many events in one sample interval (Zeno chatter guard)
@@ -59,7 +60,7 @@ class KernelParams(NamedTuple):
     g: float  #: gravity [m/s²]
     p2: float  #: p² [1/s²]
     p: float  #: frequency parameter p [1/s]
-    alpha: float  #: slenderness α [rad]
+    alpha: float  #: slenderness α [rad] (the corners: impacts and the error scale)
     sin_a: float  #: sin α
     cos_a: float  #: cos α
     one_sided: bool  #: only θ ≥ 0, rebound at θ = 0
@@ -73,3 +74,10 @@ class KernelParams(NamedTuple):
     method: int  #: METHOD_DOPRI5 or METHOD_RK4
     tolerance: float  #: local error tolerance of the embedded pair [-]
     fixed_step: float  #: largest RK4 step [s] (METHOD_RK4 only)
+    # --- the base reaction (docs/model.md §1.1); 0, α, ∞ with the edge pivot -------------
+    xi: float  #: ξ = x_W/(2R) [-]; 0: the edge pivot, the reaction term is skipped
+    kappa_per_k: float  #: κ/K [-]: κ_s = K_s·κ/K, κ = 2·b_r·E·A/(H·W) (0 without ξ)
+    theta_cr: float  #: |θ| at which the toe crushes under an intact acting bar [rad] (inf: never)
+    alpha_x: float  #: α_x = atan((B − x_W)/H) [rad]: the tipping limit of the rules and outputs
+    tan_ax: float  #: tan α_x [-]: the uplift threshold in g
+    tip_bar: float  #: θ*: where V stops rising with the acting bar intact [rad] (≤ π/2)

@@ -5,13 +5,15 @@ A newcomer's map:
 * The input is the record (plus ``n_tail`` zero samples).  Between two samples the ground
   acceleration is linear; steps never cross a sample, so every step sees a smooth input.
 * At rest nothing is integrated: the instant when the linear ground acceleration exceeds
-  g·tan α is solved for exactly (:func:`_uplift`) and rocking starts there.
+  g·tan α_x is solved for exactly (:func:`.jumps.uplift`) and rocking starts there.
 * Rocking: one step of the chosen method (:mod:`.steppers`), rejected and retried smaller
   while its error estimate exceeds the tolerance.  An accepted step is scanned for events on
   its dense output and each event is located on the integrator (:mod:`.events`); the jump is
-  applied there (:func:`_impact`, :func:`_rupture`) and the step restarts from that instant.
+  applied there (:mod:`.jumps`) and the step restarts from that instant.
+  The toe crushing (|θ| reaches θ_cr with the acting bar intact) is a collapse, as is the fall.
 * Collapse ``overturning``: after the input the wall moves freely until it falls or can no
-  longer fall (:mod:`.fate`).  ``end-of-record`` and ``first-exceedance`` judge |θ| against α.
+  longer fall (:mod:`.fate`).  ``end-of-record`` and ``first-exceedance`` judge |θ| against
+  α_x (α with the edge pivot).
 
 Everything here is numbers and arrays; the Python face is :mod:`frp_assess.dynamics.rocking`.
 """
@@ -26,13 +28,14 @@ from numba import njit
 
 from frp_assess.dynamics.kernel import events as ev
 from frp_assess.dynamics.kernel.fate import cannot_fall, remaining_peak
+from frp_assess.dynamics.kernel.jumps import impact, rupture, uplift
 from frp_assess.dynamics.kernel.params import (
     BAR_NONE,
-    BAR_SHARED,
     COLLAPSE_END_OF_RECORD,
     COLLAPSE_FIRST_EXCEEDANCE,
     COLLAPSE_OVERTURNING,
     FATE_AT_REST,
+    FATE_CRUSHED,
     FATE_EXCEEDED,
     FATE_FELL,
     FATE_STANDING,
@@ -41,8 +44,6 @@ from frp_assess.dynamics.kernel.params import (
     METHOD_DOPRI5,
     METHOD_RK4,
     MIN_STEP_FRACTION,
-    REST_VELOCITY,
-    RUPTURE_ENERGY_TRANSFER,
     STATUS_EVENT_OVERFLOW,
     STATUS_FREE_VIBRATION_UNDECIDED,
     STATUS_OK,
@@ -57,7 +58,8 @@ from frp_assess.dynamics.kernel.steppers import acceleration, step
 _NO_EVENT = 0
 _IMPACT = 1
 _RUPTURE = 2
-_LIMIT = 3  #: the collapse level: π/2 (fell) or α (first exceedance)
+_LIMIT = 3  #: the collapse level: π/2 (fell) or α_x (first exceedance)
+_CRUSH = 4  #: θ_cr of the intact acting bar: the toe crushes
 #: A step that would leave less than this fraction of itself before the next sample is
 #: stretched to the sample; shorter steps divide the rest of the interval equally.
 _SLIVER = 0.01
@@ -86,60 +88,6 @@ def history_length(n_input: int, dt: float, collapse_mode: int) -> int:
     if collapse_mode != COLLAPSE_OVERTURNING:
         return n_input
     return n_input + int(math.ceil(MAX_FREE_VIBRATION / dt)) + 1
-
-
-@njit(cache=True, nogil=True)
-def _uplift(
-    ua: float, slope: float, x: float, x_end: float, prm: KernelParams
-) -> tuple[float, float]:
-    """From rest at x, the instant in [x, x_end) the wall uplifts, and its side (0: none).
-
-    It starts with s = +1 when ü_g/g < −tan α and (two-sided only) with s = −1 when
-    ü_g/g > tan α; the input is linear, so the instant is exact.
-    """
-    tan_a = prm.sin_a / prm.cos_a
-    ux = ua + slope * x
-    ue = ua + slope * x_end
-    if ux < -tan_a:
-        return x, 1.0
-    if (not prm.one_sided) and ux > tan_a:
-        return x, -1.0
-    if ue < -tan_a:
-        return x + (-tan_a - ux) / slope, 1.0
-    if (not prm.one_sided) and ue > tan_a:
-        return x + (tan_a - ux) / slope, -1.0
-    return x_end, 0.0
-
-
-@njit(cache=True, nogil=True)
-def _impact(omega: float, s: float, prm: KernelParams) -> tuple[float, float, bool]:
-    """Jump at θ = 0: (θ'₊, new s, at rest).  Two-sided: the pivot changes; one-sided: rebound."""
-    if prm.one_sided:
-        omega_new = -prm.e_impact * omega
-        s_new = s
-    else:
-        omega_new = prm.e_impact * omega
-        s_new = -s
-    if abs(omega_new) < REST_VELOCITY * prm.p:
-        return 0.0, s_new, True
-    return omega_new, s_new, False
-
-
-@njit(cache=True, nogil=True)
-def _rupture(
-    omega: float, s: float, intact_pos: bool, intact_neg: bool, prm: KernelParams
-) -> tuple[float, bool, bool]:
-    """Jump at θ_max: (θ'₊, bar for s = +1 intact, bar for s = −1 intact)."""
-    if prm.bar_mode == BAR_SHARED:
-        intact_pos = False
-        intact_neg = False
-    elif s > 0.0:
-        intact_pos = False
-    else:
-        intact_neg = False
-    if prm.rupture_mode == RUPTURE_ENERGY_TRANSFER:  # Eq. 12
-        omega = math.copysign(math.sqrt(omega * omega + 2.0 * prm.rupture_energy), omega)
-    return omega, intact_pos, intact_neg
 
 
 @njit(cache=True, nogil=True)
@@ -205,9 +153,9 @@ def _record_sample(
 
 @njit(cache=True, nogil=True)
 def _verdict_at_end(theta: float, last_alpha_up: float, prm: KernelParams) -> tuple[int, float]:
-    """(fate, collapse time) of the α-based rules when the input ends without a decision:
-    `end-of-record` collapses when |θ| ≥ α then (at the last upward crossing of α)."""
-    if prm.collapse_mode == COLLAPSE_END_OF_RECORD and abs(theta) >= prm.alpha:
+    """(fate, collapse time) of the α_x-based rules when the input ends without a decision:
+    `end-of-record` collapses when |θ| ≥ α_x then (at the last upward crossing of α_x)."""
+    if prm.collapse_mode == COLLAPSE_END_OF_RECORD and abs(theta) >= prm.alpha_x:
         return FATE_EXCEEDED, last_alpha_up
     return FATE_STANDING, math.nan
 
@@ -274,6 +222,10 @@ def _first_event(
         u = ev.first_crossing(c0, c1, c2, c3, r1, r2, prm.theta_max, True)
         if 0.0 <= u < u_event:
             event, u_event, level = _RUPTURE, u, prm.theta_max
+    if bar_on and ymax >= prm.theta_cr:
+        u = ev.first_crossing(c0, c1, c2, c3, r1, r2, prm.theta_cr, True)
+        if 0.0 <= u < u_event:
+            event, u_event, level = _CRUSH, u, prm.theta_cr
     if ymax >= limit:
         u = ev.first_crossing(c0, c1, c2, c3, r1, r2, limit, True)
         if 0.0 <= u < u_event:
@@ -327,7 +279,7 @@ def simulate(
     n_input = n_rec + n_tail
     n_free_max = int(math.ceil(MAX_FREE_VIBRATION / dt))
     overturning = prm.collapse_mode == COLLAPSE_OVERTURNING
-    limit = prm.alpha if prm.collapse_mode == COLLAPSE_FIRST_EXCEEDANCE else 0.5 * math.pi
+    limit = prm.alpha_x if prm.collapse_mode == COLLAPSE_FIRST_EXCEEDANCE else 0.5 * math.pi
     inv_g = scale / prm.g
     adaptive = prm.method != METHOD_RK4
     # step-size exponent: 1/(q + 1), q the order of the embedded error estimate
@@ -385,13 +337,19 @@ def simulate(
         events = 0
         while x < dt:
             if resting:
-                x, side = _uplift(ua, slope, x, dt, prm)
+                x, side = uplift(ua, slope, x, dt, prm)
                 if side != 0.0:
                     resting = False
                     s = side
                     theta = 0.0
                     omega = 0.0
                     need_a = True
+                    if prm.theta_cr <= 0.0 and (intact_pos if s > 0.0 else intact_neg):
+                        # x_W already reaches the bar: the toe crushes as the wall uplifts
+                        fate = FATE_CRUSHED
+                        collapse_time = t_i + x
+                        decided_time = collapse_time
+                        break
                 continue
 
             bar_on = intact_pos if s > 0.0 else intact_neg
@@ -434,8 +392,8 @@ def simulate(
                 peak_bar = max(peak_bar, step_max)
 
             if event == _NO_EVENT:
-                if y0 < prm.alpha <= y1:
-                    last_alpha_up = t_i + x + hh * (prm.alpha - y0) / (y1 - y0)
+                if y0 < prm.alpha_x <= y1:
+                    last_alpha_up = t_i + x + hh * (prm.alpha_x - y0) / (y1 - y0)
                 if y1 < 0.0:
                     # s·θ left its regime without a located crossing: only possible at
                     # round-off level right after an uplift; the wall is at rest.
@@ -465,8 +423,8 @@ def simulate(
             tau, om_e, _resid = ev.locate_level(
                 theta, omega, a1, hh, u_event * hh, u0, slope, s, k_s, level, prm
             )
-            if y0 < prm.alpha <= level:
-                last_alpha_up = t_i + x + tau * (prm.alpha - y0) / (level - y0)
+            if y0 < prm.alpha_x <= level:
+                last_alpha_up = t_i + x + tau * (prm.alpha_x - y0) / (level - y0)
             x = x + tau
             t_event = t_i + x
             theta = s * level
@@ -475,13 +433,18 @@ def simulate(
             if event == _IMPACT:
                 n_impacts += 1
                 theta = 0.0
-                omega, s, resting = _impact(om_e, s, prm)
+                omega, s, resting = impact(om_e, s, prm)
             elif event == _RUPTURE:
                 if n_ruptures < rupture_time.shape[0]:
                     rupture_time[n_ruptures] = t_event
                     rupture_side[n_ruptures] = int(s)
                 n_ruptures += 1
-                omega, intact_pos, intact_neg = _rupture(om_e, s, intact_pos, intact_neg, prm)
+                omega, intact_pos, intact_neg = rupture(om_e, s, intact_pos, intact_neg, prm)
+            elif event == _CRUSH:
+                fate = FATE_CRUSHED
+                collapse_time = t_event
+                decided_time = t_event
+                break
             else:
                 fate = FATE_FELL if level >= 0.5 * math.pi else FATE_EXCEEDED
                 collapse_time = t_event

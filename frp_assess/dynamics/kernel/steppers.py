@@ -16,13 +16,26 @@ from frp_assess.dynamics.kernel.params import METHOD_BS3, METHOD_DOPRI5, KernelP
 
 @njit(cache=True, nogil=True)
 def acceleration(theta: float, s: float, u: float, k_s: float, prm: KernelParams) -> float:
-    """θ'' of Eq. 10 [rad/s²] in the regime s, ground acceleration u = ü_g/g (scaled)."""
+    """θ'' of Eq. 10 with the base reaction [rad/s²] in the regime s, ground acceleration
+    u = ü_g/g (scaled):
+
+        θ'' = −p²·[sin(αs − θ) + u·cos(αs − θ) + K_s·sin θ − s·ξ·n²·cos θ],
+        n = 1 + κ_s·sin(|θ|/2),  κ_s = K_s·κ/K   (docs/model.md §1.1)
+
+    With the edge pivot (ξ = 0) the reaction term is skipped: the paper's Eq. 10 bit for bit.
+    """
     sin_a = prm.sin_a
     cos_a = prm.cos_a
     st = math.sin(theta)
     ct = math.cos(theta)
     # sin(α s − θ) = s sinα cosθ − cosα sinθ ;  cos(α s − θ) = cosα cosθ + s sinα sinθ
-    return -prm.p2 * (s * sin_a * ct - cos_a * st + u * (cos_a * ct + s * sin_a * st) + k_s * st)
+    m = s * sin_a * ct - cos_a * st + u * (cos_a * ct + s * sin_a * st) + k_s * st
+    if prm.xi != 0.0:
+        # sin(|θ|/2) = s·sin θ / √(2·(1 + cos θ)): no cancellation near θ = 0, and smooth
+        # across θ = 0 inside a step that overshoots an impact before it is located
+        n = 1.0 + k_s * prm.kappa_per_k * s * st / math.sqrt(2.0 * (1.0 + ct))
+        m -= s * prm.xi * n * n * ct
+    return -prm.p2 * m
 
 
 #: The error norm measures θ against ERROR_FLOOR·α + |θ| and θ' against ERROR_FLOOR·p·α + |θ'|:
