@@ -30,7 +30,6 @@ if TYPE_CHECKING:
 __all__ = [
     "SIDECAR",
     "Unchanged",
-    "clear_sidecar",
     "inputs_digest",
     "project_changed",
     "project_digest",
@@ -39,7 +38,8 @@ __all__ = [
     "write_sidecar",
 ]
 
-#: the sidecar file in the output folder: {"digest", "created", "files", "pdf"}
+#: the sidecar file in the output folder: {"digest", "created", "files", "pdf", "results"}
+#: ("results": the SHA-256 of the results.json it belongs to)
 SIDECAR = ".inputs-digest.json"
 #: the members of a complete output set (report.pdf besides, unless --no-pdf)
 _SET_FILES = ("results.json", "results.csv", "spectra.csv")
@@ -91,17 +91,20 @@ def project_digest(
 def write_sidecar(
     out_dir: Path, digest: str, created: str, files: Sequence[str], *, pdf: bool
 ) -> None:
-    """Write :data:`SIDECAR` into ``out_dir`` (after the output set is complete)."""
+    """Write :data:`SIDECAR` into ``out_dir`` (after the output set is complete), tied to its
+    results.json by that file's SHA-256 (a sidecar left beside another results.json, by a
+    run stopped between the two writes or a file replaced by hand, is not believed)."""
     from frp_assess.io_utils import atomic_write_text
 
-    data = {"digest": digest, "created": created, "files": list(files), "pdf": pdf}
+    results = _file_hash(Path(out_dir) / "results.json")
+    data = {
+        "digest": digest,
+        "created": created,
+        "files": list(files),
+        "pdf": pdf,
+        "results": results,
+    }
     atomic_write_text(Path(out_dir) / SIDECAR, json.dumps(data, indent=1) + "\n")
-
-
-def clear_sidecar(out_dir: Path) -> None:
-    """Remove :data:`SIDECAR` (before a run rewrites the set: an interrupted run leaves none,
-    so the next run is never mistaken for unchanged)."""
-    (Path(out_dir) / SIDECAR).unlink(missing_ok=True)
 
 
 @dataclass(frozen=True)
@@ -138,6 +141,8 @@ def unchanged_run(
     if not all(os.path.isfile(out_dir / n) for n in needed) or not (out_dir / "records").is_dir():
         return None
     if inputs_digest(project_file, files, rtol=rtol, verify=verify) != digest:
+        return None
+    if _file_hash(out_dir / "results.json") != data.get("results"):
         return None
     return Unchanged(out_dir, digest, created)
 

@@ -13,7 +13,6 @@ from typing import TYPE_CHECKING, Any
 from rich.console import Console
 
 from frp_assess.app.rerun import (
-    clear_sidecar,
     inputs_digest,
     referenced_paths,
     unchanged_run,
@@ -262,7 +261,6 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
     path = Path(args.file)
     files = referenced_paths(load_project(path).project)
     digest = inputs_digest(path, files, rtol=args.rtol, verify=args.verify)
-    clear_sidecar(out_dir)  # an interrupted run leaves no sidecar: never "unchanged"
     console = make_console()
     with console.status("generating/reading the records and checking them against the spectrum"):
         seismic = prepare_records(inputs)

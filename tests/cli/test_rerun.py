@@ -81,6 +81,10 @@ def test_unchanged_needs_a_complete_set_and_the_same_digest(tmp_path: Path) -> N
     same = unchanged_run(project, out)
     assert same is not None and same.created == "2025-01-01"
     assert unchanged_run(project, out, rtol=1e-7) is None  # --rtol: rerun
+    (out / "results.json").write_text("y", encoding="utf-8")
+    assert unchanged_run(project, out) is None  # the sidecar belongs to another results.json
+    (out / "results.json").write_text("x", encoding="utf-8")
+    assert unchanged_run(project, out) is not None
     (tmp_path / "rec" / "a.AT2").write_text("1 2 3\n", encoding="utf-8")
     assert unchanged_run(project, out) is None  # a record changed: rerun
     (out / SIDECAR).write_text("{broken", encoding="utf-8")

@@ -89,12 +89,12 @@ def test_broken_project_exit_2_one_line_nothing_written(tmp_path, capsys, name):
 
 def test_interrupted_run_exits_130_without_results(tmp_path, capsys, monkeypatch):
     """Ctrl-C during the IDA: exit 130, a message, no results.json."""
-    import frp_assess.cli.run as run_cmd
+    import frp_assess.app.assessment as assessment
 
     def interrupted(*args, **kwargs):
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(run_cmd, "run_assessment", interrupted)
+    monkeypatch.setattr(assessment, "run_assessment", interrupted)  # cli.run imports it late
     project = tmp_path / "small.yaml"
     project.write_text(SMALL, encoding="utf-8")
     assert main(["run", str(project), "--no-pdf"]) == 130
