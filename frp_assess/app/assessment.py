@@ -142,7 +142,7 @@ def run_assessment(
     created: str | None = None,
     pdf: bool = True,
     write: bool = True,
-    inputs_digest: str = "",
+    inputs_digest: str | None = None,
 ) -> tuple[AssessmentResult, RunStats]:
     """Run the assessment and write ``out_dir``; returns (results, stats).
 

@@ -147,7 +147,7 @@ def unchanged_run(
     return Unchanged(out_dir, digest, created)
 
 
-def project_changed(project_file: Path | None, project: Project, digest: str) -> bool:
+def project_changed(project_file: Path | None, project: Project, digest: str | None) -> bool:
     """Whether the project file (or a file it references) changed since the run whose
     results carry ``digest`` (False when either is unknown: no file, no digest)."""
     if project_file is None or not digest:
