@@ -15,7 +15,7 @@ import datetime as _dt
 import os
 import threading
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from frp_assess.app.report import write_outputs
@@ -129,6 +129,7 @@ def run_assessment(
     created: str | None = None,
     pdf: bool = True,
     write: bool = True,
+    inputs_digest: str | None = None,
 ) -> tuple[AssessmentResult, RunStats]:
     """Run the assessment and write ``out_dir``; returns (results, stats).
 
@@ -136,6 +137,8 @@ def run_assessment(
     (case, record) IDA of the "ida" stage as it finishes, for per-case progress bars.
     ``write=False`` returns the results without writing the result files (the cache is
     still read and filled): how the TUI shows the last run again when it opens a project.
+    ``inputs_digest`` is written as results.json's ``inputs_digest`` (:mod:`frp_assess.app.
+    rerun`).
 
     Finished (case, record) IDAs are cached in ``out_dir/.cache`` as they complete, so a
     cancelled run (:class:`~frp_assess.errors.Cancelled`) loses nothing; result files are
@@ -223,6 +226,8 @@ def run_assessment(
         closest=decided.closest,
         robustness=decided.robustness,
     )
+    if inputs_digest:
+        results = replace(results, inputs_digest=inputs_digest)
     if write:
         report("writing", 0, 1)
         write_outputs(results, seismic, out_dir, pdf=pdf)
@@ -371,7 +376,7 @@ def load_previous(
     """
     stored = Path(out_dir) / "results.json"
     try:
-        created = from_json(stored.read_text(encoding="utf-8"), file=str(stored)).created
+        previous = from_json(stored.read_text(encoding="utf-8"), file=str(stored))
     except (OSError, UnicodeDecodeError, InputError):  # none, or not readable as this version
         return None
     inputs = inputs_from_project(project, base_dir, input_file)
@@ -379,6 +384,13 @@ def load_previous(
     if missing_idas(inputs, seismic, out_dir):
         return None
     results, stats = run_assessment(
-        inputs, out_dir, jobs=jobs, cancel=cancel, seismic=seismic, created=created, write=False
+        inputs,
+        out_dir,
+        jobs=jobs,
+        cancel=cancel,
+        seismic=seismic,
+        created=previous.created,
+        write=False,
+        inputs_digest=previous.inputs_digest,
     )
     return RunOutcome(results, seismic, inputs, Path(out_dir), stats, project)

@@ -8,6 +8,7 @@ run into a folder the user picks (the TUI's export).
 
 from __future__ import annotations
 
+import shutil
 import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -52,9 +53,24 @@ def write_outputs(
             write_at2(rec, staging / "records" / f"{rec.name}.AT2", f"{rec.name}: {rec.source}")
         atomic_write_text(staging / "spectra.csv", spectra_csv(results))
         atomic_write_text(staging / "results.csv", results_csv(results))
-        atomic_write_text(staging / "results.json", to_json(results))
-        if pdf:
+        text = to_json(results)
+        atomic_write_text(staging / "results.json", text)
+        if pdf and not _keep_pdf(out_dir, text, staging / "report.pdf"):
             build_pdf(results, staging / "report.pdf")
+
+
+def _keep_pdf(out_dir: Path, results_json: str, target: Path) -> bool:
+    """Put the stored report.pdf at ``target`` when the stored results.json is ``results_json``
+    byte for byte (the PDF is made from it alone: nothing to rebuild); returns whether it did."""
+    old_pdf = out_dir / "report.pdf"
+    try:
+        same = (out_dir / "results.json").read_bytes() == results_json.encode("utf-8")
+        if not same or not old_pdf.is_file() or old_pdf.is_symlink():
+            return False
+        shutil.copyfile(old_pdf, target)
+    except OSError:
+        return False
+    return True
 
 
 def _is_plain_file_name(name: str) -> bool:

@@ -8,21 +8,17 @@ import sys
 import threading
 from dataclasses import replace
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rich.console import Console
-from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
-from frp_assess.app.assessment import (
-    AssessmentInputs,
-    ComplianceReport,
-    default_out_dir,
-    load_inputs,
-    prepare_records,
-    run_assessment,
+from frp_assess.app.rerun import (
+    inputs_digest,
+    referenced_paths,
+    unchanged_run,
+    write_sidecar,
 )
 from frp_assess.cli.output import Column, make_console, print_table, user
-from frp_assess.cli.wall_args import TOLERANCE
 from frp_assess.errors import Cancelled, InputError
 from frp_assess.numbers import (
     checks_summary,
@@ -35,6 +31,9 @@ from frp_assess.numbers import (
 from frp_assess.output_set import FolderLock, check_out_dir
 from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.text_safety import plain
+
+if TYPE_CHECKING:  # the numerics are imported only when a run computes (not when unchanged)
+    from frp_assess.app.assessment import AssessmentInputs, ComplianceReport
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -53,7 +52,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--no-pdf", action="store_true", help="do not write report.pdf")
     p.add_argument(
         "--rtol",
-        type=TOLERANCE,
+        type=tolerance,
         default=None,
         metavar="TOL",
         help="integration tolerance, overriding analysis.integration.tolerance",
@@ -66,6 +65,20 @@ def register(sub: argparse._SubParsersAction) -> None:
     # hidden: fixes results.json's `created` (tests/golden; or SOURCE_DATE_EPOCH, api.run_date)
     p.add_argument("--created", type=iso_date, default=None, help=argparse.SUPPRESS)
     p.set_defaults(handler=run)
+
+
+def tolerance(text: str) -> float:
+    """``--rtol TOL``: the integration tolerance, in its declared range (dynamics/options.py;
+    imported here, when the option is given, not when the parser is built)."""
+    from frp_assess.cli.wall_args import TOLERANCE
+
+    return TOLERANCE(text)
+
+
+def default_out_dir(project_file: Path) -> Path:
+    """``<stem>-results/`` next to the project file (as
+    :func:`frp_assess.app.assessment.default_out_dir`, without importing the numerics)."""
+    return project_file.with_name(f"{project_file.stem}-results")
 
 
 def iso_date(text: str) -> str:
@@ -196,6 +209,13 @@ def print_floor_and_checks(console: Console, results: AssessmentResult) -> None:
 
 def run(args: argparse.Namespace) -> int:
     path = Path(args.file)
+    out = Path(args.out) if args.out else default_out_dir(path)
+    if args.created is None and (args.jobs is None or args.jobs >= 1):
+        same = unchanged_run(path, out, rtol=args.rtol, verify=args.verify, pdf=not args.no_pdf)
+        if same is not None:
+            return _unchanged(same.out_dir, same.created)
+    from frp_assess.app.assessment import load_inputs
+
     inputs = load_inputs(path)  # InputError -> one line, exit 2, nothing written
     if args.jobs is not None and args.jobs < 1:
         raise InputError(f"expected at least 1 job, found {args.jobs}", key="--jobs")
@@ -203,9 +223,22 @@ def run(args: argparse.Namespace) -> int:
         inputs = replace(inputs, model=replace(inputs.model, tolerance=args.rtol))
     if args.verify:
         inputs = replace(inputs, verify=True)
-    out_dir = check_out_dir(Path(args.out) if args.out else default_out_dir(path))
+    out_dir = check_out_dir(out)
     with FolderLock(out_dir):  # a second run into the same folder refuses here, exit 2
         return _run(args, inputs, out_dir)
+
+
+def _unchanged(out_dir: Path, created: str) -> int:
+    """Nothing changed since the stored run: say so and print its summary (results.json)."""
+    from frp_assess.results.json_io import from_json
+
+    stored = out_dir / "results.json"
+    results = from_json(stored.read_text(encoding="utf-8"), file=str(stored))
+    console = make_console()
+    console.print(f"unchanged since {user(created)}: nothing to recompute")
+    print_summary(console, results)
+    console.print(f"results in {user(out_dir)}/")
+    return 0
 
 
 def activation_text(results: AssessmentResult) -> str:
@@ -220,6 +253,20 @@ def activation_text(results: AssessmentResult) -> str:
 
 
 def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> int:
+    from rich.progress import (
+        BarColumn,
+        MofNCompleteColumn,
+        Progress,
+        TextColumn,
+        TimeElapsedColumn,
+    )
+
+    from frp_assess.app.assessment import prepare_records, run_assessment
+    from frp_assess.app.project import load_project
+
+    path = Path(args.file)
+    files = referenced_paths(load_project(path).project)
+    digest = inputs_digest(path, files, rtol=args.rtol, verify=args.verify)
     console = make_console()
     with console.status("generating/reading the records and checking them against the spectrum"):
         seismic = prepare_records(inputs)
@@ -263,10 +310,23 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
                 seismic=seismic,
                 pdf=not args.no_pdf,
                 created=args.created,
+                inputs_digest=digest,
             )
         except KeyboardInterrupt:
             cancel.set()
             raise Cancelled("interrupted") from None
+    write_sidecar(out_dir, digest, results.created, files, pdf=not args.no_pdf)
+    print_summary(console, results)
+    console.print(
+        f"{stats.computed} IDAs computed, {stats.reused} reused from the cache; "
+        f"results in {user(out_dir)}/"
+    )
+    return 0
+
+
+def print_summary(console: Console, results: AssessmentResult) -> None:
+    """What a run prints after its progress: the wall, the checks, the ranking, the
+    recommendation (from the typed results only: also for an unchanged rerun)."""
     w = results.wall
     urm = results.urm
     target = float(results.model.target)
@@ -307,8 +367,3 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
     check = numerical_check_text(results)
     if check is not None:
         console.print(user(check))
-    console.print(
-        f"{stats.computed} IDAs computed, {stats.reused} reused from the cache; "
-        f"results in {user(out_dir)}/"
-    )
-    return 0

@@ -575,6 +575,9 @@ class AssessmentResult:
     report: ReportSettings | None = None
     #: the site, when the spectrum is given by its coordinates; the key is absent otherwise
     site: SiteResult | None = field(default=None, metadata={"omit_if_none": True})
+    #: "sha256:<hex>" of what the results depend on (project file, record files, frp-assess
+    #: version, --rtol/--verify: frp_assess/app/rerun.py); None (the key absent) when not known
+    inputs_digest: str | None = field(default=None, metadata={"omit_if_none": True})
 
     @property
     def urm(self) -> CaseResult:

@@ -22,6 +22,7 @@ from textual.widget import Widget
 from textual.widgets import Button, Input, Select, TabbedContent, TabPane
 
 from frp_assess.app.assessment import UNREINFORCED, default_out_dir
+from frp_assess.app.rerun import project_changed
 from frp_assess.config.schema import Project
 from frp_assess.errors import InputError
 from frp_assess.numbers import numerical_check_text, recommendation_text
@@ -46,7 +47,7 @@ from frp_assess.tui.messages import ExportDone, PreviousLoaded, RunDone, RunProg
 from frp_assess.tui.project_form import ProjectForm
 from frp_assess.tui.ranking_table import RankingTable
 from frp_assess.tui.records_pane import RecordsPane
-from frp_assess.tui.results import ResultsPane
+from frp_assess.tui.results import STALE_TITLE, ResultsPane
 from frp_assess.tui.retrofits_pane import RetrofitsPane
 from frp_assess.tui.run_panel import RunPanel
 from frp_assess.tui.site_pane import SitePane
@@ -165,7 +166,16 @@ class FrpAssessApp(App[None]):
         self.query_one(StatusBar).show_state(self.path, modified, self.problems, self.running)
         if self.outcome is not None:
             stale = self.project is None or self.project != self.outcome.project
-            self.query_one(ResultsPane).mark_stale(stale)
+            self.query_one(ResultsPane).mark_stale(stale, self.file_changed(self.outcome))
+
+    def file_changed(self, outcome: RunOutcome) -> bool:
+        """The project file (or a record file) changed since the run shown: its digest is not
+        the results' (frp_assess/app/rerun.py)."""
+        digest = outcome.results.inputs_digest
+        changed = project_changed(self.path, outcome.project, digest)
+        tab = self.query_one("#tabs", TabbedContent).get_tab("tab-results")
+        tab.label = STALE_TITLE if changed else tab_title("tab-results")
+        return changed
 
     # ---------------------------------------------------------------------- opening
     def on_mount(self) -> None:
@@ -219,7 +229,8 @@ class FrpAssessApp(App[None]):
         """Show the results of a run in the Results and History tabs."""
         self.outcome = outcome
         stale = self.project != outcome.project
-        self.query_one(ResultsPane).show(outcome.results, str(outcome.out_dir), stale)
+        pane = self.query_one(ResultsPane)
+        pane.show(outcome.results, str(outcome.out_dir), stale, self.file_changed(outcome))
         self.query_one(HistoryPane).show_outcome(outcome)
         self.update_status()
 

@@ -55,6 +55,12 @@ def _resurrection(rec: RecordResult) -> Text | str:
     return Text(f"{min(again):.4f}", "yellow") if again else "—"
 
 
+#: before the note of the Results tab and in its title when the project file changed since
+#: the run shown (its digest is not the results', frp_assess/app/rerun.py)
+STALE_NOTE = "stale: the project changed since this run.  "
+STALE_TITLE = "Results (stale: the project changed since this run)"
+
+
 class ResultsPane(Vertical):
     """The results of the last run."""
 
@@ -128,11 +134,13 @@ class ResultsPane(Vertical):
         self.query_one("#results-tabs").display = False
 
     # ------------------------------------------------------------------------- display
-    def show(self, results: AssessmentResult, out_dir: str, stale: bool = False) -> None:
-        """Show a run's results."""
+    def show(
+        self, results: AssessmentResult, out_dir: str, stale: bool = False, changed: bool = False
+    ) -> None:
+        """Show a run's results (``changed``: the project file changed since the run)."""
         self.results = results
         self._out_dir = out_dir
-        self.mark_stale(stale)
+        self.mark_stale(stale, changed)
         self.query_one("#results-tabs").display = True
         self._summary(results)
         self.query_one(RankingTable).show(
@@ -164,12 +172,14 @@ class ResultsPane(Vertical):
         q("#kinematic-table", Static).update(kinematic_table(r))
         q("#sensitivity-table", Static).update(sensitivity_table(r))
 
-    def mark_stale(self, stale: bool) -> None:
-        """Say whether the project was edited after the run shown."""
+    def mark_stale(self, stale: bool, changed: bool = False) -> None:
+        """Say whether the project was edited after the run shown (``stale``: in the form;
+        ``changed``: the project file's digest is not the results')."""
         if self.results is None:
             return
         self.query_one("#results-note", Static).update(
             Text.assemble(
+                (STALE_NOTE if changed else "", "bold yellow"),
                 ("Results of the last run, in ", "dim"),
                 (printable(f"{self._out_dir}/"), ""),
                 ("  (edited since: ctrl+r to rerun)" if stale else "", "yellow"),

@@ -10,6 +10,7 @@ from pathlib import Path
 
 import pytest
 
+from frp_assess.app.rerun import SIDECAR
 from frp_assess.assess.cache import FIELD_CHECKS, MAX_ENTRY_BYTES, IdaCache, cache_file
 from frp_assess.cli import main
 from frp_assess.dynamics import IdaResult
@@ -100,6 +101,7 @@ def test_run_recomputes_damaged_entries(tmp_path: Path, capsys: pytest.CaptureFi
         data["collapse_multiplier"] = True
         p.write_text(json.dumps(data), encoding="utf-8")
     capsys.readouterr()
+    (out / SIDECAR).unlink()  # the inputs are unchanged: without this the run would stop there
     assert main(["run", str(project), "--out", str(out), "--jobs", "1", "--no-pdf"]) == 0
     cap = capsys.readouterr()
     warnings = [line for line in cap.err.splitlines() if "damaged cache entry" in line]

@@ -9,6 +9,7 @@ from pathlib import Path
 
 import pytest
 
+from frp_assess.app.rerun import SIDECAR
 from frp_assess.assess.from_project import load_inputs
 from frp_assess.assess.inputs import ArtificialRecords, RecordFile
 from frp_assess.cli import main
@@ -66,6 +67,9 @@ def test_small_project_end_to_end_and_instant_rerun(tmp_path, capsys):
     assert "INPUT NOT CODE-COMPLIANT" in said
 
     assert main(["run", str(project), "--no-pdf"]) == 0
+    assert "unchanged since " in capsys.readouterr().out  # nothing read but results.json
+    (out_dir / SIDECAR).unlink()  # without the digest: the run again, from the cache
+    assert main(["run", str(project), "--no-pdf"]) == 0
     assert "0 IDAs computed" in capsys.readouterr().out
     second = json.loads((out_dir / "results.json").read_text())
     first.pop("created"), second.pop("created")
@@ -86,12 +90,12 @@ def test_broken_project_exit_2_one_line_nothing_written(tmp_path, capsys, name):
 
 def test_interrupted_run_exits_130_without_results(tmp_path, capsys, monkeypatch):
     """Ctrl-C during the IDA: exit 130, a message, no results.json."""
-    import frp_assess.cli.run as run_cmd
+    import frp_assess.app.assessment as assessment
 
     def interrupted(*args, **kwargs):
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(run_cmd, "run_assessment", interrupted)
+    monkeypatch.setattr(assessment, "run_assessment", interrupted)  # cli.run imports it late
     project = tmp_path / "small.yaml"
     project.write_text(SMALL, encoding="utf-8")
     assert main(["run", str(project), "--no-pdf"]) == 130
