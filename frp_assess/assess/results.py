@@ -349,10 +349,10 @@ def code_check_result(check: KinematicCheck, mass: float, above_ground: bool = F
         demand=check.demand,
         ratio=check.ratio,
         passed=check.passed,
-        note="alpha0 = a_RM/g of the model the IDA runs (its moment balance about the pivot, "
-        "the base reaction included). Passive unbonded bars carry no load at rest: they do "
-        "not change alpha0, but each option's own model may (see kinematic_checks). A "
-        "supporting check: the IDA and the time-history checks decide." + at_height,
+        note="α0 = a_RM/g of the model the IDA runs (its moment balance about the corner, the "
+        "reaction of the compressed zone at the base included). Passive unbonded bars carry no "
+        "load at rest, so α0 is the same for every option. A supporting check: the IDA and "
+        "the time-history checks decide." + at_height,
     )
 
 
