@@ -38,6 +38,7 @@ from frp_assess.assess.masonry import MASONRY_TABLE, masonry_design_values
 from frp_assess.dynamics import Position
 from frp_assess.errors import InputError
 from frp_assess.results.as_built import AsBuilt, BarAnchorage, BarStrain
+from frp_assess.rules.bars import MAX_RATIO
 
 
 class DesignAnswer(Protocol):
@@ -100,8 +101,8 @@ def choose_layout(
     return lay
 
 
-#: the largest ratio [‰] the rocking model takes (frp_assess.dynamics.rebars.Rebars)
-MAX_INSTALLED_RATIO = 20.0
+#: the largest ratio [‰] the rocking model takes
+MAX_INSTALLED_RATIO = MAX_RATIO
 
 
 def _choose_layout(

@@ -57,6 +57,7 @@ from frp_assess.dynamics.wall import Mechanism
 from frp_assess.errors import InputError
 from frp_assess.motions.floor import default_period
 from frp_assess.motions.site import SiteHazard, site_hazard
+from frp_assess.rules.bars import MAX_RATIO
 from frp_assess.rules.geometry import slenderness_problem
 from frp_assess.rules.masonry import CONFIDENCE_FACTORS as CONFIDENCE_FACTORS  # re-export
 from frp_assess.rules.masonry import confidence_factor
@@ -71,8 +72,6 @@ RecordFormat = Literal["auto", "at2", "esm", "two-column", "one-column"]
 RECORD_FORMATS: tuple[str, ...] = get_args(RecordFormat)
 #: accepted ``units`` of a record file (as frp_assess.motions.readers.UNITS)
 RecordUnits = Literal["g", "m/s2", "m/s^2", "cm/s2", "cm/s^2", "gal"]
-#: the largest reinforcement ratio accepted [‰]
-MAX_RATIO = 20.0
 #: the largest bar diameter [mm] and area [mm²] accepted
 MAX_BAR_DIAMETER = 50.0
 MAX_BAR_AREA = 2000.0

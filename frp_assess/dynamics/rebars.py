@@ -42,8 +42,10 @@ class Rebars:
             raise ValueError(f"ultimate strain must be in (0, 1), got {self.ultimate_strain!r}")
         if self.position not in POSITIONS:
             raise ValueError(f"position must be 'centred' or 'external', got {self.position!r}")
-        if not (math.isfinite(self.ratio) and 0.0 < self.ratio <= 20.0):
-            raise ValueError(f"ratio must be in (0, 20] per mille, got {self.ratio!r}")
+        if not (math.isfinite(self.ratio) and 0.0 < self.ratio <= rule.MAX_RATIO):
+            raise ValueError(
+                f"ratio must be in (0, {rule.MAX_RATIO:g}] per mille, got {self.ratio!r}"
+            )
         if not (math.isfinite(self.strain_factor) and 0.0 < self.strain_factor <= 1.0):
             raise ValueError(f"strain factor must be in (0, 1], got {self.strain_factor!r}")
 

@@ -16,6 +16,9 @@ POSITIONS: tuple[Position, ...] = ("centred", "external")
 
 #: Cyclic reduction c of the rupture strain, ε_max = c·ε_u (paper, after its ref. [53]) [-].
 DEFAULT_STRAIN_FACTOR = 0.5
+#: The largest ratio ρ of the active bars the model takes [‰] (the project file, the
+#: bars as built and the rocking model refuse more).
+MAX_RATIO = 20.0
 #: γ_f for the rupture of FRP at the ultimate limit state (CNR-DT 200 R1/2013 Table 3.1) [-].
 FRP_RUPTURE_PARTIAL_FACTOR = 1.10
 #: k of the 5 % fractile of a normal distribution (a large number of tests) [-].
