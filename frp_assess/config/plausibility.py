@@ -3,7 +3,7 @@
 The schema (:mod:`frp_assess.config.schema`) refuses what the model cannot compute; a value
 inside that range but outside the range of practice — a wall 32 m high, a ratio of
 0.0015 ‰ — usually is a typing or units mistake, yet it runs silently.
-:func:`project_warnings` returns one :class:`Warning` per such value (the model of
+:func:`project_warnings` returns one :class:`PlausibilityWarning` per such value (the model of
 :mod:`frp_assess.motions.plausibility` for record units).  ``validate`` and ``run`` print each
 once as ``frp-assess: warning: file:line: key: message``; ``run`` also stores them, as
 ``key: message``, in results.json's ``input_warnings`` and the report lists them.  Pure: it
@@ -59,7 +59,7 @@ STOREY_HEIGHT = Practice(2.5, 6.0, "m", "a storey is 2.5-6 m high")
 
 
 @dataclass(frozen=True)
-class Warning:
+class PlausibilityWarning:
     """One implausible value: where it is and what is unusual about it."""
 
     loc: Loc
@@ -83,11 +83,11 @@ def _fmt(value: float, unit: str) -> str:
     return f"{value:g} {unit}".rstrip()
 
 
-def _check(value: float | None, practice: Practice, loc: Loc) -> Iterator[Warning]:
+def _check(value: float | None, practice: Practice, loc: Loc) -> Iterator[PlausibilityWarning]:
     if value is None or practice.low <= value <= practice.high:
         return
     side = "below" if value < practice.low else "above"
-    yield Warning(
+    yield PlausibilityWarning(
         loc,
         f"{_fmt(value, practice.unit)} is {side} the range of practice "
         f"{practice.low:g}-{_fmt(practice.high, practice.unit)} ({practice.reason}); check the "
@@ -134,8 +134,8 @@ def _values(project: Project) -> Iterator[tuple[float | None, Practice, Loc]]:
     yield project.bars.max_spacing, MAX_SPACING, ("bars", "max_spacing")
 
 
-def project_warnings(project: Project) -> tuple[Warning, ...]:
-    """One :class:`Warning` per value of ``project`` outside its range of practice."""
+def project_warnings(project: Project) -> tuple[PlausibilityWarning, ...]:
+    """One :class:`PlausibilityWarning` per value of ``project`` outside its range of practice."""
     return tuple(
         warning
         for value, practice, loc in _values(project)
