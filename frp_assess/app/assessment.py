@@ -24,6 +24,7 @@ from frp_assess.assess.floor_input import floor_record, floor_spectra
 from frp_assess.assess.from_project import inputs_from_project, load_inputs
 from frp_assess.assess.inputs import UNREINFORCED, AssessmentInputs, Material
 from frp_assess.assess.kinematic_checks import floor_ratio, ida_confidence_factor, linear_check
+from frp_assess.assess.limit_states import limit_state_spectrum
 from frp_assess.assess.results import (
     below_collapse,
     build_results,
@@ -153,7 +154,6 @@ def run_assessment(
         seismic = build_records(inputs)
         report("records", 1, 1)
     records = seismic.records
-    demand = inputs.spectrum.pga_g
     runner = IdaRunner(records, inputs, IdaCache(out_dir / CACHE_DIR), jobs=jobs, cancel=cancel)
 
     models = inputs.case_models()
@@ -191,6 +191,7 @@ def run_assessment(
         fc=fc,
         floor_pga=floor_pga,
         report=report,
+        state_records=seismic.state_records,
     )
     inputs, cases, recommended = decided.inputs, decided.cases, decided.recommended
     all_results = decided.results
@@ -201,15 +202,17 @@ def run_assessment(
     if inputs.design is not None:
         for mat in inputs.design.materials:
             materials.setdefault(mat.name, mat)
+    slv = limit_state_spectrum(inputs, "SLV")
     results = build_results(
         inputs=inputs,
         seismic=seismic,
         cases=cases,
         recommended=recommended,
-        # above ground the linear check's demand is a_Z, the floor's peak acceleration at Z
+        # the linear check is an SLV check (eq. C8.7.1.9), at the SLV spectrum; above ground
+        # its demand is a_Z, the floor's peak acceleration at Z
         check=linear_check(
             models[0],
-            demand * floor_ratio(inputs.spectrum, inputs.building),
+            slv.pga_g * floor_ratio(slv, inputs.building),
             inputs.code_check.knowledge_level,
             inputs.code_check.behaviour_factor,
         ),

@@ -7,10 +7,18 @@ An option (or the unreinforced wall) *passes* when every deciding check passes:
   C_max·PGA, so a value that is a lower bound passes only when the bound itself reaches the
   target);
 * the time-history check of Circolare 2019 §C8.7.1.2.1.9 at SLV and at SLC, on the same
-  model as the IDA, at the design intensity (×FC when FC enters the dynamics): d0 never
-  exceeded in any record and the mean of the peak displacements ≤ d_SLV (≤ d_SLC).  d0 is
-  where the *unreinforced* wall's restoring moment vanishes: the bars break brittly, so they
-  are not among the actions surely present up to collapse that the Circolare keeps in d0.
+  model as the IDA, each at its own limit state's intensity (×FC when FC enters the
+  dynamics): d0 never exceeded in any record and the mean of the peak displacements ≤ d_SLV
+  under the SLV motions (≤ d_SLC under the SLC motions).  With the site given by its
+  coordinates SLV and SLC have their own spectra (records generated for each, or the recorded
+  ones scaled to each a_g·S); with one spectrum given by its parameters both run at it.  d0
+  is where the *unreinforced* wall's restoring moment vanishes: the bars break brittly, so
+  they are not among the actions surely present up to collapse that the Circolare keeps in d0.
+
+The IDA's target stays on the assessment's limit state (the one its spectrum is built for,
+SLV unless the project chooses another): §C8.7.1.2.1 states the checks of a local mechanism
+at SLV and SLC but not an IDA, whose capacity/demand at the other limit states' a_g·S is
+stated beside it and does not decide.
 
 Each check has a margin, capacity over demand (≥ 1 passes): the IDA's value over the target;
 the time history's min(d_lim/mean peak, d0/largest peak), 0 when a record made the wall fall.
@@ -42,9 +50,10 @@ PIVOT_CHECK = "pivot check"
 
 DECISION_RULE = (
     "An option passes when every deciding check passes: the IDA's design a_dyn/(FC·a_g·S) "
-    "≥ {target:g} (a lower bound passes only if the bound reaches it) and the time-history "
-    "check of Circolare 2019 §C8.7.1.2.1.9 at SLV and SLC with the same model, at FC·a_g·S "
-    "(d0 of the unreinforced wall never exceeded, mean peak ≤ d_SLV, ≤ d_SLC). The governing "
+    "≥ {target:g} at the assessment's limit state (a lower bound passes only if the bound "
+    "reaches it) and the time-history check of Circolare 2019 §C8.7.1.2.1.9 at SLV and SLC "
+    "with the same model, each at FC·a_g·S of its own limit state (d0 of the unreinforced "
+    "wall never exceeded, mean peak ≤ d_SLV, ≤ d_SLC). The governing "
     "check is the one with the smallest margin (capacity/demand, ≥ 1 passes). The recommendation: "
     "the cheapest passing option, design-mode answers included; when none passes, none is "
     "recommended and the closest (largest governing margin) is named. The linear and "
@@ -69,12 +78,15 @@ class Evidence:
     censored: tuple[bool, ...]  #: per record: no collapse up to C_max (a_dyn a lower bound)
     demand: float  #: FC·a_g·S [g]
     target: float  #: required capacity/demand [-]
-    #: per record: peak displacement at the design intensity [m] (inf: it fell); None: the
+    #: per record: peak displacement under the SLV motions [m] (inf: it fell); None: the
     #: time-history check was not run
     peaks: tuple[float, ...] | None
     d0: float  #: [m]
     d_slv: float  #: [m]
     d_slc: float  #: [m]
+    #: per record: peak displacement under the SLC motions [m] (inf: it fell); None: the
+    #: SLV peaks (one spectrum known, or the time-history check was not run)
+    peaks_slc: tuple[float, ...] | None = None
     dropped: bool = False  #: the pivot check finds no rocking mechanism
     unreinforced: bool = False
     #: "mean" (≥ 7 records) or "least": how the design a_dyn is taken; None: by the count
@@ -127,15 +139,16 @@ def time_history_deciding_check(
     worst = max(peaks)
     mean = math.fsum(peaks) / n
     over = sum(1 for p in peaks if p > d0)
-    limit = "d_SLV" if name == TH_SLV else "d_SLC"
+    state = "SLV" if name == TH_SLV else "SLC"
+    limit = f"d_{state}"
     margin: float | None
     if not math.isfinite(worst):
         fell = sum(1 for p in peaks if not math.isfinite(p))
         margin = 0.0
-        detail = f"the wall falls under {fell} of {n} records at the design intensity"
+        detail = f"the wall falls under {fell} of {n} records at the {state} intensity"
     elif worst == 0.0:
         margin = None
-        detail = "no record makes the wall rock at the design intensity"
+        detail = f"no record makes the wall rock at the {state} intensity"
     else:
         margin = min(d_limit / mean, d0 / worst)
         detail = (
@@ -151,7 +164,8 @@ def verdict(ev: Evidence) -> Verdict:
     checks = [ida_deciding_check(ev)]
     if ev.peaks is not None:
         checks.append(time_history_deciding_check(ev.peaks, ev.d0, ev.d_slv, TH_SLV))
-        checks.append(time_history_deciding_check(ev.peaks, ev.d0, ev.d_slc, TH_SLC))
+        slc = ev.peaks if ev.peaks_slc is None else ev.peaks_slc
+        checks.append(time_history_deciding_check(slc, ev.d0, ev.d_slc, TH_SLC))
     if ev.dropped:  # first: it governs (margin 0) even where a time history gives 0 too
         checks.insert(
             0,
@@ -225,6 +239,7 @@ def without_record(ev: Evidence, k: int) -> Evidence:
         a_dyn=drop(ev.a_dyn),
         censored=drop(ev.censored),
         peaks=None if ev.peaks is None else drop(ev.peaks),
+        peaks_slc=None if ev.peaks_slc is None else drop(ev.peaks_slc),
         design_value=rule,
     )
 

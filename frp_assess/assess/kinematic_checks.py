@@ -17,10 +17,16 @@ wall's geometry.
   the displacement where a bar rupture drops the capacity by more than 50 %), demand from the
   elastic displacement spectrum at 8 % / 10 % damping, a_g,SLV not below a_g,SLD;
 * the time-history check of §C8.7.1.2.1.9 at SLV and at SLC: the rocking model under every
-  record at the design intensity (×FC when FC enters the dynamics), d0 never exceeded, mean
-  peak ≤ d_SLV (≤ d_SLC); the project gives one spectrum, so both limit states are checked at
-  its intensity (the SLC check is then implied by the SLV one);
-* the IDA's ζ_E = a_dyn/(FC·a_g·S), mean and least favourable record.
+  record at that limit state's intensity (×FC when FC enters the dynamics), d0 never
+  exceeded, mean peak ≤ d_SLV (≤ d_SLC);
+* the IDA's ζ_E = a_dyn/(FC·a_g·S), mean and least favourable record, at the assessment's
+  limit state (deciding) and at the a_g·S of SLV and of SLC (stated beside it).
+
+Each limit state is checked at its own spectrum when the site is given by its coordinates
+(:mod:`frp_assess.assess.limit_states`): the linear and SLV checks at the SLV spectrum, the
+SLC checks at the SLC spectrum, with records generated for it (artificial) or scaled to its
+a_g·S (recorded).  A project that gives one spectrum by its parameters has every limit state
+checked at that one intensity (the SLC check is then implied by the SLV one).
 
 The time-history checks and the IDA decide (:mod:`frp_assess.assess.decision`); the linear
 and nonlinear static checks are supporting checks.
@@ -39,11 +45,20 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from typing import Protocol
 
 import numpy as np
 from numpy.typing import NDArray
 
+from frp_assess.assess.check_demand import (
+    Building,
+    FloorPosition,
+    LimitStateDemand,
+    base_motions,
+    building_period,
+    displacement_spectrum,
+    floor_ratio,
+    limit_state_demand,
+)
 from frp_assess.assess.code_check import KinematicCheck, simple_overturning_check
 from frp_assess.assess.inputs import AssessmentInputs, CodeCheckSettings
 from frp_assess.assess.kinematic_nonlinear import (
@@ -55,16 +70,15 @@ from frp_assess.assess.kinematic_nonlinear import (
     limit_state_check,
     time_history_check,
 )
-from frp_assess.dynamics import RockingModel
-from frp_assess.motions import ElasticSpectrum, G, Record
-from frp_assess.motions.floor import (
-    default_period,
-    floor_acceleration,
-    floor_displacement_spectrum,
-    floor_peak_acceleration,
-    ground_displacement_spectrum,
-    ground_spectrum_function,
+from frp_assess.assess.limit_states import (
+    CHECKED_STATES,
+    intensity,
+    intensity_basis,
+    limit_state_spectrum,
+    own_spectra,
 )
+from frp_assess.dynamics import RockingModel
+from frp_assess.motions import G, Record
 from frp_assess.results.checks import (
     CapacitySummary,
     CaseChecks,
@@ -77,6 +91,30 @@ from frp_assess.results.checks import (
 )
 from frp_assess.results.model import MEAN_OF_RECORDS_FROM
 from frp_assess.rules.masonry import confidence_factor
+
+__all__ = [
+    "Building",
+    "FloorPosition",
+    "IdaSummary",
+    "LimitStateDemand",
+    "base_motions",
+    "building_period",
+    "case_checks",
+    "checks_at",
+    "displacement_spectrum",
+    "fc_basis",
+    "floor_ratio",
+    "ida_capacity_demand",
+    "ida_check",
+    "ida_confidence_factor",
+    "kinematic_checks",
+    "limit_state_demand",
+    "limit_state_demands",
+    "linear_check",
+    "model_capacity_curve",
+    "peak_displacements",
+    "time_history_result",
+]
 
 # --- the confidence factor in the IDA verdict ---------------------------------------------
 
@@ -130,137 +168,17 @@ class IdaSummary:
     records: int  #: number of records (≥ 7: the mean decides)
 
 
-def ida_check(ida: IdaSummary, demand: float, fc: float) -> IdaCheck:
+def ida_check(
+    ida: IdaSummary, demand: float, fc: float, limit_state: str | None = None
+) -> IdaCheck:
     """ζ_E of the IDA, mean and least favourable record, and the verdict on the design value
-    (the mean with ≥ 7 records, else the least favourable; docs/model.md §5)."""
+    (the mean with ≥ 7 records, else the least favourable; docs/model.md §5), against the
+    a_g·S ``demand`` [g] of ``limit_state``."""
     mean = ida_capacity_demand(ida.mean_a_dyn, demand, fc)
     least = ida_capacity_demand(ida.least_a_dyn, demand, fc)
     rule = "mean" if ida.records >= MEAN_OF_RECORDS_FROM else "least"
     zeta = mean if rule == "mean" else least
-    return IdaCheck(fc, demand, mean, least, rule, zeta, zeta >= 1.0)
-
-
-# --- the wall's place in the building --------------------------------------------------------
-
-
-class Building(Protocol):
-    """The building around a wall above ground (the project's ``building`` block)."""
-
-    @property
-    def height(self) -> float: ...  # H_b [m]
-    @property
-    def storeys(self) -> int: ...  # n [-]
-    @property
-    def wall_base(self) -> float: ...  # Z [m]
-    @property
-    def period(self) -> float | None: ...  # T1 [s]; None: C1·H_b^(3/4)
-    @property
-    def damping(self) -> float: ...  # ξ1 [-]
-
-
-@dataclass(frozen=True)
-class FloorPosition:
-    """A wall whose rocking base is at Z in a building (Circolare 2019 §C7.2.3, first mode).
-
-    For a caller without a project (T1 may be left to C1·H_b^(3/4)); any object with these
-    attributes, ``AssessmentInputs.building`` among them, is accepted by
-    :func:`kinematic_checks`.
-    """
-
-    height: float  #: H_b [m]
-    storeys: int  #: n [-]
-    wall_base: float  #: Z [m], 0 ≤ Z < H_b
-    period: float | None = None  #: T1 [s]; None: C1·H_b^(3/4) (motions.floor.default_period)
-    damping: float = 0.05  #: ξ1 [-]
-
-
-def building_period(building: Building) -> float:
-    """T1 [s]: the given one, or C1·H_b^(3/4) (Circolare 2019 eq. C7.3.2)."""
-    return default_period(building.height) if building.period is None else building.period
-
-
-def floor_ratio(spectrum: ElasticSpectrum, building: Building | None) -> float:
-    """a_Z,1 / (a_g·S) [-]: the floor's peak acceleration per unit ground intensity
-    (Circolare 2019 eq. C7.2.7, first mode); 1 at ground level."""
-    if building is None or building.wall_base == 0.0:
-        return 1.0
-    ground = ground_spectrum_function(spectrum)
-    t1 = building_period(building)
-    se_t1 = float(ground(np.asarray([t1]), building.damping)[0])
-    a_z = floor_peak_acceleration(
-        se_t1,
-        storeys=building.storeys,
-        z_over_h=building.wall_base / building.height,
-        building_damping=building.damping,
-    )
-    return a_z / spectrum.pga_g
-
-
-def displacement_spectrum(
-    spectrum: ElasticSpectrum, building: Building | None
-) -> DisplacementSpectrum:
-    """Sd(T [s], ξ [-]) [m] at the design intensity: the ground's S_De (NTC 2018 eq. 3.2.12)
-    or, above ground, the floor's (Circolare 2019 eq. C8.7.1.12)."""
-    ground = ground_spectrum_function(spectrum)
-    if building is None or building.wall_base == 0.0:
-
-        def at_ground(period: float, damping: float) -> float:
-            return float(ground_displacement_spectrum([period], ground, damping)[0])
-
-        return at_ground
-    t1 = building_period(building)
-    z_over_h = building.wall_base / building.height
-
-    def at_floor(period: float, damping: float) -> float:
-        return float(
-            floor_displacement_spectrum(
-                [period],
-                ground,
-                period=t1,
-                storeys=building.storeys,
-                z_over_h=z_over_h,
-                building_damping=building.damping,
-                damping=damping,
-            )[0]
-        )
-
-    return at_floor
-
-
-def base_motions(
-    records: Sequence[Record], building: Building | None, a_g: float
-) -> list[tuple[NDArray[np.float64], float]]:
-    """(acceleration [m/s²], dt [s]) at the wall's base under each record at the design
-    intensity: the ground record scaled to PGA = a_g·S (the IDA's measure, a_dyn = C·PGA of
-    the ground record, docs/model.md §5), then, above ground, filtered into the floor's
-    absolute acceleration (motions.floor; the filter is linear, so the order does not matter).
-
-    Args:
-        records: the ground records.
-        building: the building around a wall above ground (None: ground level).
-        a_g: the design intensity a_g·S [g].
-    """
-    if any(r.pga <= 0.0 for r in records):
-        raise ValueError("a record with zero PGA cannot be scaled to the design intensity")
-    scaled = [(r.acc * (a_g * G / r.pga), r.dt) for r in records]
-    if building is None or building.wall_base == 0.0:
-        return scaled
-    t1 = building_period(building)
-    return [
-        (
-            floor_acceleration(
-                acc,
-                dt,
-                height_building=building.height,
-                storeys=building.storeys,
-                wall_base=building.wall_base,
-                period=t1,
-                damping=building.damping,
-            ),
-            dt,
-        )
-        for acc, dt in scaled
-    ]
+    return IdaCheck(fc, demand, mean, least, rule, zeta, zeta >= 1.0, limit_state)
 
 
 # --- the checks of one case ----------------------------------------------------------------
@@ -314,9 +232,15 @@ def linear_check(
 
 
 def time_history_result(
-    peaks: Sequence[float], d0: float, d_limit: float, scale: float, limit_state: str
+    peaks: Sequence[float],
+    d0: float,
+    d_limit: float,
+    scale: float,
+    limit_state: str,
+    a_g: float | None = None,
 ) -> TimeHistoryResult:
-    """The §C8.7.1.2.1.9 check of ``peaks`` [m] against d0 and d_limit [m], as results."""
+    """The §C8.7.1.2.1.9 check of ``peaks`` [m] against d0 and d_limit [m], as results;
+    ``a_g`` [g] the limit state's a_g·S the records were scaled to."""
     th = time_history_check(peaks, d0, d_limit)
     margin: float | None
     if not math.isfinite(th.max_peak):
@@ -338,6 +262,7 @@ def time_history_result(
         passed=th.passed,
         limit_state=limit_state,
         margin=margin,
+        a_g=a_g,
     )
 
 
@@ -371,26 +296,37 @@ def case_checks(
     floor_ratio_value: float = 1.0,
     motions: Sequence[tuple[NDArray[np.float64], float]] | None = None,
     ida: IdaSummary | None = None,
+    slc: LimitStateDemand | None = None,
+    ida_demand: float | None = None,
+    ida_state: str | None = None,
 ) -> CaseChecks:
     """Every code check of one case (the wall of ``model`` with its bars, if any).
 
     Args:
         name: the case's name.
         model: its rocking model (wall, bars, options: the time-history check runs it).
-        a_g: design intensity a_g·S [g].
+        a_g: a_g·S of SLV [g], the demand of the linear and SLV checks.
         sd: elastic displacement spectrum at that intensity (:func:`displacement_spectrum`).
         settings: knowledge level, q, whether FC enters the dynamics.
         floor_ratio_value: a_Z,1/(a_g·S) (:func:`floor_ratio`; 1 at ground level).
-        motions: the base motions at the design intensity (:func:`base_motions`); they are
-            run ×FC when FC enters the dynamics; None: the time-history check is not made.
+        motions: the base motions at a_g (:func:`base_motions`); they are run ×FC when FC
+            enters the dynamics; None: the time-history checks are not made.
         ida: the IDA's a_dyn of this case; None: no IDA line.
+        slc: the action of SLC, its own spectrum; None: SLC is checked at the SLV action
+            (one spectrum known).
+        ida_demand: a_g·S [g] the deciding IDA line divides by (the assessment's limit state);
+            None: ``a_g``.
+        ida_state: the limit state of ``ida_demand`` (for the results).
     """
     fc = confidence_factor(settings.knowledge_level)
     curve = model_capacity_curve(model, fc)
+    at_slv = LimitStateDemand(a_g, sd, floor_ratio_value, motions)
+    at_slc = at_slv if slc is None else slc
     # a_g,SLD = a0*/(a_Z per unit a_g·S) (eq. C8.7.1.8), in g: a0* is in m/s²
-    sld = curve.a0 / G / floor_ratio_value
-    slv = limit_state_check(curve, "SLV", sd, a_g, a_g_sld_value=sld)
-    slc = limit_state_check(curve, "SLC", sd, a_g, a_g_sld_value=sld)
+    sld = curve.a0 / G / at_slv.floor_ratio
+    sld_slc = curve.a0 / G / at_slc.floor_ratio
+    slv_check = limit_state_check(curve, "SLV", at_slv.sd, at_slv.a_g, a_g_sld_value=sld)
+    slc_check = limit_state_check(curve, "SLC", at_slc.sd, at_slc.a_g, a_g_sld_value=sld_slc)
     lin = linear_check(
         model, a_g * floor_ratio_value, settings.knowledge_level, settings.behaviour_factor
     )
@@ -407,24 +343,82 @@ def case_checks(
         rupture_displacement=_optional(curve.rupture_displacement),
         rupture_limit=_optional(curve.rupture_limit),
     )
+    scale = fc if settings.fc_in_ida else 1.0
     time_history = time_history_slc = None
-    if motions is not None:
-        scale = fc if settings.fc_in_ida else 1.0
-        peaks = peak_displacements(model, motions, scale)
-        time_history = time_history_result(peaks, curve.d0, slv.d_limit, scale, "SLV")
-        time_history_slc = time_history_result(peaks, curve.d0, slc.d_limit, scale, "SLC")
+    if at_slv.motions is not None:
+        peaks = peak_displacements(model, at_slv.motions, scale)
+        time_history = time_history_result(
+            peaks, curve.d0, slv_check.d_limit, scale, "SLV", at_slv.a_g
+        )
+    if at_slc.motions is not None:
+        if at_slc.motions is not at_slv.motions:
+            peaks = peak_displacements(model, at_slc.motions, scale)
+        time_history_slc = time_history_result(
+            peaks, curve.d0, slc_check.d_limit, scale, "SLC", at_slc.a_g
+        )
     ida_result = None
+    ida_states: tuple[IdaCheck, ...] = ()
     if ida is not None:
-        ida_result = ida_check(ida, a_g, ida_confidence_factor(settings))
+        ida_fc = ida_confidence_factor(settings)
+        demand = a_g if ida_demand is None else ida_demand
+        ida_result = ida_check(ida, demand, ida_fc, ida_state)
+        ida_states = (
+            ida_check(ida, at_slv.a_g, ida_fc, "SLV"),
+            ida_check(ida, at_slc.a_g, ida_fc, "SLC"),
+        )
     return CaseChecks(
         case=name,
         capacity=capacity,
         linear=linear,
-        slv=_limit_state(slv, sld),
-        slc=_limit_state(slc, sld),
+        slv=_limit_state(slv_check, sld),
+        slc=_limit_state(slc_check, sld_slc),
         time_history=time_history,
         ida=ida_result,
         time_history_slc=time_history_slc,
+        ida_limit_states=ida_states,
+    )
+
+
+def limit_state_demands(
+    inputs: AssessmentInputs,
+    records: Sequence[Record] | None,
+    building: Building | None,
+    state_records: Mapping[str, Sequence[Record]] | None = None,
+) -> dict[str, LimitStateDemand]:
+    """The action of every checked limit state (SLV, SLC) at its own spectrum
+    (:func:`~frp_assess.assess.limit_states.limit_state_spectrum`), its motions from
+    ``state_records`` where that state has its own set, else ``records``."""
+    own = state_records or {}
+    return {
+        state: limit_state_demand(
+            limit_state_spectrum(inputs, state), building, own.get(state, records)
+        )
+        for state in CHECKED_STATES
+    }
+
+
+def checks_at(
+    name: str,
+    model: RockingModel,
+    inputs: AssessmentInputs,
+    demands: Mapping[str, LimitStateDemand],
+    ida: IdaSummary | None = None,
+) -> CaseChecks:
+    """:func:`case_checks` of one model at the actions of :func:`limit_state_demands`; the
+    deciding IDA line at the assessment's limit state."""
+    at_slv = demands["SLV"]
+    return case_checks(
+        name,
+        model,
+        a_g=at_slv.a_g,
+        sd=at_slv.sd,
+        settings=inputs.code_check,
+        floor_ratio_value=at_slv.floor_ratio,
+        motions=at_slv.motions,
+        ida=ida,
+        slc=demands["SLC"] if own_spectra(inputs) else None,
+        ida_demand=inputs.spectrum.pga_g,
+        ida_state=inputs.site_limit_state,
     )
 
 
@@ -434,35 +428,28 @@ def kinematic_checks(
     records: Sequence[Record] | None = None,
     ida: Mapping[str, IdaSummary] | None = None,
     building: Building | None = None,
+    state_records: Mapping[str, Sequence[Record]] | None = None,
 ) -> KinematicChecks:
-    """The code checks of the unreinforced wall and of every retrofit option.
+    """The code checks of the unreinforced wall and of every retrofit option, each limit
+    state at its own spectrum when the site is known (:mod:`~frp_assess.assess.limit_states`).
 
     Args:
         inputs: the assessment (wall, options, spectrum a_g·S, code-check settings).
-        records: the ground records (each is scaled to PGA = a_g·S here, :func:`base_motions`);
-            None: no time-history check.
+        records: the ground records (each is scaled to PGA = a_g·S of the limit state here,
+            :func:`base_motions`); None: no time-history check.
         ida: the IDA's a_dyn by case name; a case missing from it gets no IDA line.
         building: the building around a wall above ground; None: ``inputs.building`` (None
             there too: ground level).
+        state_records: the records of a limit state that has its own set (artificial records
+            generated for its spectrum, :func:`frp_assess.assess.seismic.build_records`);
+            a state missing from it uses ``records``.
     """
     if building is None:
         building = inputs.building
     settings = inputs.code_check
-    a_g = inputs.spectrum.pga_g
-    ratio = floor_ratio(inputs.spectrum, building)
-    sd = displacement_spectrum(inputs.spectrum, building)
-    motions = None if records is None else base_motions(records, building, a_g)
+    demands = limit_state_demands(inputs, records, building, state_records)
     cases = tuple(
-        case_checks(
-            name,
-            model,
-            a_g=a_g,
-            sd=sd,
-            settings=settings,
-            floor_ratio_value=ratio,
-            motions=motions,
-            ida=None if ida is None else ida.get(name),
-        )
+        checks_at(name, model, inputs, demands, None if ida is None else ida.get(name))
         for name, model in zip(inputs.case_names(), inputs.case_models(), strict=True)
     )
     floor = None
@@ -472,14 +459,16 @@ def kinematic_checks(
             storeys=building.storeys,
             period=building_period(building),
             damping=building.damping,
-            floor_ratio=ratio,
+            floor_ratio=floor_ratio(inputs.spectrum, building),
         )
     return KinematicChecks(
         knowledge_level=settings.knowledge_level,
         fc=confidence_factor(settings.knowledge_level),
         fc_basis=fc_basis(settings),
         fc_in_ida=settings.fc_in_ida,
-        a_g=a_g,
+        a_g=inputs.spectrum.pga_g,
         floor=floor,
         cases=cases,
+        intensities=tuple(intensity(inputs, state) for state in CHECKED_STATES),
+        intensity_basis=intensity_basis(inputs),
     )

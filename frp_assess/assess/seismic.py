@@ -5,6 +5,11 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from frp_assess.assess.inputs import ArtificialRecords, AssessmentInputs
+from frp_assess.assess.limit_states import (
+    CHECKED_STATES,
+    limit_state_spectrum,
+    spectrum_compatible_records,
+)
 from frp_assess.motions import (
     ComplianceReport,
     Record,
@@ -25,6 +30,11 @@ class SeismicInput:
     #: one line per record whose PGA as read (before scaling) looks like a units mistake
     #: (:func:`frp_assess.motions.plausibility.plausibility_warnings`); empty for artificial
     warnings: tuple[str, ...] = field(default=())
+    #: the artificial records of a checked limit state that has its own spectrum (the site
+    #: given by coordinates): generated for that spectrum with the project's count, seed,
+    #: duration and dt; used by that state's time-history check only (the IDA runs
+    #: ``records``)
+    state_records: dict[str, list[Record]] = field(default_factory=dict)
 
 
 def build_records(inputs: AssessmentInputs) -> SeismicInput:
@@ -52,4 +62,26 @@ def build_records(inputs: AssessmentInputs) -> SeismicInput:
             records = scale_to_pga(records, inputs.spectrum.pga_g)
             factor = inputs.spectrum.pga_g / before
     report = check_compliance(records, inputs.spectrum, t1=inputs.t1, recorded=recorded)
-    return SeismicInput(records, report, recorded, factor, warnings)
+    return SeismicInput(records, report, recorded, factor, warnings, state_records(inputs))
+
+
+def state_records(inputs: AssessmentInputs) -> dict[str, list[Record]]:
+    """The artificial records of every checked limit state with its own spectrum other than
+    the assessment's (:func:`~frp_assess.assess.limit_states.spectrum_compatible_records`):
+    SIMQKE for that spectrum, the same count, seed, duration and dt as the assessment's set
+    (the same seed gives the same records, bit for bit); empty otherwise."""
+    spec = inputs.records
+    if not isinstance(spec, ArtificialRecords):
+        return {}
+    return {
+        state: generate_artificial(
+            limit_state_spectrum(inputs, state),
+            count=spec.count,
+            seed=spec.seed,
+            duration=spec.duration,
+            dt=spec.dt,
+            t1=inputs.t1,
+        )
+        for state in CHECKED_STATES
+        if spectrum_compatible_records(inputs, state)
+    }

@@ -12,7 +12,7 @@ case under each convention and who takes over when it fails.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import asdict, dataclass, replace
 
 from frp_assess.assess.decision import (
@@ -30,11 +30,9 @@ from frp_assess.assess.explain import remark
 from frp_assess.assess.inputs import AssessmentInputs, Option
 from frp_assess.assess.kinematic_checks import (
     IdaSummary,
-    base_motions,
-    case_checks,
-    displacement_spectrum,
-    floor_ratio,
+    checks_at,
     kinematic_checks,
+    limit_state_demands,
 )
 from frp_assess.assess.results import case_result
 from frp_assess.assess.runner import CaseSummary, DesignResult, IdaRunner, design_search, summarise
@@ -43,7 +41,7 @@ from frp_assess.assess.statistics import fit_lognormal_fragility
 from frp_assess.config.schema import format_ratio
 from frp_assess.dynamics import IdaResult, RockingModel
 from frp_assess.motions import Record
-from frp_assess.results.checks import CaseChecks, KinematicChecks
+from frp_assess.results.checks import CaseChecks, KinematicChecks, TimeHistoryResult
 from frp_assess.results.model import CaseResult, Sensitivity, SensitivityRow
 from frp_assess.results.verdict import ConventionOutcome, LeaveOneOut, Robustness
 
@@ -54,26 +52,21 @@ Report = Callable[[str, int, int], None]
 
 
 class CheckContext:
-    """The code checks of any model of one assessment at its design intensity."""
+    """The code checks of any model of one assessment, each limit state at its own action
+    (:func:`~frp_assess.assess.kinematic_checks.limit_state_demands`)."""
 
-    def __init__(self, inputs: AssessmentInputs, records: Sequence[Record]) -> None:
+    def __init__(
+        self,
+        inputs: AssessmentInputs,
+        records: Sequence[Record],
+        state_records: Mapping[str, Sequence[Record]] | None = None,
+    ) -> None:
         self.inputs = inputs
-        self.a_g = inputs.spectrum.pga_g
-        self.ratio = floor_ratio(inputs.spectrum, inputs.building)
-        self.sd = displacement_spectrum(inputs.spectrum, inputs.building)
-        self.motions = base_motions(records, inputs.building, self.a_g)
+        self.demands = limit_state_demands(inputs, records, inputs.building, state_records)
 
     def checks(self, name: str, model: RockingModel) -> CaseChecks:
-        """Every code check of ``model`` (the time histories at the design intensity)."""
-        return case_checks(
-            name,
-            model,
-            a_g=self.a_g,
-            sd=self.sd,
-            settings=self.inputs.code_check,
-            floor_ratio_value=self.ratio,
-            motions=self.motions,
-        )
+        """Every code check of ``model`` (the time histories at each limit state's action)."""
+        return checks_at(name, model, self.inputs, self.demands)
 
     def screen(self, model: RockingModel) -> bool:
         """The time-history checks at SLV and SLC pass (design mode's cheap first test)."""
@@ -89,8 +82,6 @@ def evidence(
     target: float,
 ) -> Evidence:
     """What the decision reads of one case; ``demand`` = FC·a_g·S [g]."""
-    th = checks.time_history
-    peaks = None if th is None else tuple(math.inf if p is None else p for p in th.peaks)
     return Evidence(
         name=case.name,
         cost=case.frp_cost,
@@ -99,13 +90,19 @@ def evidence(
         censored=tuple(a is None for a in summary.a_dyn),
         demand=demand,
         target=target,
-        peaks=peaks,
+        peaks=_peaks(checks.time_history),
         d0=checks.capacity.d0,
         d_slv=checks.slv.d_limit,
         d_slc=checks.slc.d_limit,
+        peaks_slc=_peaks(checks.time_history_slc),
         dropped=not case.is_unreinforced and case.pivot is not None and case.pivot.dropped,
         unreinforced=case.is_unreinforced,
     )
+
+
+def _peaks(th: TimeHistoryResult | None) -> tuple[float, ...] | None:
+    """The peaks [m] of a time-history check (inf: the wall fell); None: not run."""
+    return None if th is None else tuple(math.inf if p is None else p for p in th.peaks)
 
 
 def falls_inside(ev: Evidence) -> int:
@@ -205,15 +202,18 @@ def assess_and_decide(
     fc: float,
     floor_pga: Sequence[float] | None,
     report: Report,
+    state_records: Mapping[str, Sequence[Record]] | None = None,
 ) -> DecidedRun:
     """Design mode, the code checks, the decision and its robustness (module docstring).
 
     ``runner`` ran ``all_results`` (the cases of ``inputs``); ``sens_runner`` shares its cache
-    and counts the sensitivity's IDAs apart; ``fc`` divides the IDA capacity.
+    and counts the sensitivity's IDAs apart; ``fc`` divides the IDA capacity;
+    ``state_records`` the records of a limit state with its own set
+    (:attr:`~frp_assess.assess.seismic.SeismicInput.state_records`).
     """
     names = [r.name for r in records]
     demand = inputs.spectrum.pga_g
-    ctx = CheckContext(inputs, records)
+    ctx = CheckContext(inputs, records, state_records)
     design: list[DesignResult] | None = None
     design_cases: list[str | None] = []
     if inputs.design is not None:
@@ -251,6 +251,7 @@ def assess_and_decide(
             for c, s in zip(raw, summaries, strict=True)
         },
         building=inputs.building,
+        state_records=state_records,
     )
     report("checks", 1, 1)
     ev = [
@@ -306,16 +307,15 @@ def _variant_verdict(
     """The verdict of ``model`` (a convention variant of ``base``'s case)."""
     s = summarise(runner.run([model])[0], max_multiplier, model.a_rm_g)
     c = ctx.checks(base.name, model)
-    th = c.time_history
-    peaks = None if th is None else tuple(math.inf if p is None else p for p in th.peaks)
     ev = replace(
         base,
         a_dyn=s.a_dyn_bound,
         censored=tuple(a is None for a in s.a_dyn),
-        peaks=peaks,
+        peaks=_peaks(c.time_history),
         d0=c.capacity.d0,
         d_slv=c.slv.d_limit,
         d_slc=c.slc.d_limit,
+        peaks_slc=_peaks(c.time_history_slc),
     )
     return verdict(ev), s
 

@@ -68,7 +68,9 @@ class LimitStateResult:
     period: float  #: secant period T_SLV or T_SLC [s]
     damping: float  #: equivalent damping of the mechanism [-] (0.08 SLV, 0.10 SLC)
     demand: float  #: displacement demand at the design intensity [m]
-    a_g: float  #: the design intensity a_g·S [g]
+    a_g: (
+        float  #: the intensity a_g·S of this limit state [g] (its own spectrum with the site known)
+    )
     a_g_sld: float  #: a_g,SLD, the lower bound of a_g,SLV [g]
     a_g_capacity: float  #: a_g,SLV or a_g,SLC, the intensity whose demand equals d_limit [g]
     zeta_e: float  #: a_g_capacity / a_g [-]
@@ -99,6 +101,9 @@ class TimeHistoryResult:
     #: min(d_limit/mean peak, d0/largest peak) [-]: the check passes at ≥ 1; 0 when a record
     #: made the wall fall; None when no record made it rock (unbounded)
     margin: float | None = None
+    #: a_g·S of the limit state [g], the PGA every record is scaled to (before ×FC); None in
+    #: files written before it
+    a_g: float | None = None
 
 
 @dataclass(frozen=True)
@@ -112,6 +117,8 @@ class IdaCheck:
     design_value: str  #: "mean" (≥ 7 records) or "least" (fewer): which ζ_E decides
     zeta_e: float  #: the deciding ζ_E [-]
     passed: bool
+    #: the limit state whose a_g·S is the demand ("SLV", "SLC"); None: the assessment's
+    limit_state: str | None = None
 
 
 @dataclass(frozen=True)
@@ -127,6 +134,9 @@ class CaseChecks:
     ida: IdaCheck | None  #: None: no IDA result given
     #: the time-history check against d_SLC (None: not run, or a file written before it)
     time_history_slc: TimeHistoryResult | None = None
+    #: the IDA's capacity/demand a_dyn/(FC·a_g·S) at each checked limit state's own a_g·S
+    #: (SLV, SLC); supporting: ``ida`` (the assessment's limit state) decides
+    ida_limit_states: tuple[IdaCheck, ...] = ()
 
     @property
     def passed(self) -> bool:
@@ -138,6 +148,22 @@ class CaseChecks:
 
 
 @dataclass(frozen=True)
+class LimitStateIntensity:
+    """The seismic action one limit state is checked at (NTC 2018 §3.2.3.2.1)."""
+
+    limit_state: str  #: "SLV" or "SLC"
+    a_g_s: float  #: a_g·S [g], the spectrum's zero-period value
+    ag: float | None  #: a_g on rock [g]; None: a spectrum without it (a table)
+    S: float | None  #: S = S_S·S_T [-]; None: not an NTC spectrum
+    F0: float | None  #: [-]; None: not an NTC spectrum
+    Tc_star: float | None  #: T_C* [s]; None: not an NTC spectrum
+    #: "site": this limit state's own spectrum from the site's coordinates; "typed": the
+    #: project's one spectrum (given by its parameters), the same for every limit state
+    source: str
+    records: str  #: how the time-history check's records are obtained (one phrase)
+
+
+@dataclass(frozen=True)
 class KinematicChecks:
     """The code checks of every case, with the basis of the confidence factor."""
 
@@ -145,6 +171,10 @@ class KinematicChecks:
     fc: float  #: FC of the code checks [-]
     fc_basis: str  #: one sentence: where FC comes from
     fc_in_ida: bool  #: FC also divides the IDA capacity (and scales the time-history records)
-    a_g: float  #: design intensity a_g·S [g]
+    a_g: float  #: the assessment's design intensity a_g·S [g] (its limit state's)
     floor: FloorBasis | None  #: None: the wall stands at ground level
     cases: tuple[CaseChecks, ...]
+    #: the action each checked limit state is checked at (SLV, SLC); empty in older files
+    intensities: tuple[LimitStateIntensity, ...] = ()
+    #: one sentence: whether each limit state has its own spectrum or all share one
+    intensity_basis: str = ""
