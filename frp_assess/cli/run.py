@@ -203,6 +203,9 @@ def print_floor_and_checks(console: Console, results: AssessmentResult) -> None:
             f"(first mode: γ1 = {b.gamma1:.3g}, ψ1 = {b.psi1:.3g}, T1 = {b.period:.3g} s); "
             "a_dyn and capacity/demand are in ground terms"
         )
+    kc = results.kinematic_checks
+    if kc is not None and kc.intensity_basis:
+        console.print(f"limit states: {user(kc.intensity_basis)}")
     for label, line in checks_summary(results, labelled=True):
         console.print(f"code checks, {user(label)}: {user(line)}")
 

@@ -117,6 +117,20 @@ def checks_table(results: Results, lang: Lang) -> TableData | None:
     return TableData(header, rows)
 
 
+def intensities_text(results: Results, lang: Lang) -> str:
+    """One sentence: the a_g·S each limit state is checked at (its own spectrum from the
+    site, or the one spectrum given); empty for results without it."""
+    kc = results.kinematic_checks
+    if kc is None or not kc.intensities:
+        return ""
+    if kc.intensities[0].source == "site":
+        states = "; ".join(
+            f"{i.limit_state} a<sub>g</sub>·S = {lang.num(i.a_g_s, 3)} g" for i in kc.intensities
+        )
+        return lang.t("annex.checks.states", states=states)
+    return lang.t("annex.checks.one_spectrum", ags=lang.num(kc.intensities[0].a_g_s, 3))
+
+
 def bars_table(results: Results, lang: Lang) -> TableData | None:
     n = lang.num
     built = [(c, c.as_built) for c in results.ranked_options if c.as_built is not None]
@@ -158,6 +172,9 @@ def annex(results: Results, lang: Lang) -> list[Block]:
         out.append(grid(checks, [x * mm for x in (52, 24, 24, 24, 26, 24)], wrap=(0,),
                         small=True))  # fmt: skip
         out.append(markup(lang.t("annex.checks.note"), "caption"))
+        states = intensities_text(results, lang)
+        if states:
+            out.append(markup(states, "caption"))
     bars = bars_table(results, lang)
     if bars is not None:
         out += [cond_break(60 * mm), h2("B.5  " + lang.t("annex.h.bars"))]

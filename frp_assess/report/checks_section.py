@@ -165,6 +165,7 @@ def checks_section(checks: KinematicChecks) -> list[Block]:
             "ζ_E is a ratio of displacements, the others of ground accelerations."
         ),
         para(basis_text(checks), "small"),
+        *([para(checks.intensity_basis, "small")] if checks.intensity_basis else []),
         markup(f"<b>Confidence factor.</b> {esc(checks.fc_basis)}", "small"),
         gap(4),
         grid(
