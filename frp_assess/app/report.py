@@ -32,8 +32,9 @@ __all__ = ["build_pdf", "export_run", "rebuild_report", "write_outputs"]
 def write_outputs(
     results: AssessmentResult, seismic: SeismicInput, out_dir: Path, *, pdf: bool
 ) -> None:
-    """Write the output set — results.json, results.csv, spectra.csv, records/*.AT2 and (if
-    ``pdf`` and available) report.pdf — as one set (:mod:`frp_assess.output_set`).
+    """Write the output set — results.json, results.csv, spectra.csv, records/*.AT2 (and
+    records/SLC/*.AT2 for a limit state with its own set of records) and (if ``pdf`` and
+    available) report.pdf — as one set (:mod:`frp_assess.output_set`).
 
     The folder is locked for the duration, the set is written into a fresh staging folder
     inside ``out_dir`` and swapped in only once complete: any failure (disk full, an error in
@@ -51,6 +52,10 @@ def write_outputs(
     with FolderLock(out_dir), staged_set(out_dir) as staging:
         for rec in seismic.records:
             write_at2(rec, staging / "records" / f"{rec.name}.AT2", f"{rec.name}: {rec.source}")
+        for state, recs in seismic.state_records.items():  # a limit state's own set
+            for rec in recs:
+                path = staging / "records" / state / f"{rec.name}.AT2"
+                write_at2(rec, path, f"{rec.name} ({state} spectrum): {rec.source}")
         atomic_write_text(staging / "spectra.csv", spectra_csv(results))
         atomic_write_text(staging / "results.csv", results_csv(results))
         text = to_json(results)

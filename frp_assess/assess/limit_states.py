@@ -75,7 +75,8 @@ def records_basis(inputs: AssessmentInputs, state: str) -> str:
             return "the assessment's artificial records, each scaled to PGA = a_g·S"
         return (
             f"artificial records generated for the {state} spectrum (seed "
-            f"{inputs.records.seed}, as the assessment's), each scaled to PGA = a_g·S"
+            f"{inputs.records.seed}, as the assessment's; records/{state}/), each scaled to "
+            "PGA = a_g·S"
         )
     return f"the recorded accelerograms, each scaled to PGA = a_g·S of {state}"
 
