@@ -469,6 +469,8 @@ def kinematic_checks(
         a_g=inputs.spectrum.pga_g,
         floor=floor,
         cases=cases,
-        intensities=tuple(intensity(inputs, state) for state in CHECKED_STATES),
+        intensities=tuple(
+            intensity(inputs, state, (state_records or {}).get(state)) for state in CHECKED_STATES
+        ),
         intensity_basis=intensity_basis(inputs),
     )

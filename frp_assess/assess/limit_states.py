@@ -19,8 +19,10 @@ Units: accelerations in g; periods in s.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from frp_assess.assess.inputs import ArtificialRecords, AssessmentInputs
-from frp_assess.motions import ElasticSpectrum, ntc2018_spectrum
+from frp_assess.motions import ElasticSpectrum, Record, check_compliance, ntc2018_spectrum
 from frp_assess.results.checks import LimitStateIntensity
 
 #: the limit states the code checks of a local mechanism are made at (Circolare 2019
@@ -81,8 +83,12 @@ def records_basis(inputs: AssessmentInputs, state: str) -> str:
     return f"the recorded accelerograms, each scaled to PGA = a_g·S of {state}"
 
 
-def intensity(inputs: AssessmentInputs, state: str) -> LimitStateIntensity:
-    """The seismic action ``state`` is checked at, for results.json."""
+def intensity(
+    inputs: AssessmentInputs, state: str, own_records: Sequence[Record] | None = None
+) -> LimitStateIntensity:
+    """The seismic action ``state`` is checked at, for results.json; ``own_records`` the
+    state's own set (checked against its spectrum, EC8 §3.2.3.1.2 and NTC 2018 §3.2.3.6),
+    None: it uses the assessment's."""
     spectrum = limit_state_spectrum(inputs, state)
     p = spectrum.parameters
 
@@ -99,6 +105,9 @@ def intensity(inputs: AssessmentInputs, state: str) -> LimitStateIntensity:
         Tc_star=number("Tc_star"),
         source=SITE if own_spectra(inputs) else TYPED,
         records=records_basis(inputs, state),
+        records_compliant=None
+        if not own_records
+        else bool(check_compliance(list(own_records), spectrum, t1=inputs.t1).passed),
     )
 
 

@@ -161,6 +161,10 @@ class LimitStateIntensity:
     #: project's one spectrum (given by its parameters), the same for every limit state
     source: str
     records: str  #: how the time-history check's records are obtained (one phrase)
+    #: a set of its own (artificial, for this limit state's spectrum) passes the code's
+    #: spectrum-compatibility checks (EC8 §3.2.3.1.2, NTC 2018 §3.2.3.6) against it; None:
+    #: the assessment's set, whose checks are results.json "compliance"
+    records_compliant: bool | None = None
 
 
 @dataclass(frozen=True)

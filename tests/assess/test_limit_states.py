@@ -36,6 +36,7 @@ from frp_assess.assess.limit_states import (
     own_spectra,
     spectrum_compatible_records,
 )
+from frp_assess.assess.seismic import state_records
 from frp_assess.dynamics import ModelOptions
 from frp_assess.motions import ElasticSpectrum, Record, ntc2018_spectrum
 from frp_assess.motions.site import SiteHazard
@@ -212,3 +213,18 @@ def test_the_slc_time_history_decides_on_its_own_peaks():
     assert v.governing_check == TH_SLC and not v.passes
     one = {c.name: c for c in verdict(_evidence((0.02,) * 7, None)).checks}
     assert one[TH_SLC].passed and one[TH_SLC].margin == pytest.approx(6.0)
+
+
+def test_the_slc_set_is_generated_for_the_slc_spectrum():
+    """Artificial records with the site known: a set of their own for SLC only (SLV is the
+    assessment's), whose mean PGA reaches a_g·S of SLC, 0.354806 g (EC8 §3.2.3.1.2(4)b, the
+    generator's set factor), and which is checked against the SLC spectrum."""
+    inputs = _inputs(records=ArtificialRecords(count=3, seed=5, duration=25.0, dt=0.02))
+    own = state_records(inputs)
+    assert list(own) == ["SLC"] and len(own["SLC"]) == 3
+    assert all(r.dt == 0.02 for r in own["SLC"])
+    assert sum(r.pga_g for r in own["SLC"]) / 3 >= 0.354806 * (1 - 1e-6)
+    checks = kinematic_checks(inputs, state_records=own)
+    slv, slc = checks.intensities
+    assert slv.records_compliant is None and slc.records_compliant is True
+    assert "records/SLC/" in slc.records and "seed 5" in slc.records
