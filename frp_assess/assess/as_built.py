@@ -33,7 +33,7 @@ from frp_assess.assess.bars import (
     fibre_of,
     nominal_area,
 )
-from frp_assess.assess.inputs import AssessmentInputs, BarSettings, Material, Option
+from frp_assess.assess.inputs import AssessmentInputs, BarSettings, Material, RetrofitOption
 from frp_assess.assess.masonry import MASONRY_TABLE, masonry_design_values
 from frp_assess.dynamics import Position
 from frp_assess.errors import InputError
@@ -154,7 +154,7 @@ def _choose_layout(
     return best
 
 
-def option_with_layout(inputs: AssessmentInputs, option: Option) -> Option:
+def option_with_layout(inputs: AssessmentInputs, option: RetrofitOption) -> RetrofitOption:
     """``option`` with its layout, ``ratio`` = the ratio the model uses (installed with
     ``bars.whole_bars``) and ``ratio_asked`` = the option's ratio.
 
@@ -178,7 +178,7 @@ def option_with_layout(inputs: AssessmentInputs, option: Option) -> Option:
             raise
         return replace(option, ratio=asked, ratio_asked=asked, layout=None)
     used = lay.ratio_installed if inputs.bars.whole_bars else asked
-    return Option(
+    return RetrofitOption(
         option.name,
         option.material,
         option.position,
@@ -353,7 +353,7 @@ def as_built(
     )
 
 
-def option_as_built(inputs: AssessmentInputs, option: Option) -> AsBuilt | None:
+def option_as_built(inputs: AssessmentInputs, option: RetrofitOption) -> AsBuilt | None:
     """The as-built record of an option (its layout made here if it has none); None for an
     option that cannot be built, which only ``bars.whole_bars: false`` lets through."""
     if option.layout is None:

@@ -71,7 +71,7 @@ class Material:
 
 
 @dataclass(frozen=True)
-class Option:
+class RetrofitOption:
     """One retrofit option: a material, a position and a ratio.
 
     ``ratio`` is the ratio the model uses: the ratio installed by whole bars of ``layout``
@@ -121,7 +121,7 @@ class DesignRequest:
 
 
 @dataclass(frozen=True)
-class Costs:
+class CostSettings:
     currency: str = "EUR"
     installation_per_metre: float = 0.0  #: per metre of wall length and layer of bars
 
@@ -158,7 +158,7 @@ class CodeCheckSettings:
 
 
 @dataclass(frozen=True)
-class Building:
+class BuildingSettings:
     """Where the wall stands in the building (docs/model.md §9): its rocking base moves with
     the absolute acceleration of the floor at Z (first mode only, Circolare 2019 §C7.2.3)."""
 
@@ -184,7 +184,7 @@ class AssessmentInputs:
     mechanism: Mechanism
     spectrum: ElasticSpectrum
     records: ArtificialRecords | tuple[RecordFile, ...]
-    options: tuple[Option, ...] = ()
+    options: tuple[RetrofitOption, ...] = ()
     length: float = 1.0  #: L [m]
     masonry: str | None = None
     masonry_description: str = ""
@@ -197,11 +197,11 @@ class AssessmentInputs:
     strain_factor: float = STRAIN_FACTOR.default
     ida: IdaSettings = IdaSettings()
     target: float = 1.0  #: required mean capacity/demand
-    costs: Costs = Costs()
+    costs: CostSettings = CostSettings()
     design: DesignRequest | None = None
     code_check: CodeCheckSettings = CodeCheckSettings()
     #: where the wall stands in the building; None: at ground level (shaken by the ground)
-    building: Building | None = None
+    building: BuildingSettings | None = None
     project: dict[str, str] = field(default_factory=dict)
     input_file: str = ""
     #: the project's values outside the range of practice, ``key: message`` each
@@ -278,7 +278,7 @@ class AssessmentInputs:
         bars = self.bars_input(material, position, ratio)
         return rocking_model(self.wall_input, self.mechanism, bars, self.model)
 
-    def model_for(self, option: Option | None) -> RockingModel:
+    def model_for(self, option: RetrofitOption | None) -> RockingModel:
         """The dynamics model of the unreinforced wall (``None``) or of an option."""
         if option is None:
             return rocking_model(self.wall_input, self.mechanism, None, self.model)

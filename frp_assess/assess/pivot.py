@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from frp_assess.assess.inputs import UNREINFORCED, AssessmentInputs, Option
+from frp_assess.assess.inputs import UNREINFORCED, AssessmentInputs, RetrofitOption
 from frp_assess.assess.masonry import (
     DEFAULT_PIVOT_LIMIT,
     STRESS_BLOCK_FACTOR,
@@ -96,7 +96,7 @@ class CasePivot:
 
 
 def case_pivot(
-    inputs: AssessmentInputs, option: Option | None, limit: float = DEFAULT_PIVOT_LIMIT
+    inputs: AssessmentInputs, option: RetrofitOption | None, limit: float = DEFAULT_PIVOT_LIMIT
 ) -> CasePivot:
     """The pivot check of the unreinforced wall (``None``) or of one option."""
     b = inputs.thickness

@@ -24,9 +24,9 @@ from frp_assess.assess.inputs import (
     UNREINFORCED,
     ArtificialRecords,
     AssessmentInputs,
-    Building,
+    BuildingSettings,
     Material,
-    Option,
+    RetrofitOption,
 )
 from frp_assess.assess.kinematic_checks import ida_capacity_demand
 from frp_assess.assess.pivot import case_pivot
@@ -56,7 +56,7 @@ from frp_assess.results.model import (
     Generator,
     Governing,
     HistoryRun,
-    IdaSettings,
+    IdaSettingsResult,
     Integration,
     MaterialResult,
     ModelSettings,
@@ -64,7 +64,7 @@ from frp_assess.results.model import (
     ProjectInfo,
     RecordInfo,
     RecordResult,
-    Rupture,
+    RuptureResult,
     Scatter,
     SeismicResult,
     Sensitivity,
@@ -144,7 +144,7 @@ def scatter_result(summary: CaseSummary, names: Sequence[str], demand: float) ->
 
 def case_result(
     inputs: AssessmentInputs,
-    option: Option | None,
+    option: RetrofitOption | None,
     model: RockingModel,
     summary: CaseSummary,
     names: Sequence[str],
@@ -239,7 +239,7 @@ def case_failure_mode(records: Sequence[RecordResult]) -> str | None:
     return worst.failure_mode
 
 
-def shaken_by(building: Building) -> str:
+def shaken_by(building: BuildingSettings) -> str:
     """One sentence: the wall was shaken by the floor motion at Z (first mode), and a_dyn and
     capacity/demand are in ground terms (for results.json, the report and the CLI)."""
     gamma1 = participation_factor(building.storeys)
@@ -254,7 +254,7 @@ def shaken_by(building: Building) -> str:
     )
 
 
-def building_result(building: Building) -> BuildingResult:
+def building_result(building: BuildingSettings) -> BuildingResult:
     """The ``building`` object of results.json (docs/results-json.md)."""
     return BuildingResult(
         height=building.height,
@@ -403,7 +403,7 @@ def history_run(label: str, multiplier: float, res: Any, alpha: float) -> Histor
         decided_time=res.decided_time,
         peak_rotation_ratio=res.max_rotation_ratio,
         peak_strain=res.peak_strain,
-        ruptures=tuple(Rupture(time=r.time, side=r.side) for r in res.ruptures),
+        ruptures=tuple(RuptureResult(time=r.time, side=r.side) for r in res.ruptures),
         impacts=res.impacts,
         time=tuple(np.round(h.time[sl], 6).tolist()),
         theta_over_alpha=tuple(np.round(h.theta[sl] / alpha, 8).tolist()),
@@ -473,7 +473,7 @@ def build_results(
                 tolerance=m.tolerance,
                 verify=inputs.verify,
             ),
-            ida=IdaSettings(
+            ida=IdaSettingsResult(
                 step_ratio=inputs.ida.step_ratio,
                 tolerance=inputs.ida.tolerance,
                 max_multiplier=inputs.ida.max_multiplier,

@@ -11,7 +11,7 @@ from frp_assess.assess.as_built import choose_layout, largest_installable_ratio
 from frp_assess.assess.bars import BarLayout
 from frp_assess.assess.cache import IdaCache, record_digest, task_key
 from frp_assess.assess.floor_input import floor_record, in_ground_terms
-from frp_assess.assess.inputs import AssessmentInputs, Building, Material
+from frp_assess.assess.inputs import AssessmentInputs, BuildingSettings, Material
 from frp_assess.dynamics import (
     IdaResult,
     IdaSettings,
@@ -98,7 +98,7 @@ class IdaRunner:
         jobs: int | None = None,
         cancel: threading.Event | None = None,
         settings: IdaSettings | None = None,
-        building: Building | None = None,
+        building: BuildingSettings | None = None,
         batch: BatchRunner = run_batch,
     ) -> None:
         self.records = list(records)

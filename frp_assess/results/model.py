@@ -87,7 +87,7 @@ class Integration:
 
 
 @dataclass(frozen=True)
-class IdaSettings:
+class IdaSettingsResult:
     """The IDA search: step ratio of the multiplier [-], relative tolerance on the collapse
     multiplier [-], largest multiplier C_max [-]."""
 
@@ -110,7 +110,7 @@ class ModelSettings:
     strain_factor: float
     free_vibration_tail: float
     integration: Integration
-    ida: IdaSettings
+    ida: IdaSettingsResult
     target: float
     design_value: str
 
@@ -416,7 +416,7 @@ class DesignRow:
 
 
 @dataclass(frozen=True)
-class Rupture:
+class RuptureResult:
     """A bar broke at ``time`` [s]; ``side`` is the sign of theta then."""
 
     time: float
@@ -436,7 +436,7 @@ class HistoryRun:
     decided_time: float | None
     peak_rotation_ratio: float
     peak_strain: float
-    ruptures: tuple[Rupture, ...]
+    ruptures: tuple[RuptureResult, ...]
     impacts: int
     time: tuple[float, ...]
     theta_over_alpha: tuple[float, ...]
@@ -471,7 +471,7 @@ class NumericalCheckResult:
 
 
 @dataclass(frozen=True)
-class SensitivityRow:
+class SensitivityRowResult:
     """One model convention: design a_dyn [g], capacity/demand [-]."""
 
     variant: str
@@ -485,7 +485,7 @@ class Sensitivity:
     """One case under each model convention."""
 
     case: str
-    rows: tuple[SensitivityRow, ...]
+    rows: tuple[SensitivityRowResult, ...]
 
 
 @dataclass(frozen=True)

@@ -23,7 +23,7 @@ from frp_assess.config.schema.analysis_spec import (
 )
 from frp_assess.config.schema.project_spec import (
     Project,
-    ProjectInfo,
+    ProjectInfoSpec,
 )
 from frp_assess.config.schema.report_spec import (
     CostsSpec,
@@ -35,16 +35,16 @@ from frp_assess.config.schema.retrofit_spec import (
     BarSizeSpec,
     BarsSpec,
     DesignSpec,
+    FrpMaterialSpec,
     Intervention,
     InterventionItem,
-    MaterialSpec,
     Ratio,
     Sweep,
     SweepAxes,
 )
 from frp_assess.config.schema.seismic_spec import (
-    ArtificialRecords,
-    RecordFile,
+    ArtificialRecordsSpec,
+    RecordFileSpec,
     RecordsSpec,
     SeismicSpec,
 )
@@ -111,7 +111,7 @@ from frp_assess.rules.masonry import (
 __all__ = [
     "AnalysisSpec",
     "AnchorageSpec",
-    "ArtificialRecords",
+    "ArtificialRecordsSpec",
     "BarSizeSpec",
     "BarsSpec",
     "BuildingSpec",
@@ -147,7 +147,7 @@ __all__ = [
     "MIN_SPECTRUM_G",
     "MIN_TIME_STEP",
     "MODULUS_RANGE",
-    "MaterialSpec",
+    "FrpMaterialSpec",
     "ModelOptionsSpec",
     "NTC_PARAMETER_KEYS",
     "NTC_SITE_KEYS",
@@ -155,10 +155,10 @@ __all__ = [
     "Number",
     "PresetSpectrum",
     "Project",
-    "ProjectInfo",
+    "ProjectInfoSpec",
     "RECORD_FORMATS",
     "Ratio",
-    "RecordFile",
+    "RecordFileSpec",
     "RecordFormat",
     "RecordUnits",
     "RecordsSpec",

@@ -18,9 +18,9 @@ from frp_assess.config.schema.report_spec import CostsSpec, ReportSpec
 from frp_assess.config.schema.retrofit_spec import (
     BarsSpec,
     DesignSpec,
+    FrpMaterialSpec,
     Intervention,
     InterventionItem,
-    MaterialSpec,
 )
 from frp_assess.config.schema.seismic_spec import (
     SeismicSpec,
@@ -38,7 +38,7 @@ from frp_assess.config.schema.wall_spec import BuildingSpec, WallSpec
 
 
 # --------------------------------------------------------------------------------- project
-class ProjectInfo(_Model):
+class ProjectInfoSpec(_Model):
     """Free-text identification of the project, copied into the results and the report."""
 
     name: FreeText = Field(
@@ -67,7 +67,7 @@ class ProjectInfo(_Model):
 class Project(_Model):
     """A project file: one wall, its site, candidate retrofits and analysis settings."""
 
-    project: ProjectInfo = Field(default_factory=ProjectInfo, description="Identification.")
+    project: ProjectInfoSpec = Field(default_factory=ProjectInfoSpec, description="Identification.")
     wall: WallSpec = Field(description="The wall.")
     building: BuildingSpec | None = Field(
         None,
@@ -75,7 +75,7 @@ class Project(_Model):
         "ground level): its base then moves with the floor at wall_base.",
     )
     seismic: SeismicSpec = Field(description="Spectrum and records.")
-    materials: dict[str, MaterialSpec] = Field(
+    materials: dict[str, FrpMaterialSpec] = Field(
         default_factory=dict,
         description="Additions/overrides of the FRP library (GFRP, "
         "BFRP, CFRP): E [GPa], eps_u, density [kg/m3], price [currency/kg].",

@@ -36,7 +36,7 @@ from frp_assess.rules.bars import MAX_RATIO
 
 
 # ------------------------------------------------------------------------------ materials
-class MaterialSpec(_Model):
+class FrpMaterialSpec(_Model):
     """An FRP bar material added to, or overriding fields of, the library (GFRP, BFRP, CFRP).
 
     For a library material only the fields given are replaced; a new material needs

@@ -33,7 +33,7 @@ from frp_assess.config.schema.spectrum_spec import (
 
 
 # -------------------------------------------------------------------------------- records
-class ArtificialRecords(_Model):
+class ArtificialRecordsSpec(_Model):
     """Spectrum-compatible artificial accelerograms (SIMQKE), reproducible from the seed."""
 
     count: WholeNumber = Field(7, ge=1, le=100, description="Number, 1-100 (7).")
@@ -55,7 +55,7 @@ class ArtificialRecords(_Model):
     )
 
 
-class RecordFile(_Model):
+class RecordFileSpec(_Model):
     """A recorded accelerogram file."""
 
     path: str = Field(description="File path, relative to the project file.")
@@ -92,7 +92,7 @@ class RecordFile(_Model):
         return value
 
     @model_validator(mode="after")
-    def _dt_for_one_column(self) -> RecordFile:
+    def _dt_for_one_column(self) -> RecordFileSpec:
         if self.format == "one-column" and self.dt is None:
             raise located_error("a one-column file needs 'dt' [s]; none was found", "dt")
         return self
@@ -101,10 +101,10 @@ class RecordFile(_Model):
 class RecordsSpec(_Model):
     """The accelerograms: artificial ones or files (exactly one of the two)."""
 
-    artificial: ArtificialRecords | None = Field(
+    artificial: ArtificialRecordsSpec | None = Field(
         None, description="Generate artificial records compatible with the spectrum."
     )
-    files: list[RecordFile] | None = Field(
+    files: list[RecordFileSpec] | None = Field(
         None, min_length=1, description="Recorded accelerograms, read from files."
     )
     scale_to_spectrum: bool = Field(
@@ -145,7 +145,7 @@ class RecordsSpec(_Model):
 
 
 def _default_records() -> RecordsSpec:
-    return RecordsSpec(artificial=ArtificialRecords())
+    return RecordsSpec(artificial=ArtificialRecordsSpec())
 
 
 class SeismicSpec(_Model):
