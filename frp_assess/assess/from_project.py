@@ -12,8 +12,8 @@ from collections.abc import Callable, Mapping
 from dataclasses import replace
 from pathlib import Path
 
-from frp_assess.assess.as_built import option_with_layout
 from frp_assess.assess.bars import BarSize
+from frp_assess.assess.bars_as_built import option_with_layout
 from frp_assess.assess.inputs import (
     AnchorageSettings,
     ArtificialRecords,

@@ -19,7 +19,7 @@ from frp_assess.assess.bars import (
     design_rupture_strain,
     fibre_of,
 )
-from frp_assess.assess.masonry import masonry_strength
+from frp_assess.assess.masonry_strength import masonry_strength
 from frp_assess.assess.wall_model import BarsInput, WallInput, rocking_model
 from frp_assess.dynamics import (
     IdaSettings,

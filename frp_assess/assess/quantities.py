@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from frp_assess.assess.as_built import option_as_built
+from frp_assess.assess.bars_as_built import option_as_built
 from frp_assess.assess.inputs import AssessmentInputs, CostSettings, Material, RetrofitOption
 from frp_assess.dynamics import Position
 from frp_assess.results.as_built import AsBuilt

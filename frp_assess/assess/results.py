@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 
 from frp_assess import __version__
-from frp_assess.assess.as_built import design_as_built, option_as_built
+from frp_assess.assess.bars_as_built import design_as_built, option_as_built
 from frp_assess.assess.code_check import KinematicCheck
 from frp_assess.assess.decision import RANKING_RULE
 from frp_assess.assess.floor_input import FloorSpectra
@@ -29,7 +29,7 @@ from frp_assess.assess.inputs import (
     RetrofitOption,
 )
 from frp_assess.assess.kinematic_checks import ida_capacity_demand
-from frp_assess.assess.pivot import case_pivot
+from frp_assess.assess.pivot_check import case_pivot
 from frp_assess.assess.quantities import built_quantity
 from frp_assess.assess.runner import CaseSummary, DesignResult, design_value_rule
 from frp_assess.assess.seismic import SeismicInput
@@ -155,7 +155,7 @@ def case_result(
     floor_pga: Sequence[float] | None = None,
 ) -> CaseResult:
     """One case, undecided and unranked (``rank`` None, ``passes`` None: the decision,
-    :func:`frp_assess.assess.verdict.assess_and_decide`, fills them).
+    :func:`frp_assess.assess.verdict_pipeline.assess_and_decide`, fills them).
 
     ``demand`` is a_g·S [g]; ``fc`` the confidence factor dividing the IDA capacity
     (:func:`~frp_assess.assess.kinematic_checks.ida_confidence_factor`), so capacity/demand =
@@ -163,8 +163,8 @@ def case_result(
     and meets_target and the ranking follow it; the improvement stays a ratio of a_dyn.
     ``floor_pga``: PGA of each record's floor motion [g] for a wall above ground, else None.
 
-    With its pivot check (:func:`~frp_assess.assess.pivot.case_pivot`) and, for an option,
-    its bars as built (:func:`~frp_assess.assess.as_built.option_as_built`): FRP mass and
+    With its pivot check (:func:`~frp_assess.assess.pivot_check.case_pivot`) and, for an option,
+    its bars as built (:func:`~frp_assess.assess.bars_as_built.option_as_built`): FRP mass and
     cost are then those of the bars as built (whole bars, bond lengths counted); an option
     that cannot be built (``bars.whole_bars: false``) keeps the smeared quantities of its
     ratio (:func:`~frp_assess.assess.quantities.built_quantity`).

@@ -68,7 +68,7 @@ MIN_DT = 1e-4
 #: make sense of the file (a PGA of 1e-6 g is below any instrument's noise; 1e4 g is 10⁴ times
 #: any recorded earthquake, even a file in cm/s² read as g stays below it) and scaling such a
 #: record loses its digits; inside, a peak outside the range of practice is a warning
-#: (frp_assess.motions.plausibility).
+#: (frp_assess.motions.pga_plausibility).
 MIN_PEAK_G = 1e-6
 MAX_PEAK_G = 1e4
 #: a data line of a table: digits, signs, exponents, points, commas, semicolons, blanks

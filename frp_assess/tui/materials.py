@@ -20,7 +20,7 @@ from textual.widgets import Button, Input, Label
 from frp_assess.config.library import FRP_MATERIALS
 from frp_assess.config.messages import Loc
 from frp_assess.config.schema import FrpMaterialSpec
-from frp_assess.tui.core.model import MISSING, format_value, get_path, set_path
+from frp_assess.tui.core.editor_state import MISSING, format_value, get_path, set_path
 from frp_assess.tui.fields import OrderedInput, choice, num, text
 from frp_assess.tui.item_editor import ItemEditor
 

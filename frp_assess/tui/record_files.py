@@ -9,7 +9,7 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from frp_assess.config.schema import RecordFileSpec
-from frp_assess.tui.core.model import format_value
+from frp_assess.tui.core.editor_state import format_value
 from frp_assess.tui.fields import choice, num, schema_default, text
 from frp_assess.tui.item_editor import ItemEditor
 

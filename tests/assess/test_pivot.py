@@ -16,8 +16,8 @@ import pytest
 from frp_assess.assess.cache import task_key
 from frp_assess.assess.from_project import load_inputs
 from frp_assess.assess.inputs import AssessmentInputs, Material, RetrofitOption
-from frp_assess.assess.masonry import DEFAULT_COMPRESSIVE_STRENGTH, masonry_strength
-from frp_assess.assess.pivot import pivot_checks
+from frp_assess.assess.masonry_strength import DEFAULT_COMPRESSIVE_STRENGTH, masonry_strength
+from frp_assess.assess.pivot_check import pivot_checks
 from frp_assess.dynamics import IdaSettings, ModelOptions
 from frp_assess.errors import InputError
 from frp_assess.motions import preset_spectrum

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from frp_assess.cli import main
-from frp_assess.motions.plausibility import (
+from frp_assess.motions.pga_plausibility import (
     PGA_MAX_G,
     PGA_MIN_G,
     likely_units,

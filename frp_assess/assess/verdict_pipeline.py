@@ -15,6 +15,7 @@ import math
 from collections.abc import Callable, Sequence
 from dataclasses import asdict, dataclass, replace
 
+from frp_assess.assess.convention_sensitivity import convention_variants, sensitivity
 from frp_assess.assess.decision import (
     DECISION_RULE,
     IDA_CHECK,
@@ -38,7 +39,6 @@ from frp_assess.assess.kinematic_checks import (
 )
 from frp_assess.assess.results import case_result
 from frp_assess.assess.runner import CaseSummary, DesignResult, IdaRunner, design_search, summarise
-from frp_assess.assess.sensitivity import convention_variants, sensitivity
 from frp_assess.assess.statistics import fit_lognormal_fragility
 from frp_assess.config.schema import format_ratio
 from frp_assess.dynamics import IdaResult, RockingModel
@@ -330,7 +330,7 @@ def conventions(
     demand: float,
     max_multiplier: float,
 ) -> tuple[tuple[ConventionOutcome, ...], tuple[SensitivityRowResult, ...]]:
-    """The focus case under each model convention (:mod:`frp_assess.assess.sensitivity`):
+    """The focus case under each model convention (:mod:`frp_assess.assess.convention_sensitivity`):
     its sensitivity rows, and whether it still passes; where the recommendation fails under a
     variant, the next passing options (as assessed, by rank; at most
     :data:`TAKE_OVER_CANDIDATES`) are run under the same variant and the first that passes

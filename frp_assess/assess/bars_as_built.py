@@ -34,7 +34,7 @@ from frp_assess.assess.bars import (
     nominal_area,
 )
 from frp_assess.assess.inputs import AssessmentInputs, BarSettings, Material, RetrofitOption
-from frp_assess.assess.masonry import MASONRY_TABLE, masonry_design_values
+from frp_assess.assess.masonry_strength import MASONRY_TABLE, masonry_design_values
 from frp_assess.dynamics import Position
 from frp_assess.errors import InputError
 from frp_assess.results.as_built import AsBuilt, BarAnchorage, BarStrain

@@ -8,7 +8,7 @@ the unreinforced wall), on the stress block 0.85·f_d: x = N / (0.85·f_d·1 m).
 dropped for it: with ``pivot: crushing`` the dynamics follow x(θ) at every instant and a toe
 that crushes is a failure mode of the IDA; with ``pivot: edge`` x is ignored by the model and
 the record says whether x/B stays within the edge limit
-(:data:`~frp_assess.assess.masonry.DEFAULT_PIVOT_LIMIT`).
+(:data:`~frp_assess.assess.masonry_strength.DEFAULT_PIVOT_LIMIT`).
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from frp_assess.assess.inputs import UNREINFORCED, AssessmentInputs, RetrofitOption
-from frp_assess.assess.masonry import (
+from frp_assess.assess.masonry_strength import (
     DEFAULT_PIVOT_LIMIT,
     STRESS_BLOCK_FACTOR,
     PivotCheck,
