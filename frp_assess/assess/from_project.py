@@ -12,7 +12,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import replace
 from pathlib import Path
 
-from frp_assess.assess.bars import BarSize
+from frp_assess.assess.bar_catalogue import BarSize
 from frp_assess.assess.bars_as_built import option_with_layout
 from frp_assess.assess.inputs import (
     AnchorageSettings,
@@ -52,7 +52,7 @@ from frp_assess.motions import (
     read_record,
     table_spectrum,
 )
-from frp_assess.results.model import ReportSettings
+from frp_assess.results.run_inputs import ReportSettings
 
 
 def spectrum_of(

@@ -8,14 +8,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from frp_assess.assess.bars import (
+from frp_assess.assess.bar_catalogue import (
     DEFAULT_MAX_SPACING,
     DEFAULT_MIN_SPACING,
-    DEFAULT_STRAIN_COV,
     BarLayout,
     BarSize,
+)
+from frp_assess.assess.bar_strain import (
+    DEFAULT_STRAIN_COV,
     DesignStrain,
-    characteristic_strain,
     design_rupture_strain,
     fibre_of,
 )
@@ -33,9 +34,9 @@ from frp_assess.dynamics import (
 from frp_assess.dynamics.options import STRAIN_FACTOR, VERIFY
 from frp_assess.motions import ElasticSpectrum
 from frp_assess.motions.site import SiteHazard
-from frp_assess.results.model import ReportSettings
 from frp_assess.results.pivot import MasonryResult
-from frp_assess.rules.bars import rupture_strain
+from frp_assess.results.run_inputs import ReportSettings
+from frp_assess.rules.bars import characteristic_strain, rupture_strain
 
 #: the name of case 0, the wall without bars
 UNREINFORCED = "Unreinforced"
@@ -57,7 +58,7 @@ class Material:
     @property
     def characteristic(self) -> float:
         """ε_fk [-]: the producer's value, else the 5 % fractile of ε_u with a CoV of 0.10
-        (:data:`~frp_assess.assess.bars.DEFAULT_STRAIN_COV`)."""
+        (:data:`~frp_assess.assess.bar_strain.DEFAULT_STRAIN_COV`)."""
         if self.characteristic_strain is not None:
             return self.characteristic_strain
         return characteristic_strain(self.ultimate_strain, DEFAULT_STRAIN_COV)

@@ -7,7 +7,7 @@ import threading
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
-from frp_assess.assess.bars import BarLayout
+from frp_assess.assess.bar_catalogue import BarLayout
 from frp_assess.assess.bars_as_built import choose_layout, largest_installable_ratio
 from frp_assess.assess.cache import IdaCache, record_digest, task_key
 from frp_assess.assess.floor_input import floor_record, in_ground_terms

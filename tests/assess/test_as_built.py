@@ -14,7 +14,7 @@ from typing import Any
 
 import pytest
 
-from frp_assess.assess.bars import BarSize
+from frp_assess.assess.bar_catalogue import BarSize
 from frp_assess.assess.bars_as_built import (
     choose_layout,
     design_as_built,

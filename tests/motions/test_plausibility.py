@@ -15,8 +15,9 @@ from frp_assess.motions.pga_plausibility import (
     plausibility_warning,
     plausibility_warnings,
 )
-from frp_assess.motions.readers import UNITS, RecordFormatError, read_record
+from frp_assess.motions.readers import read_record
 from frp_assess.motions.record import G, Record
+from frp_assess.motions.record_text import UNITS, RecordFormatError
 
 SHAPE = np.sin(np.linspace(0.0, 20.0, 400)) * np.exp(-np.linspace(0.0, 3.0, 400))
 

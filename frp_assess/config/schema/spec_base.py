@@ -18,10 +18,10 @@ from pydantic_core import PydanticCustomError
 
 GroundType = Literal["A", "B", "C", "D", "E"]
 
-#: accepted ``format`` of a record file (as frp_assess.motions.readers.FORMATS)
+#: accepted ``format`` of a record file (as frp_assess.motions.record_text.FORMATS)
 RecordFormat = Literal["auto", "at2", "esm", "two-column", "one-column"]
 RECORD_FORMATS: tuple[str, ...] = get_args(RecordFormat)
-#: accepted ``units`` of a record file (as frp_assess.motions.readers.UNITS)
+#: accepted ``units`` of a record file (as frp_assess.motions.record_text.UNITS)
 RecordUnits = Literal["g", "m/s2", "m/s^2", "cm/s2", "cm/s^2", "gal"]
 #: the largest bar diameter [mm] and area [mm²] accepted
 MAX_BAR_DIAMETER = 50.0
