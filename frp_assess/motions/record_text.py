@@ -168,6 +168,7 @@ def table_lines(path: Path) -> tuple[list[str], str | None]:
 
 
 def to_float(token: str) -> float:
+    """A number of a record file; Fortran exponents (``1.5D-03``) accepted."""
     return float(token.replace("D", "E").replace("d", "e"))
 
 
@@ -192,6 +193,7 @@ def parse_floats(tokens: list[str], path: Path, lineno: int) -> list[float]:
 
 
 def is_numeric_line(text: str) -> bool:
+    """Every blank- or comma-separated token of ``text`` is a number (and there is one)."""
     tokens = text.replace(",", " ").split()
     if not tokens:
         return False
@@ -204,6 +206,8 @@ def is_numeric_line(text: str) -> bool:
 
 
 def check_dt(dt: float, path: Path, line: int | None) -> float:
+    """``dt`` [s] if it is a usable time step (finite, at least :data:`MIN_DT`), else a
+    :class:`RecordFormatError` at ``path``:``line``."""
     if not (math.isfinite(dt) and dt > 0.0):
         raise RecordFormatError(f"time step must be > 0, found {dt}", file=str(path), line=line)
     if dt < MIN_DT:
