@@ -4,7 +4,7 @@ A limit state's action is its a_g·S, its elastic displacement spectrum and its 
 at ground level they are the ground's (NTC 2018 §3.2.3.2.1, eq. 3.2.12), above ground the
 floor's (Circolare 2019 §C7.2.3, eq. C8.7.1.12; :mod:`frp_assess.motions.floor`).  The
 building is any object with the attributes of :class:`Building` (the project's ``building``
-block, :class:`~frp_assess.assess.inputs.Building`, or a :class:`FloorPosition`).
+block, :class:`~frp_assess.assess.inputs.BuildingSettings`, or a :class:`FloorPosition`).
 
 Units: ground accelerations in g (a_g·S); records in m/s²; displacements in m; periods in s.
 """

@@ -23,8 +23,8 @@ from frp_assess.assess.inputs import (
     ArtificialRecords,
     AssessmentInputs,
     Material,
-    Option,
     RecordFile,
+    RetrofitOption,
 )
 from frp_assess.assess.kinematic_checks import (
     IdaSummary,
@@ -83,7 +83,7 @@ def _inputs(state: str = "SLV", site: SiteHazard | None = SITE, **changes: objec
         "site": site,
         "site_limit_state": state,
         "records": ArtificialRecords(),
-        "options": (Option("CFRP external 1‰", CFRP, "external", 1.0),),
+        "options": (RetrofitOption("CFRP external 1‰", CFRP, "external", 1.0),),
         "model": ModelOptions(pivot="edge"),
     }
     base.update(changes)
