@@ -14,12 +14,24 @@ import math
 
 from numba import njit
 
-from frp_assess.dynamics.kernel.params import EVENT_ITERATIONS, EVENT_TOLERANCE, KernelParams
+from frp_assess.dynamics.kernel.params import (
+    EVENT_ITERATIONS,
+    EVENT_TOLERANCE,
+    METHOD_RK4,
+    KernelParams,
+)
 from frp_assess.dynamics.kernel.steppers import acceleration, step
 
-#: Bisection on the cubic stops at this fraction of the step: Newton on the integrator does
-#: the rest.
+#: The crossing on the cubic is found to this fraction of the step: Newton on the integrator
+#: does the rest.
 _BRACKET_FRACTION = 1e-9
+#: Iterations allowed on the cubic (Newton inside a bracket: in practice a handful).
+_CUBIC_ITERATIONS = 60
+#: Newton's last correction δ on the integrator is taken on the local Taylor cubic of the
+#: integrator's own step (θ, θ', θ'' at its end, the jerk from the step's mean) when
+#: |δ| ≤ _TAYLOR_REACH·h: the truncation error, about θ⁗·h·δ²/4 in θ', is then far below
+#: the integration tolerance, and one integrator step per event is saved.
+_TAYLOR_REACH = 1e-4
 
 
 @njit(cache=True, nogil=True)
@@ -69,7 +81,11 @@ def critical_points(c1: float, c2: float, c3: float) -> tuple[float, float]:
 def _crossing_in_piece(
     c0: float, c1: float, c2: float, c3: float, ua: float, ub: float, level: float, up: bool
 ) -> float:
-    """Crossing of ``level`` inside [ua, ub], where the cubic is monotone, or −1."""
+    """Crossing of ``level`` inside [ua, ub], where the cubic is monotone, or −1.
+
+    Newton's method on the cubic kept inside the bracket (a bisection where it would leave
+    it), to _BRACKET_FRACTION: a few iterations where bisection took thirty.
+    """
     ya = cubic(c0, c1, c2, c3, ua) - level
     yb = cubic(c0, c1, c2, c3, ub) - level
     hit = (ya < 0.0 and yb >= 0.0) if up else (ya > 0.0 and yb <= 0.0)
@@ -77,12 +93,22 @@ def _crossing_in_piece(
         return -1.0
     lo = ua
     hi = ub
-    while hi - lo > _BRACKET_FRACTION:
-        mid = 0.5 * (lo + hi)
-        if (cubic(c0, c1, c2, c3, mid) - level >= 0.0) == up:
-            hi = mid
+    u = ua + (ub - ua) * ya / (ya - yb)  # the secant: inside [ua, ub]
+    for _ in range(_CUBIC_ITERATIONS):
+        f = cubic(c0, c1, c2, c3, u) - level
+        if (f >= 0.0) == up:
+            hi = u
         else:
-            lo = mid
+            lo = u
+        if hi - lo <= _BRACKET_FRACTION:
+            return hi
+        df = c1 + u * (2.0 * c2 + 3.0 * c3 * u)
+        u_new = u - f / df if df != 0.0 else -1.0
+        if not lo < u_new < hi:
+            u_new = 0.5 * (lo + hi)
+        if abs(u_new - u) <= _BRACKET_FRACTION:
+            return u_new
+        u = u_new
     return hi
 
 
@@ -122,6 +148,29 @@ def _newton_step(tau: float, f: float, df: float, h: float) -> float:
 
 
 @njit(cache=True, nogil=True)
+def _taylor_level(
+    th_e: float, om_e: float, a_e: float, jerk: float, s: float, level: float, reach: float
+) -> tuple[bool, float, float]:
+    """Solve s·(θ + θ'·δ + θ''·δ²/2 + j·δ³/6) = level for a small δ [s] by Newton from 0.
+
+    Returns (found: |δ| ≤ reach and the residual ≤ EVENT_TOLERANCE, δ, θ' at δ).
+    """
+    d = 0.0
+    for _ in range(4):
+        g = s * (th_e + d * (om_e + d * (0.5 * a_e + d * jerk / 6.0))) - level
+        dg = s * (om_e + d * (a_e + 0.5 * jerk * d))
+        if dg == 0.0:
+            return False, 0.0, om_e
+        d -= g / dg
+        if abs(d) > reach:
+            return False, 0.0, om_e
+    g = s * (th_e + d * (om_e + d * (0.5 * a_e + d * jerk / 6.0))) - level
+    if abs(g) > EVENT_TOLERANCE:
+        return False, 0.0, om_e
+    return True, d, om_e + d * (a_e + 0.5 * jerk * d)
+
+
+@njit(cache=True, nogil=True)
 def locate_level(
     theta: float,
     omega: float,
@@ -137,19 +186,28 @@ def locate_level(
 ) -> tuple[float, float, float]:
     """Step length τ ∈ (0, h] at which s·θ reaches ``level``, starting from the guess ``tau``.
 
-    Newton on τ with one integrator step from (θ, θ') per iteration (slope s·θ').  Returns
-    (τ, θ' there, s·θ there − level).
+    Newton on τ with one integrator step from (θ, θ') per iteration (slope s·θ').  With an
+    adaptive method the last correction, once it is below _TAYLOR_REACH·h, is taken on the
+    Taylor cubic of the integrator's step (:func:`_taylor_level`) instead of another step.
+    Returns (τ, θ' there, s·θ there − level).
     """
     om_e = omega
     resid = math.nan
+    taylor = prm.method != METHOD_RK4
     for _ in range(EVENT_ITERATIONS):
-        th_e, om_e, _a, _err = step(theta, omega, tau, u0, slope, s, k_s, a1, prm)
+        th_e, om_e, a_e, _err = step(theta, omega, tau, u0, slope, s, k_s, a1, prm)
         resid = s * th_e - level
         if abs(resid) <= EVENT_TOLERANCE:
             break
         dy = s * om_e
         if dy == 0.0:
             break
+        if taylor and tau > 0.0:
+            found, d, om_d = _taylor_level(
+                th_e, om_e, a_e, (a_e - a1) / tau, s, level, _TAYLOR_REACH * h
+            )
+            if found and 0.0 < tau + d <= h:
+                return tau + d, om_d, 0.0
         tau_new = _newton_step(tau, resid, dy, h)
         if abs(tau_new - tau) <= 1e-15 * h:
             tau = tau_new
@@ -173,9 +231,12 @@ def turning_point(
 ) -> float:
     """s·θ at the turning point (θ' = 0) inside the step, from the guess ``tau``.
 
-    Newton on τ with one integrator step per iteration (slope θ'' at the end of the step).
+    Newton on τ with one integrator step per iteration (slope θ'' at the end of the step);
+    with an adaptive method the last correction below _TAYLOR_REACH·h is taken on the Taylor
+    cubic of the integrator's step, as in :func:`locate_level`.
     """
     best = s * theta
+    taylor = prm.method != METHOD_RK4
     for _ in range(EVENT_ITERATIONS):
         th_e, om_e, a_e, _err = step(theta, omega, tau, u0, slope, s, k_s, a1, prm)
         best = max(best, s * th_e)
@@ -183,6 +244,13 @@ def turning_point(
             a_e = acceleration(th_e, s, u0 + slope * tau, k_s, prm)
         if a_e == 0.0:
             break
+        if taylor and tau > 0.0:
+            d = -om_e / a_e
+            if abs(d) <= _TAYLOR_REACH * h and 0.0 < tau + d <= h:
+                # θ' = 0 on the Taylor quadratic of θ': one more Newton step on it
+                jerk = (a_e - a1) / tau
+                d -= (om_e + d * (a_e + 0.5 * jerk * d)) / (a_e + jerk * d)
+                return max(best, s * (th_e + d * (om_e + d * (0.5 * a_e + d * jerk / 6.0))))
         tau_new = _newton_step(tau, om_e, a_e, h)
         if abs(tau_new - tau) <= 1e-13 * h:
             break

@@ -26,15 +26,23 @@ def acceleration(theta: float, s: float, u: float, k_s: float, prm: KernelParams
     """
     sin_a = prm.sin_a
     cos_a = prm.cos_a
+    if prm.xi != 0.0 and k_s != 0.0:
+        # the bar force needs sin(|θ|/2) = s·sin(θ/2) (smooth across θ = 0 inside a step that
+        # overshoots an impact before it is located): one sin/cos pair of θ/2 gives it and
+        # sin θ, cos θ by the double-angle formulas, where √ and a division were needed
+        sh = math.sin(0.5 * theta)
+        ch = math.cos(0.5 * theta)
+        st = 2.0 * sh * ch
+        ct = 1.0 - 2.0 * sh * sh
+        n = 1.0 + k_s * prm.kappa_per_k * s * sh
+        # sin(α s − θ) = s sinα cosθ − cosα sinθ ;  cos(α s − θ) = cosα cosθ + s sinα sinθ
+        m = s * sin_a * ct - cos_a * st + u * (cos_a * ct + s * sin_a * st) + k_s * st
+        return -prm.p2 * (m - s * prm.xi * n * n * ct)
     st = math.sin(theta)
     ct = math.cos(theta)
-    # sin(α s − θ) = s sinα cosθ − cosα sinθ ;  cos(α s − θ) = cosα cosθ + s sinα sinθ
     m = s * sin_a * ct - cos_a * st + u * (cos_a * ct + s * sin_a * st) + k_s * st
-    if prm.xi != 0.0:
-        # sin(|θ|/2) = s·sin θ / √(2·(1 + cos θ)): no cancellation near θ = 0, and smooth
-        # across θ = 0 inside a step that overshoots an impact before it is located
-        n = 1.0 + k_s * prm.kappa_per_k * s * st / math.sqrt(2.0 * (1.0 + ct))
-        m -= s * prm.xi * n * n * ct
+    if prm.xi != 0.0:  # no bar force: n = 1
+        m -= s * prm.xi * ct
     return -prm.p2 * m
 
 

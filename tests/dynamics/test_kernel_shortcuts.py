@@ -1,0 +1,118 @@
+"""The kernel's shortcuts against the work they save (docs/model.md §4.2–4.3).
+
+Each shortcut must give what the longer way gives:
+
+* the step-size factor without the power, below the error where it is capped at 5;
+* the quiet-step test: a Hermite cubic whose Bernstein control points lie in (0, top) never
+  leaves (0, top) (the convex-hull property of the Bernstein form; Farin, *Curves and Surfaces
+  for CAGD*, 5th ed., §5.3), checked by dense sampling;
+* the crossing on the cubic (Newton inside a bracket) against numpy's polynomial roots;
+* the event located with its last correction on the Taylor cubic against Newton run to the
+  end on the integrator (the impacts of free rocking against Housner's closed form, with all
+  of these shortcuts at work: tests/validation/test_free_rocking.py).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from frp_assess.dynamics import RockingModel, Wall
+from frp_assess.dynamics.kernel import events as ev
+from frp_assess.dynamics.kernel.params import (
+    STEP_GROWTH_MAX,
+    STEP_SAFETY,
+    STEP_SHRINK_MIN,
+)
+from frp_assess.dynamics.kernel.simulate import _grow_threshold, _quiet, _step_size
+from frp_assess.dynamics.kernel.steppers import acceleration, step
+
+
+@pytest.mark.parametrize("exponent", [-1.0 / 5.0, -1.0 / 3.0])
+def test_step_factor_without_the_power_is_the_same(exponent: float) -> None:
+    """h_new = h·min(5, max(0.2, 0.9·err^e)) for every accepted err, the power skipped or not."""
+    threshold = _grow_threshold(exponent)
+    errs = np.concatenate([np.geomspace(1e-12, 1.0, 4001), [threshold, threshold * 1.0000001]])
+    for err in errs:
+        accepted, h = _step_size(float(err), 1.0, 1.0, exponent, threshold)
+        expected = min(STEP_GROWTH_MAX, max(STEP_SHRINK_MIN, STEP_SAFETY * err**exponent))
+        assert accepted
+        assert h == expected
+
+
+def test_quiet_steps_stay_inside() -> None:
+    """Whenever the test says quiet, the cubic sampled at 2001 points stays in (0, top); and
+    the test is not vacuous: it says quiet for many of the random steps."""
+    rng = np.random.default_rng(7)
+    u = np.linspace(0.0, 1.0, 2001)
+    quiet = 0
+    for _ in range(4000):
+        y0, y1 = rng.uniform(-0.2, 1.2, 2)
+        m0, m1 = rng.normal(0.0, 0.5, 2)
+        top = 1.0
+        if _quiet(y0, y1, m0, m1, top):
+            quiet += 1
+            c0, c1, c2, c3 = ev.hermite(y0, y1, m0, m1)
+            y = c0 + u * (c1 + u * (c2 + u * c3))
+            assert y.min() > 0.0 and y.max() < top
+    assert quiet > 400
+
+
+def test_crossing_on_the_cubic_matches_the_polynomial_roots() -> None:
+    """The first crossing of a level by a Hermite cubic, against numpy.roots: the smallest
+    real root in (0, 1] where the cubic passes the level in the asked direction."""
+    rng = np.random.default_rng(11)
+    found = 0
+    for _ in range(3000):
+        y0, y1 = rng.uniform(-1.0, 1.0, 2)
+        m0, m1 = rng.normal(0.0, 2.0, 2)
+        level = float(rng.uniform(-0.5, 0.5))
+        up = bool(rng.integers(2))
+        c = ev.hermite(y0, y1, m0, m1)
+        r1, r2 = ev.critical_points(c[1], c[2], c[3])
+        u = ev.first_crossing(*c, r1, r2, level, up)
+        roots = np.roots([c[3], c[2], c[1], c[0] - level])
+        real = sorted(
+            r.real
+            for r in roots
+            if abs(r.imag) < 1e-9
+            and 0.0 < r.real <= 1.0
+            # the direction of the crossing: the sign of the slope there
+            and ((c[1] + 2 * c[2] * r.real + 3 * c[3] * r.real**2) > 0) == up
+        )
+        if not real:
+            continue
+        found += 1
+        assert u == pytest.approx(real[0], abs=1e-8)
+    assert found > 500
+
+
+WALL = Wall(thickness=0.4, height=3.0, unit_weight=18e3)  # no f_d: the edge pivot, Eq. 10
+MODEL = RockingModel(WALL, "two-sided")
+#: a wall at θ0 falling back at θ0' [rad/s]: the impact comes after about 10 ms, inside a
+#: step of 20 ms (p·h ≈ 0.04, as in the kernel's steps)
+THETA0 = 1e-3
+OMEGA0 = -0.1
+STEP = 0.02  # [s]
+
+
+def test_event_with_the_taylor_correction_matches_newton_to_the_end() -> None:
+    """The impact of a wall moving back towards θ = 0, located from a rough guess by the
+    kernel (its last correction on the Taylor cubic) and by Newton written out here and run
+    to the end on the same Dormand-Prince step: the same instant to 1e-12 s, θ' to 1e-9."""
+    prm = MODEL.params
+    a1 = acceleration(THETA0, 1.0, 0.0, 0.0, prm)
+    tau0 = 0.008
+    tau, om, resid = ev.locate_level(THETA0, OMEGA0, a1, STEP, tau0, 0.0, 0.0, 1.0, 0.0, 0.0, prm)
+    t = tau0
+    om_e = math.nan
+    for _ in range(50):
+        th_e, om_e, _a, _err = step(THETA0, OMEGA0, t, 0.0, 0.0, 1.0, 0.0, a1, prm)
+        if abs(th_e) <= 1e-16:
+            break
+        t -= th_e / om_e
+    assert resid == 0.0  # the kernel returns exactly 0 when it took the Taylor correction
+    assert tau == pytest.approx(t, abs=1e-12)
+    assert om == pytest.approx(om_e, rel=1e-9)
