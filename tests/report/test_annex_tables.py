@@ -114,3 +114,18 @@ def test_the_italian_annex_holds_the_three_tables_numbered_in_order() -> None:
     )
     tables = [b for b in small.blocks() if isinstance(b, Table)]
     assert any("lunghezza di ancoraggio [m]" in b.header for b in tables)
+
+
+def test_every_failure_mode_has_words_in_both_languages() -> None:
+    """The conclusions name the wall's failure mode; "overturning" was printed in English
+    in the Italian report."""
+    from frp_assess.dynamics.rocking import FAILURE_MODES
+
+    for mode in FAILURE_MODES:
+        assert IT.has(f"failure:{mode}") and EN.has(f"failure:{mode}"), mode
+    assert IT.t("failure:overturning") == "ribaltamento"
+    data = json.loads(DATA.read_text(encoding="utf-8"))
+    data["cases"][0]["failure_mode"] = "overturning"  # the wall as it is
+    doc = build_document(_typed(data, "it"))
+    text = " ".join(b.markup for b in doc.blocks() if hasattr(b, "markup"))
+    assert "Modo di collasso della parete nello stato di fatto: ribaltamento." in text
