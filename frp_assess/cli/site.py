@@ -65,11 +65,12 @@ def as_table(hazard: SiteHazard) -> str:
     h = hazard
     lines = [
         f"Site: latitude {h.latitude:g}°, longitude {h.longitude:g}° (nearest grid node "
-        f"{h.nodes[0].distance:.1f} km away; values from "
+        f"{h.nodes[0].distance:.1f} km away)",
+        "Values from "
         + (
-            "the 4 vertices of its grid cell)"
+            "the 4 vertices of the grid cell that contains the site"
             if h.interpolation == "cell"
-            else "the 4 nearest nodes: no complete grid cell contains the site)"
+            else "the 4 nearest nodes: no complete grid cell contains the site"
         ),
         f"V_N = {h.V_N:g} years, use class {h.use_class} (C_U = {h.C_U:g}), V_R = {h.V_R:g} years",
         "",
