@@ -2,8 +2,8 @@
 output files replaced as one set.
 
 A results folder holds the output set of one run — ``results.json``, ``results.csv``,
-``spectra.csv``, ``records/`` and ``report.pdf`` (:data:`SET_NAMES`) — and the IDA cache
-``.cache/``.  The rules:
+``spectra.csv``, ``records/``, ``report.pdf`` and ``report.docx`` (:data:`SET_NAMES`) — and
+the IDA cache ``.cache/``.  The rules:
 
 - **Checked first** (:func:`check_out_dir`): a folder that is a file, lies under a file, is a
   device (``/dev/null``) or cannot be written is refused with one line before any work.
@@ -25,7 +25,7 @@ A results folder holds the output set of one run — ``results.json``, ``results
   ``.staging-<pid>-<random>/`` folder inside the results folder (same file system).  Only when
   every file is complete is it moved into place: first the old ``results.json`` is removed
   (from then on the folder holds no valid set), then every member is renamed over the old one
-  (members the new run does not produce, e.g. ``report.pdf`` with ``--no-pdf``, are removed),
+  (members the new run does not produce, e.g. the reports with ``--no-pdf``, are removed),
   ``results.json`` last.  ``results.json`` therefore only ever sits beside the files of its
   own run: a failure while writing (disk full, an exception in the PDF) leaves the old set
   untouched, and a kill during the swap leaves no ``results.json`` (no set) until the next run.
@@ -50,7 +50,14 @@ from types import TracebackType
 from frp_assess.errors import InputError
 
 #: the members of a run's output set, ``results.json`` (the one that validates the set) last
-SET_NAMES: tuple[str, ...] = ("results.csv", "spectra.csv", "records", "report.pdf", "results.json")
+SET_NAMES: tuple[str, ...] = (
+    "results.csv",
+    "spectra.csv",
+    "records",
+    "report.pdf",
+    "report.docx",
+    "results.json",
+)
 LOCK_NAME = ".lock"
 STAGING_PREFIX = ".staging-"
 #: the IDA cache folder inside a results folder (as frp_assess.api.CACHE_DIR)

@@ -338,8 +338,8 @@ def run_prepared(
     case_progress: PairDone | None = None,
     jobs: int | None = None,
 ) -> RunOutcome:
-    """Every IDA (cached in ``out_dir/.cache``), ranking and result files, report.pdf
-    included, as ``frp-assess run`` writes them.
+    """Every IDA (cached in ``out_dir/.cache``), ranking and result files, report.pdf and
+    report.docx included, as ``frp-assess run`` writes them.
 
     Raises :class:`~frp_assess.errors.Cancelled` when ``cancel`` is set (finished IDAs stay
     in the cache), :class:`~frp_assess.errors.InputError` for a problem the user can fix.

@@ -1,9 +1,10 @@
 """The output set of a run, the PDF report and the export of a run to another folder.
 
-:func:`write_outputs` writes results.json, results.csv, spectra.csv, records/*.AT2 and
-report.pdf as one set (:mod:`frp_assess.output_set`); :func:`rebuild_report` makes the PDF
-again from a stored results.json (`frp-assess report`); :func:`export_run` writes a finished
-run into a folder the user picks (the TUI's export).
+:func:`write_outputs` writes results.json, results.csv, spectra.csv, records/*.AT2,
+report.pdf and report.docx as one set (:mod:`frp_assess.output_set`);
+:func:`rebuild_report` makes the PDF (or the DOCX) again from a stored results.json
+(`frp-assess report`); :func:`export_run` writes a finished run into a folder the user
+picks (the TUI's export).
 """
 
 from __future__ import annotations
@@ -26,7 +27,17 @@ if TYPE_CHECKING:
     from frp_assess.app.assessment import RunOutcome
     from frp_assess.assess.seismic import SeismicInput
 
-__all__ = ["build_pdf", "export_run", "rebuild_report", "write_outputs"]
+__all__ = [
+    "REPORT_FILES",
+    "build_pdf",
+    "build_word",
+    "export_run",
+    "rebuild_report",
+    "write_outputs",
+]
+
+#: the reports a run writes beside its results (unless ``pdf=False``, ``--no-pdf``)
+REPORT_FILES: tuple[str, ...] = ("report.pdf", "report.docx")
 
 
 def write_outputs(
@@ -34,13 +45,16 @@ def write_outputs(
 ) -> None:
     """Write the output set — results.json, results.csv, spectra.csv, records/*.AT2 (and
     records/SLC/*.AT2 for a limit state with its own set of records) and (if ``pdf`` and
-    available) report.pdf — as one set (:mod:`frp_assess.output_set`).
+    available) the reports report.pdf and report.docx, the same document — as one set
+    (:mod:`frp_assess.output_set`).
 
     The folder is locked for the duration, the set is written into a fresh staging folder
     inside ``out_dir`` and swapped in only once complete: any failure (disk full, an error in
-    the PDF, an interrupt) leaves the previous set as it was.  A record name that is not a
-    plain file name is refused (:class:`~frp_assess.errors.InputError`) before anything is
-    written.
+    the PDF, an interrupt) leaves the previous set as it was; a report that cannot be laid out
+    is left out with a warning (:func:`build_pdf`, :func:`build_word`).  When results.json
+    is byte for byte the stored one, the stored reports are kept, not rebuilt.  A record
+    name that is not a plain file name is refused (:class:`~frp_assess.errors.InputError`)
+    before anything is written.
     """
     for rec in seismic.records:
         if not _is_plain_file_name(rec.name):
@@ -60,19 +74,22 @@ def write_outputs(
         atomic_write_text(staging / "results.csv", results_csv(results))
         text = to_json(results)
         atomic_write_text(staging / "results.json", text)
-        if pdf and not _keep_pdf(out_dir, text, staging / "report.pdf"):
-            build_pdf(results, staging / "report.pdf")
+        if pdf:
+            for name, build in (("report.pdf", build_pdf), ("report.docx", build_word)):
+                if not _keep_report(out_dir, text, name, staging / name):
+                    build(results, staging / name)
 
 
-def _keep_pdf(out_dir: Path, results_json: str, target: Path) -> bool:
-    """Put the stored report.pdf at ``target`` when the stored results.json is ``results_json``
-    byte for byte (the PDF is made from it alone: nothing to rebuild); returns whether it did."""
-    old_pdf = out_dir / "report.pdf"
+def _keep_report(out_dir: Path, results_json: str, name: str, target: Path) -> bool:
+    """Put the stored report ``name`` at ``target`` when the stored results.json is
+    ``results_json`` byte for byte (a report is made from it alone: nothing to rebuild);
+    returns whether it did."""
+    old = out_dir / name
     try:
         same = (out_dir / "results.json").read_bytes() == results_json.encode("utf-8")
-        if not same or not old_pdf.is_file() or old_pdf.is_symlink():
+        if not same or not old.is_file() or old.is_symlink():
             return False
-        shutil.copyfile(old_pdf, target)
+        shutil.copyfile(old, target)
     except OSError:
         return False
     return True
@@ -116,9 +133,37 @@ def build_pdf(results: AssessmentResult, path: Path) -> bool:
     return True
 
 
+def build_word(results: AssessmentResult, path: Path) -> bool:
+    """Build the editable Word report (the PDF's document, in its language and with the
+    project's Word template); returns whether it did.  As for the PDF, a report that cannot
+    be made (python-docx missing, a template Word cannot read) is one warning line and no
+    report.docx; the rest of the set is written."""
+    try:
+        from frp_assess.report.document import build_docx
+    except ImportError as exc:
+        _report_warning("report.docx", f"python-docx is not installed: {exc}")
+        return False
+    try:
+        build_docx(results, path)
+    except (OSError, MemoryError):  # a full disk is not the report's fault: the set fails
+        raise
+    except Exception as exc:  # a template python-docx cannot read, ...
+        _report_warning("report.docx", str(exc).splitlines()[0] if str(exc) else type(exc).__name__)
+        return False
+    return True
+
+
+def _report_warning(name: str, reason: str) -> None:
+    print(
+        f"frp-assess: warning: {name} not written: {plain(reason)[:160]}; the other results "
+        "are complete",
+        file=sys.stderr,
+    )
+
+
 def export_run(outcome: RunOutcome, directory: Path) -> list[Path]:
-    """Write report.pdf, results.json/.csv, spectra.csv and records/ of a finished run into
-    ``directory``; returns the files and folders written."""
+    """Write report.pdf, report.docx, results.json/.csv, spectra.csv and records/ of a
+    finished run into ``directory``; returns the files and folders written."""
     directory = Path(directory)
     if directory.exists() and not directory.is_dir():
         raise InputError(f"{directory} is a file, not a directory")
@@ -126,7 +171,7 @@ def export_run(outcome: RunOutcome, directory: Path) -> list[Path]:
         write_outputs(outcome.results, outcome.seismic, directory, pdf=True)
     except OSError as exc:
         raise InputError(f"cannot write into {directory}: {exc.strerror or exc}") from None
-    names = ["report.pdf", "results.json", "results.csv", "spectra.csv", "records"]
+    names = [*REPORT_FILES, "results.json", "results.csv", "spectra.csv", "records"]
     return [directory / n for n in names if (directory / n).exists()]
 
 

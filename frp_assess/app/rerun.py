@@ -41,7 +41,8 @@ __all__ = [
 #: the sidecar file in the output folder: {"digest", "created", "files", "pdf", "results"}
 #: ("results": the SHA-256 of the results.json it belongs to)
 SIDECAR = ".inputs-digest.json"
-#: the members of a complete output set (report.pdf besides, unless --no-pdf)
+#: the members of a complete output set (report.pdf and report.docx besides, unless
+#: --no-pdf)
 _SET_FILES = ("results.json", "results.csv", "spectra.csv")
 
 
@@ -128,9 +129,9 @@ def unchanged_run(
     pdf: bool = True,
 ) -> Unchanged | None:
     """The stored run in ``out_dir`` when it is complete (results.json, results.csv,
-    spectra.csv, records/ and, if ``pdf``, report.pdf) and its digest is that of the inputs
-    now; else None (then the run happens as usual).  Never raises for a missing or broken
-    sidecar: that is simply "not unchanged"."""
+    spectra.csv, records/ and, if ``pdf``, report.pdf and report.docx) and its digest is
+    that of the inputs now; else None (then the run happens as usual).  Never raises for a
+    missing or broken sidecar: that is simply "not unchanged"."""
     out_dir = Path(out_dir)
     try:
         data = json.loads((out_dir / SIDECAR).read_text(encoding="utf-8"))
@@ -140,7 +141,7 @@ def unchanged_run(
             return None
     except (OSError, ValueError, KeyError, TypeError):
         return None
-    needed = [*_SET_FILES, *(("report.pdf",) if pdf else ())]
+    needed = [*_SET_FILES, *(("report.pdf", "report.docx") if pdf else ())]
     if not all(os.path.isfile(out_dir / n) for n in needed) or not (out_dir / "records").is_dir():
         return None
     if inputs_digest(project_file, files, rtol=rtol, verify=verify) != digest:

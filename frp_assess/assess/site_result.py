@@ -32,4 +32,5 @@ def site_result(hazard: SiteHazard | None, limit_state: str) -> SiteResult | Non
         },
         limit_state=limit_state,
         nearest_node=hazard.nodes[0].distance,
+        interpolation=hazard.interpolation,
     )

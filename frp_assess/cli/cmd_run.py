@@ -42,14 +42,16 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="assess a project file (IDA of every option, ranking, report)",
         description="Build or read the records, run the IDA of the unreinforced "
         "wall and of every retrofit option on all cores, rank the options and "
-        "write results.json, results.csv, spectra.csv, records/ and report.pdf.",
+        "write results.json, results.csv, spectra.csv, records/, report.pdf and report.docx.",
     )
     p.add_argument("file", help="project file (YAML)")
     p.add_argument(
         "--out", metavar="DIR", help="results directory (default: <name>-results/ next to the file)"
     )
     p.add_argument("--jobs", type=int, default=None, help="worker threads (default: all cores)")
-    p.add_argument("--no-pdf", action="store_true", help="do not write report.pdf")
+    p.add_argument(
+        "--no-pdf", action="store_true", help="do not write the reports (report.pdf, report.docx)"
+    )
     p.add_argument(
         "--rtol",
         type=tolerance,

@@ -24,7 +24,8 @@ def register(sub: argparse._SubParsersAction) -> None:
         description="Print, for each limit state SLO, SLD, SLV, SLC, the return period T_R "
         "and a_g [g], F0, T_C* [s] of the site (NTC 2018 §3.2: V_R = V_N*C_U, "
         "T_R = -V_R/ln(1-P_VR); values interpolated on the reference grid of NTC 2008 "
-        "Allegato B: inverse-distance mean of the 4 nearest nodes, log-log in T_R).",
+        "Allegato B: inverse-distance mean of the 4 vertices of the grid cell containing the "
+        "site, log-log in T_R).",
     )
     p.add_argument("--lat", required=True, type=number_in(-90, 90, unit="°"),
                    help="latitude [°], decimal, e.g. 42.35")  # fmt: skip
@@ -65,6 +66,12 @@ def as_table(hazard: SiteHazard) -> str:
     lines = [
         f"Site: latitude {h.latitude:g}°, longitude {h.longitude:g}° (nearest grid node "
         f"{h.nodes[0].distance:.1f} km away)",
+        "Values from "
+        + (
+            "the 4 vertices of the grid cell that contains the site"
+            if h.interpolation == "cell"
+            else "the 4 nearest nodes: no complete grid cell contains the site"
+        ),
         f"V_N = {h.V_N:g} years, use class {h.use_class} (C_U = {h.C_U:g}), V_R = {h.V_R:g} years",
         "",
         f"{'state':<6}{'P_VR':>6}{'T_R [years]':>13}{'a_g [g]':>10}{'F0 [-]':>9}{'T_C* [s]':>10}",

@@ -49,6 +49,7 @@ def site_blocks(results: Results, lang: Lang) -> list[Block]:
         [lang.t("site.C_U"), f"{esc(site.use_class)}, C_U = {lang.gnum(site.C_U)}"],
         [lang.t("site.V_R"), f"{lang.gnum(site.V_R)} {years}"],
         [lang.t("site.node"), f"{n(site.nearest_node, 1)} km"],
+        [lang.t("site.interp"), lang.t(f"site.interp.{getattr(site, 'interpolation', 'cell')}")],
     ]
     header: list[str] = [
         lang.t("site.col.ls"),

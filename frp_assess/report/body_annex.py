@@ -1,6 +1,8 @@
 """The calculation details in the report's language (the Italian annex): every option, the
-collapse acceleration of every option and accelerogram, the scatter, the code's checks of
-every case and the bars as built.  Words from the catalogue, numbers from the results."""
+design mode, the collapse acceleration of every option and accelerogram, the scatter, the
+model conventions, the code's checks of every case, the bars as built and their anchorage
+(three of them in :mod:`~frp_assess.report.annex_design_tables`).  Words from the
+catalogue, numbers from the results."""
 
 from __future__ import annotations
 
@@ -8,7 +10,7 @@ from reportlab.lib.units import mm
 
 from frp_assess.report.body_front import position_words
 from frp_assess.report.doc_model import Block
-from frp_assess.report.flow import cond_break, grid, h1, h2, markup
+from frp_assess.report.flow import cond_break, esc, grid, h1, h2, markup
 from frp_assess.report.formats import TableData, column_blocks
 from frp_assess.report.lang import Lang, short
 from frp_assess.results.model import AssessmentResult, CaseResult
@@ -149,26 +151,50 @@ def bars_table(results: Results, lang: Lang) -> TableData | None:
 
 
 def annex(results: Results, lang: Lang) -> list[Block]:
-    """The annex: heading and its parts (none of them numbered by the body)."""
+    """The annex: heading and its parts B.1, B.2 ... (none of them numbered by the body;
+    a part without data, e.g. the design mode not run, is left out and not numbered)."""
+    from frp_assess.report import annex_design_tables as adt
+
     out: list[Block] = [h1(lang.t("h.annex")), markup(lang.t("annex.lead.short"))]
+    part = 0
+
+    def heading(key: str) -> Block:
+        nonlocal part
+        part += 1
+        return h2(f"B.{part}  " + lang.t(key))
+
     if results.options:
-        out += [h2("B.1  " + lang.t("annex.h.options"))]
+        out += [heading("annex.h.options")]
         widths = [x * mm for x in (14, 62, 22, 22, 16, 18, 26)]
         table = options_table(results, lang)
         out.append(grid(table, widths, wrap=(1,), numeric_from=2, small=True))
-    out += [cond_break(60 * mm), h2("B.2  " + lang.t("annex.h.a_dyn"))]
+    design = adt.design_table(results, lang)
+    if design is not None:
+        out += [cond_break(60 * mm), heading("annex.h.design")]
+        out.append(grid(design, [x * mm for x in (22, 30, 30, 26, 22, 28)], wrap=(1,),
+                        numeric_from=2, small=True))  # fmt: skip
+        out.append(markup(lang.t("annex.design.note"), "caption"))
+    out += [cond_break(60 * mm), heading("annex.h.a_dyn")]
     for block in column_blocks(a_dyn_table(results, lang)):
         names = len(block.header) - 1
         other = (174 - 48) / max(names, 1)
         out.append(grid(block, [48 * mm] + [other * mm] * names, wrap=(0,), small=True))
     out.append(markup(lang.t("annex.nc.note"), "caption"))
-    out += [cond_break(60 * mm), h2("B.3  " + lang.t("annex.h.scatter"))]
+    out += [cond_break(60 * mm), heading("annex.h.scatter")]
     out.append(grid(scatter_table(results, lang), [x * mm for x in (62, 34, 24, 40)], wrap=(0,),
                     small=True))  # fmt: skip
     out.append(markup(lang.t("annex.scatter.note"), "caption"))
+    sens = adt.sensitivity_table(results, lang)
+    if sens is not None and results.sensitivity is not None:
+        label = next((case_label(c, lang) for c in results.cases
+                      if c.name == results.sensitivity.case), results.sensitivity.case)  # fmt: skip
+        out += [cond_break(60 * mm), heading("annex.h.sensitivity")]
+        out.append(grid(sens, [x * mm for x in (76, 32, 30, 36)], wrap=(0,), numeric_from=1,
+                        small=True))  # fmt: skip
+        out.append(markup(lang.t("annex.sensitivity.note", case=esc(label)), "caption"))
     checks = checks_table(results, lang)
     if checks is not None:
-        out += [cond_break(60 * mm), h2("B.4  " + lang.t("annex.h.checks"))]
+        out += [cond_break(60 * mm), heading("annex.h.checks")]
         out.append(grid(checks, [x * mm for x in (52, 24, 24, 24, 26, 24)], wrap=(0,),
                         small=True))  # fmt: skip
         out.append(markup(lang.t("annex.checks.note"), "caption"))
@@ -177,7 +203,13 @@ def annex(results: Results, lang: Lang) -> list[Block]:
             out.append(markup(states, "caption"))
     bars = bars_table(results, lang)
     if bars is not None:
-        out += [cond_break(60 * mm), h2("B.5  " + lang.t("annex.h.bars"))]
+        out += [cond_break(60 * mm), heading("annex.h.bars")]
         out.append(grid(bars, [x * mm for x in (52, 14, 18, 14, 20, 16, 20, 20)], wrap=(0,),
                         small=True))  # fmt: skip
+    anchorage = adt.anchorage_table(results, lang)
+    if anchorage is not None:
+        out += [cond_break(60 * mm), heading("annex.h.anchorage")]
+        out.append(grid(anchorage, [x * mm for x in (62, 28, 28, 28, 28)], wrap=(0,),
+                        numeric_from=1, small=True))  # fmt: skip
+        out.append(markup(lang.t("annex.anchorage.note"), "caption"))
     return out

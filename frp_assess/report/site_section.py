@@ -56,7 +56,8 @@ def site_section(results: AssessmentResult, heading: Flowable | None = None) -> 
             f"<b>{esc(TITLE)}.</b> The spectrum's a_g, F0 and T_C* are those of "
             f"{esc(site.limit_state)} at the site, interpolated on the NTC reference grid "
             "(NTC 2018 §3.2; NTC 2008 Allegati A and B): the inverse-distance mean of the "
-            "four nearest grid nodes, log-log between the grid's return periods; "
+            "four vertices of the grid cell containing the site (the four nearest nodes when "
+            "no complete cell does), log-log between the grid's return periods; "
             "T_R = −V_R/ln(1 − P_VR), within 30–2475 years."
         )
     )

@@ -180,7 +180,9 @@ class SiteResult:
     latitude, longitude [°]; V_N nominal life [years]; use class I–IV; C_U [-];
     V_R = max(V_N·C_U, 35) [years]; the four limit states SLO, SLD, SLV, SLC in order;
     ``limit_state`` the one whose a_g, F0, T_C* make the spectrum; nearest_node [km] the
-    distance to the nearest grid node."""
+    distance to the nearest grid node; ``interpolation`` "cell" (the four vertices of the
+    grid cell containing the site, NTC 2008 Allegato A) or "nearest" (the four nearest
+    nodes: no complete cell contains the site, at the grid's border)."""
 
     latitude: float
     longitude: float
@@ -191,6 +193,7 @@ class SiteResult:
     limit_states: dict[str, LimitStateSite]
     limit_state: str
     nearest_node: float
+    interpolation: str = "cell"
 
 
 @dataclass(frozen=True)

@@ -27,6 +27,7 @@ def assert_valid_set(out: Path, *, pdf: bool) -> dict:
         assert case["name"] in csv
     assert (out / "spectra.csv").is_file()
     assert (out / "report.pdf").is_file() == pdf
+    assert (out / "report.docx").is_file() == pdf
     assert not [p for p in out.iterdir() if p.name.startswith(STAGING_PREFIX)]
     return results
 
@@ -58,7 +59,8 @@ def test_kill_9_mid_run_then_rerun_gives_the_same_results(tmp_path: Path) -> Non
     assert rerun.returncode == 0, rerun.stderr
     assert "reused from the cache" in rerun.stdout
     assert (out / "results.json").read_bytes() == (tmp_path / "ref" / "results.json").read_bytes()
-    assert (out / "report.pdf").read_bytes() == (tmp_path / "ref" / "report.pdf").read_bytes()
+    for report in ("report.pdf", "report.docx"):
+        assert (out / report).read_bytes() == (tmp_path / "ref" / report).read_bytes()
     assert_valid_set(out, pdf=True)
 
 

@@ -64,7 +64,8 @@ def test_a_changed_byte_or_option_changes_the_digest(tmp_path: Path) -> None:
 
 def _fake_set(out: Path, *, pdf: bool) -> None:
     out.mkdir()
-    for name in ("results.json", "results.csv", "spectra.csv", *(("report.pdf",) if pdf else ())):
+    reports = ("report.pdf", "report.docx") if pdf else ()
+    for name in ("results.json", "results.csv", "spectra.csv", *reports):
         (out / name).write_text("x", encoding="utf-8")
     (out / "records").mkdir()
 
@@ -76,8 +77,10 @@ def test_unchanged_needs_a_complete_set_and_the_same_digest(tmp_path: Path) -> N
     assert unchanged_run(project, out) is None  # no sidecar
     write_sidecar(out, inputs_digest(project, files), "2025-01-01", files, pdf=False)
     assert unchanged_run(project, out, pdf=False) is not None
-    assert unchanged_run(project, out) is None  # report.pdf missing: not "unchanged"
+    assert unchanged_run(project, out) is None  # the reports missing: not "unchanged"
     (out / "report.pdf").write_text("x", encoding="utf-8")
+    assert unchanged_run(project, out) is None  # report.docx missing: not "unchanged"
+    (out / "report.docx").write_text("x", encoding="utf-8")
     same = unchanged_run(project, out)
     assert same is not None and same.created == "2025-01-01"
     assert unchanged_run(project, out, rtol=1e-7) is None  # --rtol: rerun

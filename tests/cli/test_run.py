@@ -45,7 +45,7 @@ def test_small_project_end_to_end_and_instant_rerun(tmp_path, capsys):
     out_dir = tmp_path / "small-results"
     names = {p.name for p in out_dir.iterdir()}
     assert {"results.json", "results.csv", "spectra.csv", "records"} <= names
-    assert "report.pdf" not in names
+    assert "report.pdf" not in names and "report.docx" not in names
     first = json.loads((out_dir / "results.json").read_text())
     assert [c["name"] for c in first["cases"]] == ["Unreinforced", "GFRP external 1‰", "my carbon"]
     assert first["demand"]["pga"] == pytest.approx(0.106)
@@ -157,8 +157,9 @@ def test_ntc_example_spectrum():
 
 
 def test_run_writes_the_report_and_report_rebuilds_it_identically(tmp_path):
-    """`run` writes report.pdf from a real run; `frp-assess report DIR` rebuilds it from
-    results.json alone, byte for byte (reportlab invariant mode, issue 5)."""
+    """`run` writes report.pdf and report.docx from a real run; `frp-assess report DIR`
+    rebuilds each from results.json alone, byte for byte (reportlab invariant mode, issue 5;
+    the DOCX stamped with the results' date)."""
     project = tmp_path / "small.yaml"
     project.write_text(SMALL, encoding="utf-8")
     assert main(["run", str(project), "--jobs", "2"]) == 0
@@ -167,6 +168,10 @@ def test_run_writes_the_report_and_report_rebuilds_it_identically(tmp_path):
     assert pdf.startswith(b"%PDF")
     assert main(["report", str(out_dir), "--out", str(tmp_path / "again.pdf")]) == 0
     assert (tmp_path / "again.pdf").read_bytes() == pdf
+    word = (out_dir / "report.docx").read_bytes()
+    assert word.startswith(b"PK")
+    assert main(["report", str(out_dir), "--out", str(tmp_path / "again.docx")]) == 0
+    assert (tmp_path / "again.docx").read_bytes() == word
 
 
 @pytest.mark.slow

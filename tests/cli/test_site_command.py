@@ -39,6 +39,10 @@ def test_table_output(capsys: pytest.CaptureFixture[str]) -> None:
     lines = {line.split()[0]: line.split() for line in out.splitlines() if line[:2] == "SL"}
     assert [lines[s][2] for s in ("SLO", "SLD", "SLV", "SLC")] == ["30", "50", "475", "975"]
     assert lines["SLV"][3] == "0.2607"
+    assert "Values from the 4 vertices of the grid cell that contains the site" in out
+    # at sea south of Ischia, in no complete cell: the fallback is said
+    assert main(["site", "--lat", "40.63", "--lon", "13.86"]) == 0
+    assert "the 4 nearest nodes: no complete grid cell" in capsys.readouterr().out
 
 
 @pytest.mark.parametrize(

@@ -30,7 +30,7 @@ GRID_NODES = 10751
 #: grid step (≈ 5.5 km); inside the grid no point is farther than half a cell's diagonal
 #: (≈ 3.9 km) from a node
 MAX_NODE_DISTANCE_KM = 6.0
-#: how many nodes the spatial interpolation uses (NTC 2008 Allegato A)
+#: how many nodes the spatial interpolation uses (NTC 2008 Allegato A: a cell's vertices)
 NODES_PER_SITE = 4
 
 
@@ -101,7 +101,8 @@ def load_grid() -> HazardGrid:
     )
 
 
-def _unit_vectors(lat: np.ndarray, lon: np.ndarray) -> np.ndarray:
+def unit_vectors(lat: np.ndarray, lon: np.ndarray) -> np.ndarray:
+    """Unit vectors (shape (..., 3)) of points given by latitude and longitude [°]."""
     phi, lam = np.radians(lat), np.radians(lon)
     return np.stack([np.cos(phi) * np.cos(lam), np.cos(phi) * np.sin(lam), np.sin(phi)], axis=-1)
 
@@ -109,7 +110,7 @@ def _unit_vectors(lat: np.ndarray, lon: np.ndarray) -> np.ndarray:
 @functools.cache
 def _node_vectors() -> np.ndarray:
     g = load_grid()
-    return _unit_vectors(g.lat, g.lon)
+    return unit_vectors(g.lat, g.lon)
 
 
 def check_coordinates(latitude: float, longitude: float) -> None:
@@ -118,6 +119,19 @@ def check_coordinates(latitude: float, longitude: float) -> None:
         raise InputError(f"expected a latitude in degrees, -90 to 90, found {latitude!r}")
     if not (np.isfinite(longitude) and -180.0 <= longitude <= 180.0):
         raise InputError(f"expected a longitude in degrees, -180 to 180, found {longitude!r}")
+
+
+def near_nodes(latitude: float, longitude: float, indices: np.ndarray) -> tuple[NearNode, ...]:
+    """The grid nodes of rows ``indices`` with their great-circle distances [km] from the
+    site [°]: 2R·asin(c/2), c the chord between unit vectors (exact, stable near zero)."""
+    g = load_grid()
+    site = unit_vectors(np.array(latitude), np.array(longitude))
+    chord = np.linalg.norm(_node_vectors()[indices] - site, axis=1)
+    dist = 2.0 * EARTH_RADIUS_KM * np.arcsin(np.minimum(chord / 2.0, 1.0))
+    return tuple(
+        NearNode(int(i), float(g.lat[i]), float(g.lon[i]), float(d))
+        for i, d in zip(indices, dist, strict=True)
+    )
 
 
 def nearest_nodes(latitude: float, longitude: float) -> tuple[NearNode, ...]:
@@ -130,16 +144,9 @@ def nearest_nodes(latitude: float, longitude: float) -> tuple[NearNode, ...]:
     NTC 2008 Allegato B gives separately (Tab. 1).
     """
     check_coordinates(latitude, longitude)
-    g = load_grid()
-    site = _unit_vectors(np.array(latitude), np.array(longitude))
+    site = unit_vectors(np.array(latitude), np.array(longitude))
     chord = np.linalg.norm(_node_vectors() - site, axis=1)
-    order = np.argsort(chord, kind="stable")[:NODES_PER_SITE]
-    # great-circle distance from the chord: d = 2R·asin(c/2) (exact, stable near zero)
-    dist = 2.0 * EARTH_RADIUS_KM * np.arcsin(np.minimum(chord[order] / 2.0, 1.0))
-    nodes = tuple(
-        NearNode(int(i), float(g.lat[i]), float(g.lon[i]), float(d))
-        for i, d in zip(order, dist, strict=True)
-    )
+    nodes = near_nodes(latitude, longitude, np.argsort(chord, kind="stable")[:NODES_PER_SITE])
     if nodes[0].distance > MAX_NODE_DISTANCE_KM:
         raise OutsideGridError(
             f"latitude {latitude:g}, longitude {longitude:g} is outside the NTC reference grid "

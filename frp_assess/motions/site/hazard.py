@@ -2,14 +2,19 @@
 
 From the coordinates, the nominal life V_N and the use class: V_R = V_N·C_U, then for each
 limit state T_R = −V_R/ln(1 − P_VR) (clamped to 30-2475 years), then a_g, F0, T_C* at the
-site: the inverse-distance mean of the 4 nearest grid nodes at the two grid return periods
-around T_R, then the log-log interpolation between them (docs/site-hazard.md).
+site: the inverse-distance mean of the four vertices of the grid cell that contains the site
+(the 4 nearest nodes where no complete cell does, at the grid's border) at the two grid
+return periods around T_R, then the log-log interpolation between them
+(docs/site-hazard.md).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
+from frp_assess.motions.site.cells import containing_cell
 from frp_assess.motions.site.formulas import (
     C_U,
     GRID_RETURN_PERIODS,
@@ -22,7 +27,12 @@ from frp_assess.motions.site.formulas import (
     inverse_distance_mean,
     log_interpolation,
 )
-from frp_assess.motions.site.grid import NearNode, load_grid, nearest_nodes
+from frp_assess.motions.site.grid import NearNode, load_grid, near_nodes, nearest_nodes
+
+#: how the site's values were interpolated: the four vertices of the grid cell that
+#: contains the site (NTC 2008 Allegato A), or the four nearest nodes (no complete cell
+#: contains the site: the grid's border)
+INTERPOLATIONS = ("cell", "nearest")
 
 
 @dataclass(frozen=True)
@@ -40,7 +50,9 @@ class LimitStateHazard:
 @dataclass(frozen=True)
 class SiteHazard:
     """The site: latitude, longitude [°]; V_N [years]; use class; C_U [-]; V_R [years]; the
-    four limit states (SLO, SLD, SLV, SLC, in order); the grid nodes used."""
+    four limit states (SLO, SLD, SLV, SLC, in order); the grid nodes used, nearest first;
+    ``interpolation`` "cell" (the vertices of the cell containing the site) or "nearest"
+    (the four nearest nodes, for a site in no complete cell)."""
 
     latitude: float
     longitude: float
@@ -50,9 +62,23 @@ class SiteHazard:
     V_R: float
     states: dict[str, LimitStateHazard]
     nodes: tuple[NearNode, ...]
+    interpolation: str = "cell"
 
     def __getitem__(self, limit_state: str) -> LimitStateHazard:
         return self.states[limit_state]
+
+
+def site_nodes(latitude: float, longitude: float) -> tuple[tuple[NearNode, ...], str]:
+    """The grid nodes whose values make the site's [°], nearest first, and how they were
+    chosen (:data:`INTERPOLATIONS`): the four vertices of the cell that contains the site,
+    or the four nearest nodes when no complete cell does.  Raises
+    :class:`~frp_assess.motions.site.grid.OutsideGridError` for a site off the grid."""
+    nearest = nearest_nodes(latitude, longitude)
+    cell = containing_cell(latitude, longitude, tuple(n.index for n in nearest))
+    if cell is None:
+        return nearest, "nearest"
+    vertices = near_nodes(latitude, longitude, np.array(cell))
+    return tuple(sorted(vertices, key=lambda n: (n.distance, n.index))), "cell"
 
 
 def grid_values(nodes: tuple[NearNode, ...], column: int) -> tuple[float, float, float]:
@@ -92,11 +118,13 @@ def site_hazard(
     grid does not cover, ValueError for a bad V_N or use class."""
     c_u = C_U(use_class)
     v_r = V_R(nominal_life, c_u)
-    nodes = nearest_nodes(latitude, longitude)
+    nodes, interpolation = site_nodes(latitude, longitude)
     states: dict[str, LimitStateHazard] = {}
     for state in LIMIT_STATES:
         tr = T_R(v_r, P_VR[state])
         used = clamp_return_period(tr)
         ag, f0, tc = parameters_at(nodes, used)
         states[state] = LimitStateHazard(tr, used, ag, f0, tc)
-    return SiteHazard(latitude, longitude, nominal_life, use_class, c_u, v_r, states, nodes)
+    return SiteHazard(
+        latitude, longitude, nominal_life, use_class, c_u, v_r, states, nodes, interpolation
+    )
