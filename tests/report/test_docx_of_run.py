@@ -22,7 +22,7 @@ DATA = Path(__file__).with_name("data")
 
 def _no_records() -> SeismicInput:
     """A seismic input with no records to write (write_outputs only reads ``records``)."""
-    return cast(SeismicInput, SimpleNamespace(records=[]))
+    return cast(SeismicInput, SimpleNamespace(records=[], state_records={}))
 
 
 def test_the_set_holds_both_reports_kept_while_the_results_are_the_same(
