@@ -116,3 +116,28 @@ def test_event_with_the_taylor_correction_matches_newton_to_the_end() -> None:
     assert resid == 0.0  # the kernel returns exactly 0 when it took the Taylor correction
     assert tau == pytest.approx(t, abs=1e-12)
     assert om == pytest.approx(om_e, rel=1e-9)
+
+
+#: a slow crossing: the wall just after a small impact, θ = 0 and θ' = 1e-6 rad/s outward,
+#: with no ground motion: it rises to about 3e-12 rad and is back at θ = 0 after
+#: 2·θ'/(p²·sin α) ≈ 4 µs (the last impacts of an impact sequence before rest, §3.3)
+SLOW_OMEGA0 = 1e-6
+
+
+@pytest.mark.parametrize("fixed_step", [None, 1e-4])
+def test_slow_crossing_is_located_in_time_not_only_in_rotation(fixed_step: float | None) -> None:
+    """A crossing at |θ'| = 1e-6 rad/s: an instant off by δt leaves θ within θ'·δt of the
+    level but θ' off by θ''·δt.  Closed form (energy, docs/model.md §3.1): with constant
+    ground acceleration the motion is reversible, so the wall is back at θ = 0 with
+    θ' = −θ'0 exactly.  A bound of 1e-13 rad on θ (the old test) allowed δt up to 1e-7 s,
+    θ' off by 2 % here; the instant must be the integrator's own to EVENT_TIME_TOLERANCE."""
+    model = MODEL if fixed_step is None else MODEL.with_options(fixed_step=fixed_step)
+    prm = model.params
+    a1 = acceleration(0.0, 1.0, 0.0, 0.0, prm)
+    period = 2.0 * SLOW_OMEGA0 / (prm.p2 * prm.sin_a)  # ≈ the return time [s]
+    h = 2.0 * period
+    tau, om, _resid = ev.locate_level(
+        0.0, SLOW_OMEGA0, a1, h, 0.9 * period, 0.0, 0.0, 1.0, 0.0, 0.0, prm
+    )
+    assert tau == pytest.approx(period, rel=1e-6)
+    assert om == pytest.approx(-SLOW_OMEGA0, rel=1e-9)

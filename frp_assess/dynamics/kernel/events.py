@@ -4,8 +4,9 @@ The dense output of a step is the cubic Hermite interpolant of y = s·θ through
 (values θ and slopes θ' of the 5th-order solution).  It is monotone between its critical
 points, so the *first* crossing of a level is found exactly on the cubic; that bracket is then
 refined on the integrator itself — Newton iterations on the length τ of one step taken from
-the start of the step — until the level is hit to EVENT_TOLERANCE.  The state returned is the
-integrator's, never the interpolant's.
+the start of the step — until the Newton correction of the instant is below
+EVENT_TIME_TOLERANCE of the step.  The state returned is the integrator's, never the
+interpolant's.
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ from numba import njit
 
 from frp_assess.dynamics.kernel.params import (
     EVENT_ITERATIONS,
-    EVENT_TOLERANCE,
+    EVENT_TIME_TOLERANCE,
     METHOD_RK4,
     KernelParams,
 )
@@ -149,11 +150,19 @@ def _newton_step(tau: float, f: float, df: float, h: float) -> float:
 
 @njit(cache=True, nogil=True)
 def _taylor_level(
-    th_e: float, om_e: float, a_e: float, jerk: float, s: float, level: float, reach: float
+    th_e: float,
+    om_e: float,
+    a_e: float,
+    jerk: float,
+    s: float,
+    level: float,
+    reach: float,
+    h: float,
 ) -> tuple[bool, float, float]:
     """Solve s·(θ + θ'·δ + θ''·δ²/2 + j·δ³/6) = level for a small δ [s] by Newton from 0.
 
-    Returns (found: |δ| ≤ reach and the residual ≤ EVENT_TOLERANCE, δ, θ' at δ).
+    Returns (found: |δ| ≤ reach and the last Newton correction ≤ EVENT_TIME_TOLERANCE·h, δ,
+    θ' at δ).
     """
     d = 0.0
     for _ in range(4):
@@ -165,7 +174,8 @@ def _taylor_level(
         if abs(d) > reach:
             return False, 0.0, om_e
     g = s * (th_e + d * (om_e + d * (0.5 * a_e + d * jerk / 6.0))) - level
-    if abs(g) > EVENT_TOLERANCE:
+    dg = s * (om_e + d * (a_e + 0.5 * jerk * d))
+    if not abs(g) <= EVENT_TIME_TOLERANCE * h * abs(dg):
         return False, 0.0, om_e
     return True, d, om_e + d * (a_e + 0.5 * jerk * d)
 
@@ -197,14 +207,16 @@ def locate_level(
     for _ in range(EVENT_ITERATIONS):
         th_e, om_e, a_e, _err = step(theta, omega, tau, u0, slope, s, k_s, a1, prm)
         resid = s * th_e - level
-        if abs(resid) <= EVENT_TOLERANCE:
-            break
         dy = s * om_e
+        # converged when the instant is known to EVENT_TIME_TOLERANCE·h (θ' there to
+        # θ''·that): a bound on θ alone would let a slow crossing's instant drift
+        if abs(resid) <= EVENT_TIME_TOLERANCE * h * abs(dy) or resid == 0.0:
+            break
         if dy == 0.0:
             break
         if taylor and tau > 0.0:
             found, d, om_d = _taylor_level(
-                th_e, om_e, a_e, (a_e - a1) / tau, s, level, _TAYLOR_REACH * h
+                th_e, om_e, a_e, (a_e - a1) / tau, s, level, _TAYLOR_REACH * h, h
             )
             if found and 0.0 < tau + d <= h:
                 return tau + d, om_d, 0.0
