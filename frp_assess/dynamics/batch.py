@@ -1,12 +1,15 @@
 """Run many IDAs (cases × records) on all cores.
 
-The kernel releases the GIL (``nogil=True``), so plain threads use every core without the
-cost of pickling records into processes.  Progress and cancellation are plain callables.
+The kernel releases the GIL (``nogil=True``) for a whole IDA (one compiled call,
+:mod:`frp_assess.dynamics.ida_search`), so plain threads use every core without the cost of
+pickling records into processes.  Progress and cancellation are plain callables; with more
+than one thread the results are handed to the callbacks on a thread of their own.
 """
 
 from __future__ import annotations
 
 import os
+import queue
 import threading
 from collections.abc import Callable, Sequence
 from concurrent.futures import FIRST_EXCEPTION, ThreadPoolExecutor, wait
@@ -54,50 +57,93 @@ def run_batch(
 ) -> list[IdaResult]:
     """IDA of every task, in the order given; the same numbers whatever ``jobs`` is.
 
+    With more than one job, ``on_result`` and ``progress`` are called from one delivery
+    thread, in the order the tasks finish: a callback that writes a file (the IDA cache)
+    never holds up a worker, which goes straight on to its next IDA.  Every result
+    finished is delivered before this returns or raises.
+
     Raises :class:`~frp_assess.errors.Cancelled` if ``cancel`` is set before all finish
-    (results already delivered through ``on_result`` are not lost).
+    (results already delivered through ``on_result`` are not lost); an exception raised by
+    a callback stops the batch and is raised here.
     """
     n = len(tasks)
     results: list[IdaResult | None] = [None] * n
     stop = cancel if cancel is not None else threading.Event()
-    lock = threading.Lock()
-    done = 0
 
-    def work(i: int) -> None:
-        nonlocal done
+    def compute(i: int) -> IdaResult:
         if stop.is_set():
             raise Cancelled("batch cancelled")
         t = tasks[i]
         res = ida(t.model, t.acc, t.dt, t.settings, should_stop=stop.is_set)
         results[i] = res
-        if on_result is not None:
-            on_result(i, res)
-        with lock:
-            done += 1
-            if progress is not None:
-                progress(done, n)
+        return res
 
     workers = max(1, jobs if jobs is not None else default_jobs())
     if workers == 1:
         for i in range(n):
-            work(i)
+            res = compute(i)
+            if on_result is not None:
+                on_result(i, res)
+            if progress is not None:
+                progress(i + 1, n)
     else:
+        _run_threads(n, workers, compute, stop, progress, on_result)
+    if stop.is_set() and any(r is None for r in results):
+        raise Cancelled("batch cancelled")
+    return [r for r in results if r is not None]
+
+
+def _run_threads(
+    n: int,
+    workers: int,
+    compute: Callable[[int], IdaResult],
+    stop: threading.Event,
+    progress: ProgressCallback | None,
+    on_result: ResultCallback | None,
+) -> None:
+    """``compute(i)`` for i < n on ``workers`` threads; the callbacks on one more thread."""
+    finished: queue.SimpleQueue[tuple[int, IdaResult] | None] = queue.SimpleQueue()
+    failure: list[BaseException] = []
+
+    def deliver() -> None:
+        done = 0
+        while (item := finished.get()) is not None:
+            if failure:  # a callback failed: drain the queue, call nothing more
+                continue
+            try:
+                if on_result is not None:
+                    on_result(*item)
+                done += 1
+                if progress is not None:
+                    progress(done, n)
+            except BaseException as exc:  # noqa: BLE001 - raised again by the caller
+                failure.append(exc)
+                stop.set()
+
+    def work(i: int) -> None:
+        finished.put((i, compute(i)))
+
+    courier = threading.Thread(target=deliver, name="ida-results", daemon=True)
+    courier.start()
+    try:
         with ThreadPoolExecutor(max_workers=workers, thread_name_prefix="ida") as pool:
             futures = [pool.submit(work, i) for i in range(n)]
             try:
-                finished, _ = wait(futures, return_when=FIRST_EXCEPTION)
+                finished_futures, _ = wait(futures, return_when=FIRST_EXCEPTION)
             except BaseException:  # Ctrl-C in the waiting thread: stop the workers promptly
                 stop.set()
                 for f in futures:
                     f.cancel()
                 raise
-            for f in finished:
+            for f in finished_futures:
                 exc = f.exception()
                 if exc is not None:
                     stop.set()
                     for g in futures:
                         g.cancel()
                     raise exc
-    if stop.is_set() and any(r is None for r in results):
-        raise Cancelled("batch cancelled")
-    return [r for r in results if r is not None]
+    finally:
+        finished.put(None)  # after the workers: every finished result is delivered first
+        courier.join()
+        if failure:
+            raise failure[0]

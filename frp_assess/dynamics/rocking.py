@@ -44,6 +44,19 @@ FAILURE_MODES: tuple[FailureMode, ...] = (
     "crushing",
     "rupture then crushing",
 )
+#: The fates that are a collapse: the wall fell (or met the α_x limit of the other collapse
+#: rules), or its toe crushed.
+COLLAPSE_FATES: frozenset[Fate] = frozenset({"fell", "exceeded", "crushed"})
+
+
+def failure_mode_of(fate: Fate, ruptured: bool) -> FailureMode | None:
+    """How a wall whose time history ended in ``fate`` failed (``None``: it did not collapse);
+    ``ruptured``: a bar broke before."""
+    if fate not in COLLAPSE_FATES:
+        return None
+    head = "rupture then " if ruptured else ""
+    return f"{head}{'crushing' if fate == 'crushed' else 'overturning'}"  # type: ignore[return-value]
+
 
 #: Default local error tolerance of the Dormand–Prince pair [-] (the measurement that chose it:
 #: :data:`~frp_assess.dynamics.options.INTEGRATION_TOLERANCE`).
@@ -51,7 +64,8 @@ DEFAULT_TOLERANCE = INTEGRATION_TOLERANCE.default
 #: Bounds of the tolerance a user may ask for [-].
 TOLERANCE_RANGE = INTEGRATION_TOLERANCE.bounds
 
-_FATES: dict[int, Fate] = {
+#: The kernel's fate codes by name.
+FATE_NAMES: dict[int, Fate] = {
     kp.FATE_FELL: "fell",
     kp.FATE_AT_REST: "at rest",
     kp.FATE_EXCEEDED: "exceeded",
@@ -171,15 +185,12 @@ class RockingResult:
     def collapsed(self) -> bool:
         """The collapse rule's verdict: the wall fell (or met the α_x limit of the other
         rules), or its toe crushed."""
-        return self.fate in ("fell", "exceeded", "crushed")
+        return self.fate in COLLAPSE_FATES
 
     @property
     def failure_mode(self) -> FailureMode | None:
         """How the wall failed (``None``: it did not collapse)."""
-        if not self.collapsed:
-            return None
-        head = "rupture then " if self.ruptures else ""
-        return f"{head}{'crushing' if self.fate == 'crushed' else 'overturning'}"  # type: ignore[return-value]
+        return failure_mode_of(self.fate, bool(self.ruptures))
 
 
 @dataclass(frozen=True)
@@ -299,6 +310,10 @@ class RockingModel:
         # θ* with the bar intact: the compiled rule itself, so the kernel and this agree
         return prm._replace(tip_bar=float(tipping_angle(k_bar, prm)))
 
+    def tail_samples(self, dt: float) -> int:
+        """Zero samples appended to a record sampled every dt [s]: the free-vibration tail."""
+        return int(math.ceil(self.options.free_vibration_tail / dt - 1e-9))
+
     def run(
         self,
         acc: NDArray[np.float64],
@@ -316,7 +331,7 @@ class RockingModel:
         if not (math.isfinite(dt) and dt > 0.0):
             raise ValueError(f"dt must be > 0 s, got {dt!r}")
         prm = self.params
-        n_tail = int(math.ceil(self.options.free_vibration_tail / dt - 1e-9))
+        n_tail = self.tail_samples(dt)
         size = history_length(acc.size + n_tail, dt, prm.collapse_mode) if history else 1
         h_theta = np.empty(size)
         h_omega = np.empty(size)
@@ -348,7 +363,7 @@ class RockingModel:
         )
         bars = self.rebars
         return RockingResult(
-            fate=_FATES[out.fate],
+            fate=FATE_NAMES[out.fate],
             decided_time=float(out.decided_time),
             collapse_time=None if math.isnan(out.collapse_time) else float(out.collapse_time),
             max_rotation=float(out.peak),

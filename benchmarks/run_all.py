@@ -1,0 +1,187 @@
+"""Every speed figure of issue 24 in one run, with one summary table (not part of the tests).
+
+    python3 benchmarks/run_all.py [--small] [--warm] [--jobs N] [--skip floor,grid,rerun]
+
+1. ``benchmarks/bench_floor.py``: the kernel against the compiled fixed-step floor on both
+   walls, and against scipy's ``solve_ivp``;
+2. the paper grid: ``python3 -m frp_assess study projects/paper-study.yaml --out <fresh dir>
+   --jobs 2`` (``--small``: projects/paper-study-small.yaml), with numba's cache of this tree
+   deleted first (cold cache, compilation included; ``--warm`` keeps it);
+3. ``benchmarks/bench_rerun.py``: an unchanged rerun of ``frp-assess run``.
+
+Each runs as a child process from the repository root, this tree first on its PYTHONPATH
+(never an installed copy of frp_assess); its own output is shown as it comes,
+then the table.  Wall time [s] and the child's CPU time (user + system, the fair measure on
+a shared machine) are both reported; the per-IDA cost is the grid's time over its IDAs.
+Exit status 0 when every benchmark ran (the targets are reported, not enforced).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import re
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+GRID_TARGET_S = 90.0  #: issue 24: the paper grid in ≤ 90 s on 2 cores, cold cache
+RERUN_TARGET_S = 0.5  #: issue 24: an unchanged rerun in ≤ 0.5 s
+
+
+@dataclass
+class Ran:
+    """One child process: its wall and CPU time [s], exit status and output."""
+
+    wall: float
+    cpu: float
+    status: int
+    out: str
+    rows: list[tuple[str, str]] = field(default_factory=list)
+
+
+def run(argv: list[str]) -> Ran:
+    """Run ``argv`` from the repository root, echoing its output as it comes."""
+    print(f"\n$ {' '.join(argv)}", flush=True)
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    t0 = time.perf_counter()
+    # this tree first on the children's path (not an installed copy of frp_assess)
+    path = os.pathsep.join(p for p in (str(ROOT), os.environ.get("PYTHONPATH", "")) if p)
+    proc = subprocess.Popen(
+        argv,
+        cwd=ROOT,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+        env={**os.environ, "PYTHONPATH": path},
+    )
+    lines = []
+    assert proc.stdout is not None
+    for line in proc.stdout:
+        print(f"  {line}", end="", flush=True)
+        lines.append(line)
+    status = proc.wait()
+    wall = time.perf_counter() - t0
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return Ran(wall, cpu, status, "".join(lines))
+
+
+def floor_rows(ran: Ran) -> list[tuple[str, str]]:
+    """The kernel/floor ratio of each wall and the kernel/solve_ivp ratio, from
+    bench_floor.py's lines (its whole output is shown above the table)."""
+    rows: list[tuple[str, str]] = []
+    wall = None
+    for line in ran.out.splitlines():
+        m = re.match(r"^(\S.*?): kernel ([\d,]+) simulated s per CPU-s", line)
+        if m:
+            wall = m.group(1)
+            rows.append((f"kernel, {wall}", f"{m.group(2)} simulated s per CPU-s"))
+        m = re.search(r"=> kernel / converged floor \(h = ([^)]*)\) = ([\d.]+)", line)
+        if m and wall is not None:
+            rows.append((f"  kernel / converged floor (h = {m.group(1)})", m.group(2)))
+        if "did not converge" in line and wall is not None:
+            rows.append(("  kernel / converged floor", line.strip()))
+        m = re.search(r"kernel/solve_ivp = ([\d,]+)", line)
+        if m:
+            rows.append(("kernel / solve_ivp (one time history)", m.group(1)))
+    if not rows:
+        rows.append(("bench_floor.py", "no figures found in its output (see above)"))
+    return rows
+
+
+def grid(project: str, jobs: int, cold: bool) -> Ran:
+    """The study of ``project`` into a fresh directory, timed (cold numba cache if asked)."""
+    if cold:
+        for f in (ROOT / "frp_assess").rglob("*.nb[ic]"):
+            f.unlink()
+    with tempfile.TemporaryDirectory(prefix="frp-grid-") as tmp:
+        out = Path(tmp) / "out"
+        argv = [sys.executable, "-m", "frp_assess", "study", project, "--out", str(out)]
+        ran = run([*argv, "--jobs", str(jobs)])
+        manifest = out / "study.json"
+        if ran.status != 0 or not manifest.is_file():
+            ran.rows = [("grid", f"failed (exit {ran.status})")]
+            return ran
+        data = json.loads(manifest.read_text(encoding="utf-8"))
+    n = int(data["cases"]) * int(data["records_per_case"])
+    computed = int(data["run"]["computed"])
+    seconds = float(data["run"]["seconds"])
+    verdict = "meets" if ran.wall <= GRID_TARGET_S else "misses"
+    ran.rows = [
+        (
+            f"grid {Path(project).name} ({n:,} IDAs, {jobs} jobs, "
+            f"{'cold' if cold else 'warm'} cache)",
+            f"{ran.wall:.1f} s wall ({verdict} ≤ {GRID_TARGET_S:g} s), "
+            f"{ran.cpu:.1f} s CPU ({100 * ran.cpu / ran.wall:.0f} %)",
+        ),
+        ("  of which the IDAs (study.json)", f"{seconds:.1f} s, {computed:,} computed"),
+        (
+            "  per IDA",
+            f"{1e3 * ran.wall / n:.2f} ms wall, {1e3 * ran.cpu / n:.2f} ms CPU",
+        ),
+    ]
+    return ran
+
+
+def rerun_rows(ran: Ran) -> list[tuple[str, str]]:
+    """The unchanged rerun's median wall and CPU time, from bench_rerun.py's lines."""
+    m = re.search(r"median wall ([\d.]+) s.*?median CPU ([\d.]+) s", ran.out, re.S)
+    if m is None:
+        return [("unchanged rerun", f"no figures found (exit {ran.status})")]
+    return [
+        (
+            "unchanged rerun (frp-assess run)",
+            f"median {m.group(1)} s wall, {m.group(2)} s CPU (target ≤ {RERUN_TARGET_S:g} s)",
+        )
+    ]
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--small", action="store_true", help="the grid of paper-study-small.yaml")
+    ap.add_argument("--warm", action="store_true", help="keep numba's cache for the grid")
+    ap.add_argument("--jobs", type=int, default=2, help="the grid's worker threads (default 2)")
+    ap.add_argument("--skip", default="", help="comma-separated: floor, grid, rerun")
+    args = ap.parse_args()
+    skip = {s.strip() for s in args.skip.split(",") if s.strip()}
+    unknown = skip - {"floor", "grid", "rerun"}
+    if unknown:
+        ap.error(f"--skip: unknown {', '.join(sorted(unknown))}; expected floor, grid, rerun")
+    py = sys.executable
+    rows: list[tuple[str, str]] = []
+    failed = []
+    if "floor" not in skip:
+        ran = run([py, "benchmarks/bench_floor.py"])
+        rows += floor_rows(ran)
+        if ran.status not in (0, 1):  # 1: a target missed, reported in the table
+            failed.append("floor")
+    if "grid" not in skip:
+        name = "paper-study-small.yaml" if args.small else "paper-study.yaml"
+        ran = grid(f"projects/{name}", args.jobs, cold=not args.warm)
+        rows += ran.rows
+        if ran.status != 0:
+            failed.append("grid")
+    if "rerun" not in skip:
+        ran = run([py, "benchmarks/bench_rerun.py"])
+        rows += rerun_rows(ran)
+        if ran.status not in (0, 1):
+            failed.append("rerun")
+    width = max(len(k) for k, _ in rows)
+    command = " ".join(["python3 benchmarks/run_all.py", *sys.argv[1:]])
+    print(f"\nSummary, {time.strftime('%Y-%m-%d %H:%M')}: {command}")
+    for k, v in rows:
+        print(f"  {k:<{width}}  {v}")
+    if failed:
+        print(f"failed: {', '.join(failed)}")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
