@@ -30,7 +30,12 @@ from frp_assess.tui.analysis_pane import AnalysisPane
 from frp_assess.tui.core.model import Problem
 from frp_assess.tui.core.opening import opening_data
 from frp_assess.tui.core.project_info import record_count
-from frp_assess.tui.core.session import RunOutcome, save_project, yaml_path_problem
+from frp_assess.tui.core.session import (
+    RunOutcome,
+    export_folder_problem,
+    save_project,
+    yaml_path_problem,
+)
 from frp_assess.tui.core.tabs import TABS, tab_of, tab_title
 from frp_assess.tui.core.text import printable
 from frp_assess.tui.dialogs import ConfirmQuit, PathPrompt
@@ -423,11 +428,6 @@ class FrpAssessApp(App[None]):
             return
         outcome = self.outcome
 
-        def check(path: Path) -> str | None:
-            if path.exists() and not path.is_dir():
-                return f"{path} is a file, not a directory"
-            return None
-
         def done(path: Path | None) -> None:
             if path is not None:
                 self.notify(f"exporting into {path}/ …")
@@ -441,7 +441,7 @@ class FrpAssessApp(App[None]):
                 "Export the PDF report and the results into the folder",
                 str(outcome.out_dir),
                 "report.pdf, results.json, results.csv, spectra.csv, records/",
-                check,
+                export_folder_problem,
             ),
             done,
         )

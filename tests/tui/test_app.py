@@ -330,6 +330,12 @@ def test_export_pdf_and_help(small_project: Path, tmp_path: Path):
             await settle(pilot, lambda: bool(app.screen.query("#path-input")))
             box = app.screen.query_one("#path-input", Input)
             assert box.value == str(default_out_dir(small_project))
+            # the rule of `run --out`: the folder that holds the export must exist
+            box.value = str(tmp_path / "missing" / "exported")
+            await pilot.press("enter")
+            error = app.screen.query_one("#path-error", Static)
+            await settle(pilot, lambda: "missing does not exist" in plain(error))
+            assert not (tmp_path / "missing").exists()
             box.value = str(export)
             await pilot.press("enter")
             await after_workers(pilot, lambda: (export / "results.json").exists())
