@@ -358,8 +358,11 @@ class FrpAssessApp(App[None]):
         project = self.project
         out_dir = default_out_dir(self.path)
         names = [UNREINFORCED, *(str(o.name) for o in project.expand_interventions())]
+        # the inputs' digest is recorded only when the file holds what is run
+        saved: Path | None = self.path
         if self.modified():
             panel.log_line("note: running the project as edited (not saved yet)", "yellow")
+            saved = None
         panel.start(names, record_count(project), str(out_dir))
         self.cancel_event = threading.Event()
         self.running = True
@@ -373,6 +376,7 @@ class FrpAssessApp(App[None]):
             out_dir,
             self.cancel_event,
             self.jobs,
+            saved,
         )
         self.run_worker(job, thread=True, exclusive=True, group="run", exit_on_error=False)
 
