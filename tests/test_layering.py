@@ -180,3 +180,126 @@ def test_an_internal_import_in_an_interface_is_refused(
     up = "." * (interface.count("/") + 2)  # from the probe's package up to frp_assess
     module.write_text(ok + line.format(up=up) + "\n", encoding="utf-8")
     assert import_problems(module) != []
+
+
+# --- the layout by role (issue 21): no cycle, names that say what they hold, small modules ----
+
+#: the longest module [lines] (docs/architecture.md); the project file's schema is split by
+#: block, each module shorter still
+MAX_MODULE_LINES = 500
+MAX_SCHEMA_MODULE_LINES = 400
+#: modules allowed over MAX_MODULE_LINES, each with why (none today)
+LONG_MODULES: dict[str, str] = {}
+#: basenames allowed in two places (besides __init__.py and __main__.py), each with why
+SHARED_BASENAMES: dict[str, str] = {}
+#: class names allowed at the top level of two modules, each with why (none today)
+SHARED_CLASS_NAMES: dict[str, str] = {}
+
+
+def module_name(path: Path) -> str:
+    """``frp_assess.a.b`` of ``frp_assess/a/b.py`` (a package: of its ``__init__.py``)."""
+    parts = ["frp_assess", *path.relative_to(PACKAGE).with_suffix("").parts]
+    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+
+
+def top_level_imports(path: Path, modules: set[str]) -> set[str]:
+    """The frp_assess modules ``path`` imports when it is imported: its module-level import
+    statements (not those in functions, nor under ``if TYPE_CHECKING:``); ``from a import b``
+    counts as module ``a.b`` when that is a module, else as ``a``."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    here = module_name(path)
+    package = here if path.name == "__init__.py" else here.rpartition(".")[0]
+    found: set[str] = set()
+    statements: list[ast.stmt] = list(tree.body)
+    while statements:
+        node = statements.pop()
+        if isinstance(node, ast.If):
+            if "TYPE_CHECKING" not in ast.unparse(node.test):
+                statements += node.body + node.orelse
+        elif isinstance(node, ast.Try):
+            statements += node.body + node.orelse + node.finalbody
+            statements += [s for h in node.handlers for s in h.body]
+        elif isinstance(node, ast.Import):
+            found.update(a.name for a in node.names)
+        elif isinstance(node, ast.ImportFrom):
+            base = node.module or ""
+            if node.level:
+                up = package.split(".")[: len(package.split(".")) - (node.level - 1)]
+                base = ".".join([*up, base] if base else up)
+            found.update(
+                f"{base}.{a.name}" if f"{base}.{a.name}" in modules else base for a in node.names
+            )
+    return {m for m in found if m in modules and m != here}
+
+
+def import_cycle(graph: dict[str, set[str]]) -> list[str]:
+    """One cycle of ``graph`` (a list of modules, the first repeated at the end), or []."""
+    state: dict[str, int] = {}  # 1: on the current path, 2: done
+    path: list[str] = []
+
+    def visit(node: str) -> list[str]:
+        state[node] = 1
+        path.append(node)
+        for nxt in sorted(graph[node]):
+            if state.get(nxt) == 1:
+                return [*path[path.index(nxt) :], nxt]
+            if nxt not in state and (cycle := visit(nxt)):
+                return cycle
+        state[node] = 2
+        path.pop()
+        return []
+
+    for start in sorted(graph):
+        if start not in state and (cycle := visit(start)):
+            return cycle
+    return []
+
+
+def test_import_cycle_finder_finds_one() -> None:
+    """The finder bites: a → b → c → a is found, a → b, a → c is not."""
+    assert import_cycle({"a": {"b"}, "b": {"c"}, "c": {"a"}}) == ["a", "b", "c", "a"]
+    assert import_cycle({"a": {"b", "c"}, "b": {"c"}, "c": set()}) == []
+
+
+def test_no_import_cycle() -> None:
+    """No module imports, through any chain of module-level imports, a module that imports it
+    (docs/architecture.md): each layer can be read, and imported, on its own."""
+    modules = {module_name(p): p for p in MODULES}
+    graph = {name: top_level_imports(path, set(modules)) for name, path in modules.items()}
+    cycle = import_cycle(graph)
+    assert not cycle, "import cycle: " + " -> ".join(cycle)
+
+
+def test_no_two_modules_share_a_name() -> None:
+    """A module's file name says what it holds, once in the package: ``cli/cmd_run.py`` is the
+    command, ``study/run.py`` the study runner (docs/architecture.md, "Names")."""
+    seen: dict[str, list[str]] = {}
+    for path in MODULES:
+        if path.name not in ("__init__.py", "__main__.py"):
+            seen.setdefault(path.name, []).append(str(path.relative_to(PACKAGE)))
+    shared = {n: p for n, p in seen.items() if len(p) > 1 and n not in SHARED_BASENAMES}
+    assert not shared, f"modules sharing a name: {shared}"
+
+
+def test_no_two_classes_share_a_name() -> None:
+    """A class name means one thing: the project file's model ends in ``Spec``, the typed input
+    of an assessment in ``Settings`` (or names its object), the recorded copy in results.json in
+    ``Result`` where an input of the same name exists (docs/architecture.md, "Names")."""
+    seen: dict[str, list[str]] = {}
+    for path in MODULES:
+        for node in ast.parse(path.read_text(encoding="utf-8")).body:
+            if isinstance(node, ast.ClassDef):
+                seen.setdefault(node.name, []).append(str(path.relative_to(PACKAGE)))
+    shared = {n: p for n, p in seen.items() if len(p) > 1 and n not in SHARED_CLASS_NAMES}
+    assert not shared, f"classes defined in two modules: {shared}"
+
+
+@pytest.mark.parametrize("path", MODULES, ids=lambda p: str(p.relative_to(PACKAGE)))
+def test_modules_are_small(path: Path) -> None:
+    """No module over 500 lines; a module of the project file's schema under 400 (one block)."""
+    relative = str(path.relative_to(PACKAGE))
+    if relative in LONG_MODULES:
+        pytest.skip(LONG_MODULES[relative])
+    limit = MAX_SCHEMA_MODULE_LINES if relative.startswith("config/schema/") else MAX_MODULE_LINES
+    lines = len(path.read_text(encoding="utf-8").splitlines())
+    assert lines <= limit, f"{relative} has {lines} lines, more than {limit}: split it by role"

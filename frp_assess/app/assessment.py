@@ -34,7 +34,7 @@ from frp_assess.assess.runner import (
     IdaRunner,
 )
 from frp_assess.assess.seismic import SeismicInput, build_records
-from frp_assess.assess.verdict import assess_and_decide
+from frp_assess.assess.verdict_pipeline import assess_and_decide
 from frp_assess.assess.verification import verify
 from frp_assess.config import Project
 from frp_assess.errors import Cancelled, InputError
@@ -180,7 +180,7 @@ def run_assessment(
     )
     floor_pga = None if spectra is None else spectra.floor_pga
     # design mode, the code checks, the one decision rule and how firm it is
-    # (frp_assess.assess.verdict); the design answers join the cases
+    # (frp_assess.assess.verdict_pipeline); the design answers join the cases
     decided = assess_and_decide(
         inputs,
         runner,

@@ -14,7 +14,7 @@ import math
 from dataclasses import dataclass
 
 from frp_assess.assess.from_project import material_of, spectrum_of
-from frp_assess.assess.inputs import Costs
+from frp_assess.assess.inputs import CostSettings
 from frp_assess.assess.quantities import frp_quantity
 from frp_assess.assess.runner import design_value_rule
 from frp_assess.assess.wall_model import WallInput, design_strength, rocking_model, weight_depth
@@ -82,7 +82,7 @@ def frp_mass_per_metre(
 ) -> float:
     """Installed FRP [kg per metre of wall] of one option: B, H [m], ρ [‰] (both faces when
     external)."""
-    q = frp_quantity(thickness, height, 1.0, material_of(material), position, ratio, Costs())
+    q = frp_quantity(thickness, height, 1.0, material_of(material), position, ratio, CostSettings())
     return q.mass_per_m
 
 
@@ -99,7 +99,7 @@ class OptionRow:
 def option_rows(project: Project) -> list[OptionRow]:
     """The options after expanding sweeps, with their quantities (wall length L)."""
     w, table = project.wall, project.material_table()
-    costs = Costs(str(project.costs.currency), project.costs.installation_per_metre)
+    costs = CostSettings(str(project.costs.currency), project.costs.installation_per_metre)
     rows = []
     for o in project.expand_interventions():
         q = frp_quantity(

@@ -32,7 +32,7 @@ from frp_assess.config.yaml_source import parse_yaml, read_text_file
 from frp_assess.config.yaml_update import update_project_text
 from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_write_text
-from frp_assess.motions.plausibility import plausibility_warnings
+from frp_assess.motions.pga_plausibility import plausibility_warnings
 from frp_assess.study.schema import StudyFile, looks_like_study, parse_study
 
 __all__ = [

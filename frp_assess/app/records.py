@@ -19,9 +19,10 @@ from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_write_text
 from frp_assess.motions.compliance import DEFAULT_T1, ComplianceReport, check_compliance
 from frp_assess.motions.envelopes import ENVELOPES
-from frp_assess.motions.plausibility import plausibility_warnings
-from frp_assess.motions.readers import FORMATS, UNITS, read_record
+from frp_assess.motions.pga_plausibility import plausibility_warnings
+from frp_assess.motions.readers import read_record
 from frp_assess.motions.record import Record
+from frp_assess.motions.record_text import FORMATS, UNITS
 from frp_assess.motions.simqke import generate_artificial
 from frp_assess.motions.spectra import SPECTRUM_HELP, ElasticSpectrum, parse_spectrum
 from frp_assess.motions.writers import write_at2

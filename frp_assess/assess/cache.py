@@ -24,7 +24,7 @@ from typing import Any
 import numpy as np
 
 from frp_assess import __version__
-from frp_assess.assess.inputs import Building
+from frp_assess.assess.inputs import BuildingSettings
 from frp_assess.dynamics import FAILURE_MODES, IdaResult, IdaSettings, RockingModel
 from frp_assess.io_utils import atomic_write_text
 from frp_assess.text_safety import plain
@@ -44,7 +44,7 @@ def task_key(
     model: RockingModel,
     record_hash: str,
     settings: IdaSettings,
-    building: Building | None = None,
+    building: BuildingSettings | None = None,
 ) -> str:
     """The cache key of one IDA: the model, the ground record's digest, the IDA rule and,
     for a wall above the ground floor, the building (its floor motion is what the IDA runs;

@@ -21,7 +21,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 from numpy.typing import ArrayLike
 
-from frp_assess.assess.inputs import Building
+from frp_assess.assess.inputs import BuildingSettings
 from frp_assess.dynamics import IdaResult
 from frp_assess.motions import ElasticSpectrum, Record
 from frp_assess.motions.compliance import record_spectra
@@ -31,7 +31,7 @@ from frp_assess.motions.floor import floor_acceleration, floor_spectrum, ground_
 SPECTRUM_DAMPING = 0.05
 
 
-def floor_record(record: Record, building: Building | None) -> Record:
+def floor_record(record: Record, building: BuildingSettings | None) -> Record:
     """The motion at the wall's base under ``record``: the record itself when the wall stands
     at ground level (``building`` None), else the floor's absolute acceleration at Z [m/s²]
     (same name, dt and length; :func:`~frp_assess.motions.floor.floor_acceleration`)."""
@@ -92,7 +92,7 @@ class FloorSpectra:
     ground_pga: tuple[float, ...]
 
 
-def default_periods(building: Building) -> np.ndarray:
+def default_periods(building: BuildingSettings) -> np.ndarray:
     """A log grid over 0.02-4 s (at least 2.5·T1) with T1 and the plateau ends 0.8·T1, 1.1·T1
     of the code's floor spectrum [s]."""
     t1 = building.period
@@ -103,7 +103,7 @@ def default_periods(building: Building) -> np.ndarray:
 def floor_spectra(
     records: Sequence[Record],
     spectrum: ElasticSpectrum,
-    building: Building,
+    building: BuildingSettings,
     periods: ArrayLike | None = None,
     floors: Sequence[Record] | None = None,
 ) -> FloorSpectra:

@@ -12,20 +12,20 @@ from collections.abc import Callable, Mapping
 from dataclasses import replace
 from pathlib import Path
 
-from frp_assess.assess.as_built import option_with_layout
-from frp_assess.assess.bars import BarSize
+from frp_assess.assess.bar_catalogue import BarSize
+from frp_assess.assess.bars_as_built import option_with_layout
 from frp_assess.assess.inputs import (
     AnchorageSettings,
     ArtificialRecords,
     AssessmentInputs,
     BarSettings,
-    Building,
+    BuildingSettings,
     CodeCheckSettings,
-    Costs,
+    CostSettings,
     DesignRequest,
     Material,
-    Option,
     RecordFile,
+    RetrofitOption,
 )
 from frp_assess.assess.wall_model import base_problem
 from frp_assess.config import MASONRY, FrpMaterial, LoadedProject, Project, load_project
@@ -52,7 +52,7 @@ from frp_assess.motions import (
     read_record,
     table_spectrum,
 )
-from frp_assess.results.model import ReportSettings
+from frp_assess.results.run_inputs import ReportSettings
 
 
 def spectrum_of(
@@ -82,11 +82,11 @@ def material_of(frp: FrpMaterial) -> Material:
     )
 
 
-def building_of(spec: BuildingSpec | None) -> Building | None:
+def building_of(spec: BuildingSpec | None) -> BuildingSettings | None:
     """The building of the ``building`` block (T1 defaulted by Circolare 2019 eq. C7.3.2)."""
     if spec is None:
         return None
-    return Building(
+    return BuildingSettings(
         float(spec.height),
         int(spec.storeys),
         float(spec.wall_base),
@@ -114,7 +114,7 @@ def bar_settings_of(spec: BarsSpec) -> BarSettings:
     )
 
 
-def _option_loc(project: Project, option: Option, key: str) -> Loc:
+def _option_loc(project: Project, option: RetrofitOption, key: str) -> Loc:
     """Where in the file an expanded option comes from (its item, or the sweep's ratio)."""
     for i, item in enumerate(project.interventions):
         if isinstance(item, Intervention):
@@ -141,7 +141,7 @@ def laid_out(
 ) -> AssessmentInputs:  # fmt: skip
     """``inputs`` with every option laid out in whole bars (docs/model.md §2.1); every option
     that cannot be built is a problem located at its item (line when ``lines`` is given)."""
-    options: list[Option] = []
+    options: list[RetrofitOption] = []
     problems: list[InputError] = []
     for option in inputs.options:
         try:
@@ -194,7 +194,7 @@ def inputs_from_project(
     wall, seismic, analysis = project.wall, project.seismic, project.analysis
     table = {name: material_of(m) for name, m in project.material_table().items()}
     options = tuple(
-        Option(
+        RetrofitOption(
             str(o.name),
             table[o.material],
             o.position,
@@ -255,7 +255,7 @@ def inputs_from_project(
             analysis.ida.step_ratio, analysis.ida.tolerance, analysis.ida.max_multiplier
         ),
         target=analysis.target,
-        costs=Costs(str(project.costs.currency), project.costs.installation_per_metre),
+        costs=CostSettings(str(project.costs.currency), project.costs.installation_per_metre),
         design=design,
         code_check=CodeCheckSettings(
             project.code_check.knowledge_level,

@@ -8,18 +8,19 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from frp_assess.assess.bars import (
+from frp_assess.assess.bar_catalogue import (
     DEFAULT_MAX_SPACING,
     DEFAULT_MIN_SPACING,
-    DEFAULT_STRAIN_COV,
     BarLayout,
     BarSize,
+)
+from frp_assess.assess.bar_strain import (
+    DEFAULT_STRAIN_COV,
     DesignStrain,
-    characteristic_strain,
     design_rupture_strain,
     fibre_of,
 )
-from frp_assess.assess.masonry import masonry_strength
+from frp_assess.assess.masonry_strength import masonry_strength
 from frp_assess.assess.wall_model import BarsInput, WallInput, rocking_model
 from frp_assess.dynamics import (
     IdaSettings,
@@ -33,9 +34,9 @@ from frp_assess.dynamics import (
 from frp_assess.dynamics.options import STRAIN_FACTOR, VERIFY
 from frp_assess.motions import ElasticSpectrum
 from frp_assess.motions.site import SiteHazard
-from frp_assess.results.model import ReportSettings
 from frp_assess.results.pivot import MasonryResult
-from frp_assess.rules.bars import rupture_strain
+from frp_assess.results.run_inputs import ReportSettings
+from frp_assess.rules.bars import characteristic_strain, rupture_strain
 
 #: the name of case 0, the wall without bars
 UNREINFORCED = "Unreinforced"
@@ -57,7 +58,7 @@ class Material:
     @property
     def characteristic(self) -> float:
         """ε_fk [-]: the producer's value, else the 5 % fractile of ε_u with a CoV of 0.10
-        (:data:`~frp_assess.assess.bars.DEFAULT_STRAIN_COV`)."""
+        (:data:`~frp_assess.assess.bar_strain.DEFAULT_STRAIN_COV`)."""
         if self.characteristic_strain is not None:
             return self.characteristic_strain
         return characteristic_strain(self.ultimate_strain, DEFAULT_STRAIN_COV)
@@ -71,7 +72,7 @@ class Material:
 
 
 @dataclass(frozen=True)
-class Option:
+class RetrofitOption:
     """One retrofit option: a material, a position and a ratio.
 
     ``ratio`` is the ratio the model uses: the ratio installed by whole bars of ``layout``
@@ -121,7 +122,7 @@ class DesignRequest:
 
 
 @dataclass(frozen=True)
-class Costs:
+class CostSettings:
     currency: str = "EUR"
     installation_per_metre: float = 0.0  #: per metre of wall length and layer of bars
 
@@ -158,7 +159,7 @@ class CodeCheckSettings:
 
 
 @dataclass(frozen=True)
-class Building:
+class BuildingSettings:
     """Where the wall stands in the building (docs/model.md §9): its rocking base moves with
     the absolute acceleration of the floor at Z (first mode only, Circolare 2019 §C7.2.3)."""
 
@@ -184,7 +185,7 @@ class AssessmentInputs:
     mechanism: Mechanism
     spectrum: ElasticSpectrum
     records: ArtificialRecords | tuple[RecordFile, ...]
-    options: tuple[Option, ...] = ()
+    options: tuple[RetrofitOption, ...] = ()
     length: float = 1.0  #: L [m]
     masonry: str | None = None
     masonry_description: str = ""
@@ -197,11 +198,11 @@ class AssessmentInputs:
     strain_factor: float = STRAIN_FACTOR.default
     ida: IdaSettings = IdaSettings()
     target: float = 1.0  #: required mean capacity/demand
-    costs: Costs = Costs()
+    costs: CostSettings = CostSettings()
     design: DesignRequest | None = None
     code_check: CodeCheckSettings = CodeCheckSettings()
     #: where the wall stands in the building; None: at ground level (shaken by the ground)
-    building: Building | None = None
+    building: BuildingSettings | None = None
     project: dict[str, str] = field(default_factory=dict)
     input_file: str = ""
     #: the project's values outside the range of practice, ``key: message`` each
@@ -278,7 +279,7 @@ class AssessmentInputs:
         bars = self.bars_input(material, position, ratio)
         return rocking_model(self.wall_input, self.mechanism, bars, self.model)
 
-    def model_for(self, option: Option | None) -> RockingModel:
+    def model_for(self, option: RetrofitOption | None) -> RockingModel:
         """The dynamics model of the unreinforced wall (``None``) or of an option."""
         if option is None:
             return rocking_model(self.wall_input, self.mechanism, None, self.model)

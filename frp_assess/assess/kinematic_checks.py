@@ -28,8 +28,8 @@ and nonlinear static checks are supporting checks.
 A wall above ground (Circolare 2019 §C7.2.3) takes its demand from the floor spectrum
 (eq. C8.7.1.12) and, in the time-history check, its base motion from the floor filter of
 :mod:`frp_assess.motions.floor`.  The building is any object with the attributes of
-:class:`Building` (the project's ``building`` block, :class:`~frp_assess.assess.inputs.Building`,
-or a :class:`FloorPosition`).
+:class:`Building` (the project's ``building`` block,
+:class:`~frp_assess.assess.inputs.BuildingSettings`, or a :class:`FloorPosition`).
 
 Units: ground accelerations in g (a_g·S); records in m/s²; displacements in m.
 """

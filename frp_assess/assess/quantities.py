@@ -10,8 +10,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from frp_assess.assess.as_built import option_as_built
-from frp_assess.assess.inputs import AssessmentInputs, Costs, Material, Option
+from frp_assess.assess.bars_as_built import option_as_built
+from frp_assess.assess.inputs import AssessmentInputs, CostSettings, Material, RetrofitOption
 from frp_assess.dynamics import Position
 from frp_assess.results.as_built import AsBuilt
 from frp_assess.rules.bars import bar_area, faces
@@ -31,7 +31,7 @@ def frp_quantity(
     material: Material,
     position: Position,
     ratio: float,
-    costs: Costs,
+    costs: CostSettings,
 ) -> Quantity:
     """Installed area ρ·B per metre per layer, bars over the full height H.
 
@@ -70,7 +70,7 @@ def built_quantity(
     return Quantity(built.mass / inputs.length, built.mass, built.cost)
 
 
-def option_quantity(inputs: AssessmentInputs, option: Option) -> Quantity:
+def option_quantity(inputs: AssessmentInputs, option: RetrofitOption) -> Quantity:
     """The bars of ``option`` as built: n whole bars per line × lines × bar length
     (H + 2·bond length when ``bars.anchorage`` is given), × bar area × density; cost as
     :func:`frp_quantity` (which it falls back on for an option that cannot be built)."""

@@ -6,31 +6,35 @@ pure function of the cases.  Serialisation is :mod:`frp_assess.results.json_io`.
 
 from __future__ import annotations
 
-import json
 import math
 from collections import Counter
 from collections.abc import Sequence
-from dataclasses import asdict
 from typing import Any
 
 import numpy as np
 
 from frp_assess import __version__
-from frp_assess.assess.as_built import design_as_built, option_as_built
+from frp_assess.assess.bars_as_built import design_as_built, option_as_built
 from frp_assess.assess.code_check import KinematicCheck
 from frp_assess.assess.decision import RANKING_RULE
 from frp_assess.assess.floor_input import FloorSpectra
 from frp_assess.assess.inputs import (
     UNREINFORCED,
-    ArtificialRecords,
     AssessmentInputs,
-    Building,
     Material,
-    Option,
+    RetrofitOption,
 )
 from frp_assess.assess.kinematic_checks import ida_capacity_demand
-from frp_assess.assess.pivot import case_pivot
+from frp_assess.assess.pivot_check import case_pivot
 from frp_assess.assess.quantities import built_quantity
+from frp_assess.assess.recorded_inputs import (
+    building_result,
+    compliance_result,
+    floor_spectra_result,
+    material_result,
+    seismic_result,
+    wall_result,
+)
 from frp_assess.assess.runner import CaseSummary, DesignResult, design_value_rule
 from frp_assess.assess.seismic import SeismicInput
 from frp_assess.assess.site_result import site_result
@@ -38,39 +42,31 @@ from frp_assess.assess.statistics import fit_lognormal_fragility, record_statist
 from frp_assess.assess.verification import NumericalCheck
 from frp_assess.dynamics import RockingModel
 from frp_assess.motions import G
-from frp_assess.motions.floor import default_period, mode_shape, participation_factor
 from frp_assess.results.checks import KinematicChecks
 from frp_assess.results.model import (
     SCHEMA_VERSION,
     AssessmentResult,
-    BuildingResult,
     CaseResult,
     CodeCheck,
-    Compliance,
-    ComplianceCheck,
-    Costs,
     Demand,
     DesignRow,
-    FloorSpectraResult,
     Fragility,
-    Generator,
     Governing,
     HistoryRun,
-    IdaSettings,
-    Integration,
-    MaterialResult,
-    ModelSettings,
     NumericalCheckResult,
-    ProjectInfo,
     RecordInfo,
     RecordResult,
-    Rupture,
+    RuptureResult,
     Scatter,
-    SeismicResult,
     Sensitivity,
+)
+from frp_assess.results.run_inputs import (
+    Costs,
+    IdaSettingsResult,
+    Integration,
+    ModelSettings,
+    ProjectInfo,
     Software,
-    SpectrumResult,
-    WallResult,
 )
 from frp_assess.results.verdict import Robustness
 
@@ -80,38 +76,6 @@ MAX_HISTORY_POINTS = 2500
 
 def _finite(x: float | None) -> float | None:
     return None if x is None or not math.isfinite(x) else float(x)
-
-
-def material_result(m: Material) -> MaterialResult:
-    return MaterialResult(
-        elastic_modulus=m.elastic_modulus,
-        ultimate_strain=m.ultimate_strain,
-        density=m.density,
-        price=m.price,
-        source=m.source,
-    )
-
-
-def wall_result(inputs: AssessmentInputs) -> WallResult:
-    """The wall; ``a_rm`` is that of the unreinforced wall's model, g·tan α_x (g·tan α with
-    ``pivot: edge``, g·(B − x_W)/H with ``pivot: crushing``, the same for every option),
-    ``alpha`` the geometric slenderness (tan α = B/H)."""
-    w = inputs.wall
-    return WallResult(
-        thickness=inputs.thickness,
-        height=inputs.height,
-        length=inputs.length,
-        masonry=inputs.masonry,
-        masonry_description=inputs.masonry_description,
-        unit_weight=inputs.unit_weight,
-        mechanism=inputs.mechanism,
-        alpha=w.alpha,
-        alpha_deg=math.degrees(w.alpha),
-        R=w.R,
-        p=w.p,
-        mass=w.mass,
-        a_rm=inputs.model_for(None).a_rm_g,
-    )
 
 
 def scatter_result(summary: CaseSummary, names: Sequence[str], demand: float) -> Scatter:
@@ -144,7 +108,7 @@ def scatter_result(summary: CaseSummary, names: Sequence[str], demand: float) ->
 
 def case_result(
     inputs: AssessmentInputs,
-    option: Option | None,
+    option: RetrofitOption | None,
     model: RockingModel,
     summary: CaseSummary,
     names: Sequence[str],
@@ -155,7 +119,7 @@ def case_result(
     floor_pga: Sequence[float] | None = None,
 ) -> CaseResult:
     """One case, undecided and unranked (``rank`` None, ``passes`` None: the decision,
-    :func:`frp_assess.assess.verdict.assess_and_decide`, fills them).
+    :func:`frp_assess.assess.verdict_pipeline.assess_and_decide`, fills them).
 
     ``demand`` is a_g·S [g]; ``fc`` the confidence factor dividing the IDA capacity
     (:func:`~frp_assess.assess.kinematic_checks.ida_confidence_factor`), so capacity/demand =
@@ -163,8 +127,8 @@ def case_result(
     and meets_target and the ranking follow it; the improvement stays a ratio of a_dyn.
     ``floor_pga``: PGA of each record's floor motion [g] for a wall above ground, else None.
 
-    With its pivot check (:func:`~frp_assess.assess.pivot.case_pivot`) and, for an option,
-    its bars as built (:func:`~frp_assess.assess.as_built.option_as_built`): FRP mass and
+    With its pivot check (:func:`~frp_assess.assess.pivot_check.case_pivot`) and, for an option,
+    its bars as built (:func:`~frp_assess.assess.bars_as_built.option_as_built`): FRP mass and
     cost are then those of the bars as built (whole bars, bond lengths counted); an option
     that cannot be built (``bars.whole_bars: false``) keeps the smeared quantities of its
     ratio (:func:`~frp_assess.assess.quantities.built_quantity`).
@@ -239,48 +203,6 @@ def case_failure_mode(records: Sequence[RecordResult]) -> str | None:
     return worst.failure_mode
 
 
-def shaken_by(building: Building) -> str:
-    """One sentence: the wall was shaken by the floor motion at Z (first mode), and a_dyn and
-    capacity/demand are in ground terms (for results.json, the report and the CLI)."""
-    gamma1 = participation_factor(building.storeys)
-    psi1 = mode_shape(building.wall_base, building.height)
-    return (
-        f"the wall's base at Z = {building.wall_base:g} m of a {building.storeys}-storey "
-        f"building {building.height:g} m tall moved with that floor's absolute acceleration, "
-        f"first mode only (γ1 = {gamma1:.3g}, ψ1 = Z/H_b = {psi1:.3g}, "
-        f"T1 = {building.period:.3g} s, ξ1 = {building.damping:.3g}; Circolare 2019 §C7.2.3); "
-        "the IDA scaled the ground records, so a_dyn and capacity/demand are in "
-        "ground-acceleration terms, compared with a_g·S"
-    )
-
-
-def building_result(building: Building) -> BuildingResult:
-    """The ``building`` object of results.json (docs/results-json.md)."""
-    return BuildingResult(
-        height=building.height,
-        storeys=building.storeys,
-        wall_base=building.wall_base,
-        z_over_h=building.z_over_h,
-        period=building.period,
-        period_default=default_period(building.height),
-        damping=building.damping,
-        gamma1=participation_factor(building.storeys),
-        psi1=mode_shape(building.wall_base, building.height),
-        shaken_by=shaken_by(building),
-    )
-
-
-def floor_spectra_result(spectra: FloorSpectra) -> FloorSpectraResult:
-    """The ``floor_spectra`` object of results.json, accelerations in g, periods in s."""
-    return FloorSpectraResult(
-        periods=spectra.periods,
-        mean=spectra.mean,
-        code=spectra.code,
-        ground=spectra.ground,
-        records=spectra.records,
-    )
-
-
 def below_collapse(collapse: float, survivor: float | None, tolerance: float) -> float:
     """The multiplier of the "just below collapse" time history.
 
@@ -290,43 +212,6 @@ def below_collapse(collapse: float, survivor: float | None, tolerance: float) ->
     used, below which the wall does not rock at all.
     """
     return survivor if survivor is not None else collapse * (1.0 - tolerance)
-
-
-def seismic_result(inputs: AssessmentInputs, seismic: SeismicInput) -> SeismicResult:
-    sp = inputs.spectrum
-    rep = seismic.compliance
-    gen = None
-    if isinstance(inputs.records, ArtificialRecords):
-        a = inputs.records
-        gen = Generator(method="SIMQKE", count=a.count, seed=a.seed, duration=a.duration, dt=a.dt)
-    return SeismicResult(
-        spectrum=SpectrumResult(
-            type=sp.kind,
-            name=sp.name,
-            description=sp.description,
-            parameters=_jsonable(sp.parameters),
-            ag_S=sp.pga_g,
-            T_B=sp.T_B,
-            T_C=sp.T_C,
-            T_D=sp.T_D,
-        ),
-        t1=inputs.t1,
-        records_kind="recorded" if seismic.recorded else "artificial",
-        generator=gen,
-        scale_factor=seismic.scale_factor,
-        periods=tuple(rep.periods.tolist()),
-        target_sa=tuple(rep.target.tolist()),
-        mean_sa=tuple(rep.mean.tolist()),
-    )
-
-
-def compliance_result(seismic: SeismicInput) -> Compliance:
-    """The ``compliance`` object of results.json: the record set's checks, one
-    :class:`~frp_assess.results.model.ComplianceCheck` per clause check (same fields)."""
-    rep = seismic.compliance
-    return Compliance(
-        passed=rep.passed, checks=tuple(ComplianceCheck(**asdict(c)) for c in rep.checks)
-    )
 
 
 def code_check_result(check: KinematicCheck, mass: float, above_ground: bool = False) -> CodeCheck:
@@ -403,7 +288,7 @@ def history_run(label: str, multiplier: float, res: Any, alpha: float) -> Histor
         decided_time=res.decided_time,
         peak_rotation_ratio=res.max_rotation_ratio,
         peak_strain=res.peak_strain,
-        ruptures=tuple(Rupture(time=r.time, side=r.side) for r in res.ruptures),
+        ruptures=tuple(RuptureResult(time=r.time, side=r.side) for r in res.ruptures),
         impacts=res.impacts,
         time=tuple(np.round(h.time[sl], 6).tolist()),
         theta_over_alpha=tuple(np.round(h.theta[sl] / alpha, 8).tolist()),
@@ -473,7 +358,7 @@ def build_results(
                 tolerance=m.tolerance,
                 verify=inputs.verify,
             ),
-            ida=IdaSettings(
+            ida=IdaSettingsResult(
                 step_ratio=inputs.ida.step_ratio,
                 tolerance=inputs.ida.tolerance,
                 max_multiplier=inputs.ida.max_multiplier,
@@ -535,10 +420,4 @@ def numerical_check_result(
         record=seismic.records[check.record].name,
         changed_pairs=check.changed,
         pairs=check.pairs,
-    )
-
-
-def _jsonable(obj: Any) -> Any:
-    return json.loads(
-        json.dumps(obj, default=lambda o: o.tolist() if hasattr(o, "tolist") else str(o))
     )

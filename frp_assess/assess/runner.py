@@ -7,11 +7,11 @@ import threading
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
-from frp_assess.assess.as_built import choose_layout, largest_installable_ratio
-from frp_assess.assess.bars import BarLayout
+from frp_assess.assess.bar_catalogue import BarLayout
+from frp_assess.assess.bars_as_built import choose_layout, largest_installable_ratio
 from frp_assess.assess.cache import IdaCache, record_digest, task_key
 from frp_assess.assess.floor_input import floor_record, in_ground_terms
-from frp_assess.assess.inputs import AssessmentInputs, Building, Material
+from frp_assess.assess.inputs import AssessmentInputs, BuildingSettings, Material
 from frp_assess.dynamics import (
     IdaResult,
     IdaSettings,
@@ -98,7 +98,7 @@ class IdaRunner:
         jobs: int | None = None,
         cancel: threading.Event | None = None,
         settings: IdaSettings | None = None,
-        building: Building | None = None,
+        building: BuildingSettings | None = None,
         batch: BatchRunner = run_batch,
     ) -> None:
         self.records = list(records)
@@ -224,13 +224,13 @@ def design_search(
 ) -> DesignResult:
     """Smallest ρ on the grid of ``resolution`` within ``ratio_range`` that passes every
     deciding check: ``screen(model)`` (the time-history checks,
-    :func:`frp_assess.assess.verdict.time_history_screen`; None: none) and the IDA's design
+    :func:`frp_assess.assess.verdict_pipeline.time_history_screen`; None: none) and the IDA's design
     capacity/demand ≥ the target (``demand_g`` = FC·a_g·S [g]).  Capacity is not assumed to
     grow with ρ (it does not: a stiffer bar can break sooner, a heavier one move the pivot):
     the grid is walked from the bottom up and the first ratio that passes is the answer, so
     every smaller grid ratio was checked and failed.
 
-    Each grid ratio is built in whole bars (:func:`~frp_assess.assess.as_built.choose_layout`,
+    Each grid ratio is built in whole bars (:func:`~frp_assess.assess.bars_as_built.choose_layout`,
     the diameter chosen by the least installed ratio) and the model runs with the installed
     ratio (with ``bars.whole_bars``), so the answer's layout installs at least the ratio found
     and capacity/demand is that of the bars as built.  The installed ratio never decreases

@@ -13,7 +13,7 @@ from frp_assess.motions import (
     read_record,
     scale_to_pga,
 )
-from frp_assess.motions.plausibility import plausibility_warnings
+from frp_assess.motions.pga_plausibility import plausibility_warnings
 
 
 @dataclass(frozen=True)
@@ -23,7 +23,7 @@ class SeismicInput:
     recorded: bool
     scale_factor: float  #: common factor applied to recorded files (1 for artificial)
     #: one line per record whose PGA as read (before scaling) looks like a units mistake
-    #: (:func:`frp_assess.motions.plausibility.plausibility_warnings`); empty for artificial
+    #: (:func:`frp_assess.motions.pga_plausibility.plausibility_warnings`); empty for artificial
     warnings: tuple[str, ...] = field(default=())
 
 

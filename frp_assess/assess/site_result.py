@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from frp_assess.motions.site import LIMIT_STATES, SiteHazard
 from frp_assess.motions.site.formulas import P_VR
-from frp_assess.results.model import LimitStateSite, SiteResult
+from frp_assess.results.run_inputs import LimitStateSite, SiteResult
 
 
 def site_result(hazard: SiteHazard | None, limit_state: str) -> SiteResult | None:

@@ -2,7 +2,7 @@
 
 ``run`` and ``design`` (:meth:`AssessmentInputs.model_for`), ``study``
 (:meth:`StudyPlan.model`), ``ida`` and ``simulate`` (``cli/wall_args.py``) and the TUI's
-preview (``tui/core/model.py``) all build their :class:`~frp_assess.dynamics.RockingModel`
+preview (``tui/core/editor_state.py``) all build their :class:`~frp_assess.dynamics.RockingModel`
 with :func:`rocking_model`: the wall with its design strength f_d (so that ``pivot:
 crushing`` moves the pivot wherever the case has a masonry strength), the bars, the options.
 
@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from frp_assess.assess.masonry import masonry_strength
+from frp_assess.assess.masonry_strength import masonry_strength
 from frp_assess.dynamics import Mechanism, ModelOptions, Position, Rebars, RockingModel, Wall
 from frp_assess.dynamics.rebars import DEFAULT_STRAIN_FACTOR
 from frp_assess.dynamics.units import rebars_from_practice, wall_from_practice
@@ -80,7 +80,7 @@ def design_strength(
     masonry: str | None, knowledge_level: str, compressive_strength: float | None = None
 ) -> float:
     """f_d [MPa] of a case: the project's f_m, else the masonry type's by the knowledge level,
-    else the lowest of Tab. C8.5.I, divided by FC (:func:`~frp_assess.assess.masonry.
+    else the lowest of Tab. C8.5.I, divided by FC (:func:`~frp_assess.assess.masonry_strength.
     masonry_strength`, the value results.json records)."""
     return masonry_strength(masonry, knowledge_level, compressive_strength).f_d
 

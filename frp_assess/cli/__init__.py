@@ -1,8 +1,8 @@
 """The `frp-assess` command line: a thin layer over the application API.
 
-Each subcommand lives in its own module of this package and exposes
-``register(subparsers) -> None``, which adds its parser and sets ``handler`` (a callable
-taking the parsed namespace and returning the exit code).  Errors a user can fix
+Each subcommand ``<name>`` lives in its own module of this package, ``cmd_<name>.py``, and
+exposes ``register(subparsers) -> None``, which adds its parser and sets ``handler`` (a
+callable taking the parsed namespace and returning the exit code).  Errors a user can fix
 (:class:`~frp_assess.errors.InputError`) are printed as one line and give exit code 2.
 """
 
@@ -20,7 +20,7 @@ from frp_assess.errors import Cancelled, InputError, NumericalError
 from frp_assess.text_safety import plain
 
 #: The subcommands, in the order `--help` lists them, with their one-line help: a command's
-#: module (``frp_assess.cli.<name>``) is imported only when that command runs, so that
+#: module (``frp_assess.cli.cmd_<name>``) is imported only when that command runs, so that
 #: ``frp-assess run`` of an unchanged project starts in a fraction of a second.
 COMMANDS: dict[str, str] = {
     "new": "create a project file from the commented template",
@@ -60,7 +60,7 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     sub.required = True
     for name, text in COMMANDS.items():
         if argv is None or name == wanted:
-            importlib.import_module(f"frp_assess.cli.{name}").register(sub)
+            importlib.import_module(f"frp_assess.cli.cmd_{name}").register(sub)
         else:
             sub.add_parser(name, help=text)
     return parser

@@ -4,7 +4,7 @@ The schema (:mod:`frp_assess.config.schema`) refuses what the model cannot compu
 inside that range but outside the range of practice — a wall 32 m high, a ratio of
 0.0015 ‰ — usually is a typing or units mistake, yet it runs silently.
 :func:`project_warnings` returns one :class:`PlausibilityWarning` per such value (the model of
-:mod:`frp_assess.motions.plausibility` for record units).  ``validate`` and ``run`` print each
+:mod:`frp_assess.motions.pga_plausibility` for record units).  ``validate`` and ``run`` print each
 once as ``frp-assess: warning: file:line: key: message``; ``run`` also stores them, as
 ``key: message``, in results.json's ``input_warnings`` and the report lists them.  Pure: it
 only reads the project.

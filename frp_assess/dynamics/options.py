@@ -3,8 +3,8 @@
 Every option has one :class:`Option` here: its key (the field of :class:`ModelOptions` /
 :class:`IdaSettings` / :class:`Rebars` and the key of the project and study files), default,
 allowed values or range, unit and a one-line help.  The dataclasses take their defaults from
-it; the pydantic schemas (``config/schema.py``, reused by ``study/schema.py``) and the
-command-line arguments (``cli/wall_args.py``, ``cli/ida.py``) are derived from it, and
+it; the pydantic schemas (``config/schema/``, reused by ``study/schema.py``) and the
+command-line arguments (``cli/wall_args.py``, ``cli/cmd_ida.py``) are derived from it, and
 ``tests/dynamics/test_options.py`` checks each of them against it.
 
 To add an option: declare it here, add the field to its dataclass with ``default=X.default``,

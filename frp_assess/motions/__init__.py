@@ -16,7 +16,8 @@ from frp_assess.motions.compliance import (  # noqa: E402
     scale_to_ntc_band,
     scale_to_pga,
 )
-from frp_assess.motions.readers import RecordFormatError, read_record  # noqa: E402
+from frp_assess.motions.readers import read_record
+from frp_assess.motions.record_text import RecordFormatError
 from frp_assess.motions.response import response_spectrum  # noqa: E402
 from frp_assess.motions.simqke import generate_artificial  # noqa: E402
 from frp_assess.motions.spectra import (  # noqa: E402

@@ -9,8 +9,8 @@ from __future__ import annotations
 from pathlib import Path
 
 from frp_assess.io_utils import atomic_write_text
-from frp_assess.motions.readers import unit_factor
 from frp_assess.motions.record import G, Record
+from frp_assess.motions.record_text import unit_factor
 
 
 def write_at2(record: Record, path: str | Path, description: str = "") -> None:

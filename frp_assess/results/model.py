@@ -7,6 +7,9 @@ lengths m, angles rad (unless ``_deg``), accelerations g, masses kg, times s, st
 costs in ``costs.currency``.  A field with a default may be missing from a file (it was added
 later); :data:`SCHEMA_VERSION` changes only when a file of the old version cannot be read
 as this one.
+
+The objects that record what the run was given (software, project, wall, settings,
+materials, costs, seismic input, site, building) are in :mod:`frp_assess.results.run_inputs`.
 """
 
 from __future__ import annotations
@@ -16,6 +19,20 @@ from dataclasses import dataclass, field
 from frp_assess.results.as_built import AsBuilt
 from frp_assess.results.checks import KinematicChecks
 from frp_assess.results.pivot import MasonryResult, PivotResult
+from frp_assess.results.run_inputs import BuildingResult as BuildingResult  # re-export
+from frp_assess.results.run_inputs import (
+    Costs,
+    MaterialResult,
+    ModelSettings,
+    ProjectInfo,
+    SeismicResult,
+    Software,
+    WallResult,
+)
+from frp_assess.results.run_inputs import FloorSpectraResult as FloorSpectraResult  # re-export
+from frp_assess.results.run_inputs import LimitStateSite as LimitStateSite  # re-export
+from frp_assess.results.run_inputs import ReportSettings as ReportSettings  # re-export
+from frp_assess.results.run_inputs import SiteResult as SiteResult  # re-export
 from frp_assess.results.verdict import DecidingCheck, Robustness
 
 #: version of the contract written as ``schema_version``; another is refused on reading
@@ -25,188 +42,6 @@ SCHEMA_VERSION = 1
 MEAN_OF_RECORDS_FROM = 7
 #: the name of the unreinforced wall's case
 UNREINFORCED = "Unreinforced"
-
-
-@dataclass(frozen=True)
-class Software:
-    """The program that wrote the file."""
-
-    name: str
-    version: str
-
-
-@dataclass(frozen=True)
-class ReportSettings:
-    """How the report is written: ``language`` en | it; ``template``: the Word file whose
-    styles the DOCX report uses (a path as the run resolved it, or None)."""
-
-    language: str = "en"
-    template: str | None = None
-
-
-@dataclass(frozen=True)
-class ProjectInfo:
-    """Who and where, as typed in the project file (free text)."""
-
-    name: str = ""
-    location: str = ""
-    engineer: str = ""
-    notes: str = ""
-
-
-@dataclass(frozen=True)
-class WallResult:
-    """The wall: thickness, height, length [m]; unit_weight [kN/m³]; alpha [rad] with
-    tan(alpha) = B/H, alpha_deg [°]; R half diagonal [m]; p frequency parameter [rad/s];
-    mass per metre of wall [kg/m]; a_rm [g]: the unreinforced wall's model's, about its pivot
-    (g·tan(alpha) with pivot: edge, g·(B − x)/H with pivot: crushing)."""
-
-    thickness: float
-    height: float
-    length: float
-    masonry: str | None  #: library key, or None when typed in
-    masonry_description: str | None
-    unit_weight: float
-    mechanism: str  #: one-sided | two-sided
-    alpha: float
-    alpha_deg: float
-    R: float
-    p: float
-    mass: float
-    a_rm: float
-
-
-@dataclass(frozen=True)
-class Integration:
-    """The integrator: local error tolerance [-] (docs/model.md §4.2); ``verify``: the
-    numerical check was computed."""
-
-    method: str
-    tolerance: float
-    verify: bool
-
-
-@dataclass(frozen=True)
-class IdaSettings:
-    """The IDA search: step ratio of the multiplier [-], relative tolerance on the collapse
-    multiplier [-], largest multiplier C_max [-]."""
-
-    step_ratio: float
-    tolerance: float
-    max_multiplier: float
-
-
-@dataclass(frozen=True)
-class ModelSettings:
-    """The model conventions of the run; restitution_ratio is the velocity ratio applied at
-    an impact of the unreinforced wall's model, at the slenderness about its pivot [-],
-    strain_factor c of eps_max = c·eps_u [-], free_vibration_tail [s], target
-    capacity/demand [-]; design_value says how design_a_dyn is taken (prose)."""
-
-    restitution: str | float  #: energy | velocity, or the coefficient itself [-]
-    restitution_ratio: float
-    rupture: str
-    collapse: str  #: overturning | end-of-record | first-exceedance
-    strain_factor: float
-    free_vibration_tail: float
-    integration: Integration
-    ida: IdaSettings
-    target: float
-    design_value: str
-
-
-@dataclass(frozen=True)
-class MaterialResult:
-    """A bar material used by some case: E [GPa], ultimate strain [-], density [kg/m³],
-    price [currency/kg]."""
-
-    elastic_modulus: float
-    ultimate_strain: float
-    density: float
-    price: float
-    source: str
-
-
-@dataclass(frozen=True)
-class Costs:
-    """Currency of every cost, installation cost per metre of bar [currency/m]."""
-
-    currency: str
-    installation_per_metre: float
-
-
-@dataclass(frozen=True)
-class SpectrumResult:
-    """The elastic spectrum: ag_S = a_g·S [g]; corner periods [s] (None for tables);
-    ``parameters`` as given and derived (numbers, text or lists, by spectrum type)."""
-
-    type: str
-    name: str
-    description: str
-    parameters: dict[str, object]
-    ag_S: float
-    T_B: float | None
-    T_C: float | None
-    T_D: float | None
-
-
-@dataclass(frozen=True)
-class Generator:
-    """How artificial records were generated: duration [s], time step dt [s]."""
-
-    method: str
-    count: int
-    seed: int
-    duration: float
-    dt: float
-
-
-@dataclass(frozen=True)
-class SeismicResult:
-    """The seismic input: t1 reference period of the compliance checks [s]; periods [s];
-    target_sa and mean_sa (mean 5 % spectrum of the records) at ``periods`` [g]."""
-
-    spectrum: SpectrumResult
-    t1: float
-    records_kind: str  #: artificial | recorded
-    generator: Generator | None  #: None for recorded motions
-    scale_factor: float  #: common factor applied to record files (1 for artificial) [-]
-    periods: tuple[float, ...]
-    target_sa: tuple[float, ...]
-    mean_sa: tuple[float, ...]
-
-
-@dataclass(frozen=True)
-class LimitStateSite:
-    """One limit state at the site (NTC 2018 Tab. 3.2.I): P_VR [-]; TR [years] =
-    −V_R/ln(1 − P_VR); TR_used [years], TR limited to the grid's 30–2475; ag [g] on rock,
-    F0 [-], Tc_star = T_C* [s] interpolated on the NTC reference grid at TR_used."""
-
-    P_VR: float
-    TR: float
-    TR_used: float
-    ag: float
-    F0: float
-    Tc_star: float
-
-
-@dataclass(frozen=True)
-class SiteResult:
-    """The site when the spectrum is given by its coordinates (docs/site-hazard.md):
-    latitude, longitude [°]; V_N nominal life [years]; use class I–IV; C_U [-];
-    V_R = max(V_N·C_U, 35) [years]; the four limit states SLO, SLD, SLV, SLC in order;
-    ``limit_state`` the one whose a_g, F0, T_C* make the spectrum; nearest_node [km] the
-    distance to the nearest grid node."""
-
-    latitude: float
-    longitude: float
-    V_N: float
-    use_class: str
-    C_U: float
-    V_R: float
-    limit_states: dict[str, LimitStateSite]
-    limit_state: str
-    nearest_node: float
 
 
 @dataclass(frozen=True)
@@ -416,7 +251,7 @@ class DesignRow:
 
 
 @dataclass(frozen=True)
-class Rupture:
+class RuptureResult:
     """A bar broke at ``time`` [s]; ``side`` is the sign of theta then."""
 
     time: float
@@ -436,7 +271,7 @@ class HistoryRun:
     decided_time: float | None
     peak_rotation_ratio: float
     peak_strain: float
-    ruptures: tuple[Rupture, ...]
+    ruptures: tuple[RuptureResult, ...]
     impacts: int
     time: tuple[float, ...]
     theta_over_alpha: tuple[float, ...]
@@ -471,7 +306,7 @@ class NumericalCheckResult:
 
 
 @dataclass(frozen=True)
-class SensitivityRow:
+class SensitivityRowResult:
     """One model convention: design a_dyn [g], capacity/demand [-]."""
 
     variant: str
@@ -485,42 +320,7 @@ class Sensitivity:
     """One case under each model convention."""
 
     case: str
-    rows: tuple[SensitivityRow, ...]
-
-
-@dataclass(frozen=True)
-class BuildingResult:
-    """Where the wall stands in the building (project block ``building``, docs/model.md §9):
-    height H_b [m], storeys n [-], wall_base Z [m], z_over_h = Z/H_b = ψ1(Z) [-], period T1
-    [s] used, period_default = 0.05·H_b^0.75 [s] (Circolare 2019 eq. C7.3.2; equal to
-    ``period`` unless the project gave T1), damping ξ1 [-], gamma1 = 3n/(2n+1) [-], psi1 =
-    Z/H_b [-] (Circolare 2019 §C7.2.3, eq. C7.2.10)."""
-
-    height: float
-    storeys: int
-    wall_base: float
-    z_over_h: float
-    period: float
-    period_default: float
-    damping: float
-    gamma1: float
-    psi1: float
-    shaken_by: str  #: one sentence: what moves the wall's base, and in which terms a_dyn is
-
-
-@dataclass(frozen=True)
-class FloorSpectraResult:
-    """5 % pseudo-acceleration spectra at the wall's base, all in g at ``periods`` [s]: the
-    mean of the records' floor motions (unscaled, as the IDA received them), the code's floor
-    spectrum at Z of the target ground spectrum (Circolare 2019 eqs. C7.2.5-C7.2.9, first
-    mode), the target ground spectrum, and each record's own floor spectrum (by record, in
-    the order of ``records``)."""
-
-    periods: tuple[float, ...]
-    mean: tuple[float, ...]
-    code: tuple[float, ...]
-    ground: tuple[float, ...]
-    records: tuple[tuple[float, ...], ...]
+    rows: tuple[SensitivityRowResult, ...]
 
 
 @dataclass(frozen=True)

@@ -2,7 +2,7 @@
 
 Plain frozen dataclasses (the field names are the JSON keys; :mod:`frp_assess.results.json_io`
 reads and writes them), filled by :mod:`frp_assess.assess.decision` and
-:mod:`frp_assess.assess.verdict`.  Margins are capacity/demand ratios [-] (≥ 1 passes),
+:mod:`frp_assess.assess.verdict_pipeline`.  Margins are capacity/demand ratios [-] (≥ 1 passes),
 accelerations in g, probabilities as fractions.
 """
 

@@ -18,7 +18,7 @@ import math
 from collections.abc import Iterator
 from dataclasses import dataclass
 
-from frp_assess.assess.inputs import Building
+from frp_assess.assess.inputs import BuildingSettings
 from frp_assess.assess.wall_model import (
     BarsInput,
     WallInput,
@@ -200,12 +200,12 @@ class StudyPlan:
             return height * math.tan(math.radians(geometry)), geometry
         return geometry, math.degrees(math.atan2(geometry, height))
 
-    def building(self, case: Case) -> Building | None:
+    def building(self, case: Case) -> BuildingSettings | None:
         """Where the wall of ``case`` stands (None: at ground level, docs/model.md §9)."""
         b = self.study.building
         if b is None or case.wall_base is None:
             return None
-        return Building(b.height, b.storeys, case.wall_base, b.first_period, b.damping)
+        return BuildingSettings(b.height, b.storeys, case.wall_base, b.first_period, b.damping)
 
     def cases(self, start: int = 0, stop: int | None = None) -> Iterator[Case]:
         """Cases ``start`` ≤ i < ``stop`` in order."""

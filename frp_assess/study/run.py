@@ -32,7 +32,7 @@ from typing import Protocol
 
 from frp_assess import __version__
 from frp_assess.assess.cache import IdaCache
-from frp_assess.assess.inputs import Building
+from frp_assess.assess.inputs import BuildingSettings
 from frp_assess.assess.runner import BatchRunner, IdaRunner, summarise
 from frp_assess.dynamics import IdaResult, IdaTask, default_jobs, run_batch
 from frp_assess.errors import Cancelled
@@ -231,9 +231,9 @@ def run_study(
     cache = IdaCache(cache_dir if cache_dir is not None else out_dir / CACHE_DIR)
     # the cached runner of `frp-assess run`, one per record set and floor of the building
     # (the floor motions are computed once per runner), on the study's executor
-    runners: dict[tuple[str, Building | None], IdaRunner] = {}
+    runners: dict[tuple[str, BuildingSettings | None], IdaRunner] = {}
 
-    def runner(label: str, building: Building | None) -> IdaRunner:
+    def runner(label: str, building: BuildingSettings | None) -> IdaRunner:
         key = (label, building)
         if key not in runners:
             runners[key] = IdaRunner(
@@ -275,7 +275,7 @@ def run_study(
             continue
         cases = list(plan.cases(lo, hi))
         results: list[Sequence[IdaResult]] = [()] * len(cases)
-        groups: dict[tuple[str, Building | None], list[int]] = {}
+        groups: dict[tuple[str, BuildingSettings | None], list[int]] = {}
         for i, case in enumerate(cases):  # the cases of a chunk by record set and floor
             groups.setdefault((case.spectrum, plan.building(case)), []).append(i)
         for (label, building), slots in groups.items():

@@ -27,7 +27,7 @@ from frp_assess.config.schema import Project
 from frp_assess.errors import InputError
 from frp_assess.numbers import numerical_check_text, recommendation_text
 from frp_assess.tui.analysis_pane import AnalysisPane
-from frp_assess.tui.core.model import Problem
+from frp_assess.tui.core.editor_state import Problem
 from frp_assess.tui.core.opening import opening_data
 from frp_assess.tui.core.project_info import record_count
 from frp_assess.tui.core.session import (
@@ -42,22 +42,22 @@ from frp_assess.tui.dialogs import ConfirmQuit, PathPrompt
 from frp_assess.tui.fields import FieldRow
 from frp_assess.tui.help import HelpScreen
 from frp_assess.tui.help_line import HelpLine
-from frp_assess.tui.history import HistoryPane
+from frp_assess.tui.history_pane import HistoryPane
 from frp_assess.tui.item_editor import ItemEditor
 from frp_assess.tui.jobs import export_job, previous_results_job, run_assessment_job
 from frp_assess.tui.keybar import KeyBar
 from frp_assess.tui.main_tabs import MainTabs
 from frp_assess.tui.materials_pane import MaterialsPane
-from frp_assess.tui.messages import ExportDone, PreviousLoaded, RunDone, RunProgress
 from frp_assess.tui.project_form import ProjectForm
 from frp_assess.tui.ranking_table import RankingTable
 from frp_assess.tui.records_pane import RecordsPane
-from frp_assess.tui.results import STALE_TITLE, ResultsPane
+from frp_assess.tui.results_pane import STALE_TITLE, ResultsPane
 from frp_assess.tui.retrofits_pane import RetrofitsPane
 from frp_assess.tui.run_panel import RunPanel
 from frp_assess.tui.site_pane import SitePane
 from frp_assess.tui.status_bar import StatusBar
 from frp_assess.tui.wall_pane import WallPane
+from frp_assess.tui.worker_messages import ExportDone, PreviousLoaded, RunDone, RunProgress
 
 
 class FrpAssessApp(App[None]):

@@ -18,7 +18,7 @@ from frp_assess.config.schema import (
     CONFIDENCE_FACTORS,
     MIN_ARTIFICIAL_DURATION,
     AnalysisSpec,
-    ArtificialRecords,
+    ArtificialRecordsSpec,
     BuildingSpec,
     CodeCheckSpec,
     CostsSpec,
@@ -26,7 +26,7 @@ from frp_assess.config.schema import (
     Ec8Spectrum,
     Ntc2018Spectrum,
     PresetSpectrum,
-    ProjectInfo,
+    ProjectInfoSpec,
     RecordsSpec,
     SeismicSpec,
     SiteCoordinates,
@@ -58,10 +58,10 @@ AN = ("analysis",)
 MASONRY_CHOICES = tuple((f"{k} ({m.unit_weight:g})", k) for k, m in MASONRY.items())
 
 PROJECT_FIELDS = (
-    text(("project", "name"), "Name", ProjectInfo),
-    text(("project", "location"), "Location", ProjectInfo),
-    text(("project", "engineer"), "Engineer", ProjectInfo),
-    text(("project", "notes"), "Notes", ProjectInfo),
+    text(("project", "name"), "Name", ProjectInfoSpec),
+    text(("project", "location"), "Location", ProjectInfoSpec),
+    text(("project", "engineer"), "Engineer", ProjectInfoSpec),
+    text(("project", "notes"), "Notes", ProjectInfoSpec),
 )
 WALL_FIELDS = (
     num((*W, "thickness"), "Thickness B", "m, 0 < B < H", WallSpec),
@@ -251,20 +251,20 @@ RECORD_SOURCE = FieldSpec(
     help=field_help(RecordsSpec, "artificial") + " / " + field_help(RecordsSpec, "files"),
 )
 #: what artificial records start with when chosen: the schema's defaults
-ARTIFICIAL_DEFAULTS = ArtificialRecords.model_validate({}).model_dump(mode="json")
+ARTIFICIAL_DEFAULTS = ArtificialRecordsSpec.model_validate({}).model_dump(mode="json")
 ARTIFICIAL_FIELDS = in_variant(
     "records",
     "artificial",
-    num((*ART, "count"), "Count", "records, 1-100", ArtificialRecords, optional=True),
-    num((*ART, "seed"), "Seed", "same seed, same set", ArtificialRecords, optional=True),
+    num((*ART, "count"), "Count", "records, 1-100", ArtificialRecordsSpec, optional=True),
+    num((*ART, "seed"), "Seed", "same seed, same set", ArtificialRecordsSpec, optional=True),
     num(
         (*ART, "duration"),
         "Duration",
         f"s, ≥ {MIN_ARTIFICIAL_DURATION:g}",
-        ArtificialRecords,
+        ArtificialRecordsSpec,
         optional=True,
     ),
-    num((*ART, "dt"), "Time step dt", "s, ≤ 0.05", ArtificialRecords, optional=True),
+    num((*ART, "dt"), "Time step dt", "s, ≤ 0.05", ArtificialRecordsSpec, optional=True),
 )
 SCALE_FIELD = choice(
     (*REC, "scale_to_spectrum"),

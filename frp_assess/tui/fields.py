@@ -20,7 +20,7 @@ from textual.containers import Horizontal, Vertical
 from textual.widgets import Input, Label, Select, Static
 
 from frp_assess.config.messages import Loc
-from frp_assess.tui.core.model import MISSING, format_value, parse_list, parse_scalar
+from frp_assess.tui.core.editor_state import MISSING, format_value, parse_list, parse_scalar
 from frp_assess.tui.core.text import printable
 from frp_assess.tui.literal import literal
 

@@ -14,7 +14,7 @@ from textual.binding import Binding, BindingType
 
 from frp_assess.config.library import FRP_MATERIALS
 from frp_assess.config.schema import Intervention, SweepAxes, option_name
-from frp_assess.tui.core.model import expand_item, format_value, frp_mass_per_m
+from frp_assess.tui.core.editor_state import expand_item, format_value, frp_mass_per_m
 from frp_assess.tui.fields import choice, items, num, text
 from frp_assess.tui.item_editor import ItemEditor
 

@@ -20,7 +20,7 @@ from textual.message import Message
 from textual.widgets import Button, DataTable, Input, Select, Static
 
 from frp_assess.config.messages import Loc, format_path
-from frp_assess.tui.core.model import Problem, get_path, set_path
+from frp_assess.tui.core.editor_state import Problem, get_path, set_path
 from frp_assess.tui.fields import FieldRow, FieldSpec
 from frp_assess.tui.literal import literal, safe
 

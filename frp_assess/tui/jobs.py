@@ -1,5 +1,5 @@
 """The long operations of the app, run in worker threads; each posts its result as a
-message (:mod:`frp_assess.tui.messages`) through ``post`` (thread-safe)."""
+message (:mod:`frp_assess.tui.worker_messages`) through ``post`` (thread-safe)."""
 
 from __future__ import annotations
 
@@ -19,7 +19,7 @@ from frp_assess.tui.core.session import (
     export_outputs,
     load_previous,
 )
-from frp_assess.tui.messages import ExportDone, PreviousLoaded, RunDone, RunProgress
+from frp_assess.tui.worker_messages import ExportDone, PreviousLoaded, RunDone, RunProgress
 
 Post = Callable[[Message], object]
 

@@ -19,12 +19,12 @@ from textual.widgets import Button, Input, Label
 
 from frp_assess.config.library import FRP_MATERIALS
 from frp_assess.config.messages import Loc
-from frp_assess.config.schema import MaterialSpec
-from frp_assess.tui.core.model import MISSING, format_value, get_path, set_path
+from frp_assess.config.schema import FrpMaterialSpec
+from frp_assess.tui.core.editor_state import MISSING, format_value, get_path, set_path
 from frp_assess.tui.fields import OrderedInput, choice, num, text
 from frp_assess.tui.item_editor import ItemEditor
 
-MATERIAL_FIELDS = tuple(MaterialSpec.model_fields)
+MATERIAL_FIELDS = tuple(FrpMaterialSpec.model_fields)
 
 
 class MaterialsEditor(ItemEditor):
@@ -39,21 +39,21 @@ class MaterialsEditor(ItemEditor):
     ROOT = ("materials",)
     FORMS: ClassVar[dict[str, Any]] = {
         "material": (
-            num(("elastic_modulus",), "E", "GPa", MaterialSpec, width=20),
-            num(("ultimate_strain",), "ε_u", "-", MaterialSpec, width=20),
-            num(("density",), "Density", "kg/m³", MaterialSpec, width=20),
-            num(("price",), "Price", "currency/kg", MaterialSpec, width=20),
-            text(("source",), "Source", MaterialSpec, optional=True, width=40),
+            num(("elastic_modulus",), "E", "GPa", FrpMaterialSpec, width=20),
+            num(("ultimate_strain",), "ε_u", "-", FrpMaterialSpec, width=20),
+            num(("density",), "Density", "kg/m³", FrpMaterialSpec, width=20),
+            num(("price",), "Price", "currency/kg", FrpMaterialSpec, width=20),
+            text(("source",), "Source", FrpMaterialSpec, optional=True, width=40),
             num(
                 ("characteristic_strain",),
                 "ε_fk",
                 "-, 5 % fractile",
-                MaterialSpec,
+                FrpMaterialSpec,
                 optional=True,
                 width=20,
                 placeholder="(from ε_u)",
             ),
-            choice(("fibre",), "Fibre", None, MaterialSpec, optional=True, width=20),
+            choice(("fibre",), "Fibre", None, FrpMaterialSpec, optional=True, width=20),
         )
     }
 

@@ -14,7 +14,7 @@ from typing import Any
 
 from frp_assess.config.messages import Loc
 from frp_assess.dynamics.options import Option
-from frp_assess.tui.core.model import format_value
+from frp_assess.tui.core.editor_state import format_value
 from frp_assess.tui.fields import FieldSpec
 
 

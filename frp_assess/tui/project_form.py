@@ -2,7 +2,7 @@
 
 :class:`ProjectForm` is the editing state of the app: it fills the fields from the project
 data, collects them back into the dict the YAML loader would produce, validates it with the
-loader's models (:mod:`frp_assess.tui.core.model`), shows each problem next to its field,
+loader's models (:mod:`frp_assess.tui.core.editor_state`), shows each problem next to its field,
 and hands the derived values to the panes that show them.
 """
 
@@ -17,7 +17,7 @@ from textual.widgets import Input, Select, Static
 
 from frp_assess.config.messages import Loc, format_path
 from frp_assess.config.schema import Project
-from frp_assess.tui.core.model import (
+from frp_assess.tui.core.editor_state import (
     Problem,
     get_path,
     material_table,

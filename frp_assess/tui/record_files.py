@@ -8,13 +8,13 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
-from frp_assess.config.schema import RecordFile
-from frp_assess.tui.core.model import format_value
+from frp_assess.config.schema import RecordFileSpec
+from frp_assess.tui.core.editor_state import format_value
 from frp_assess.tui.fields import choice, num, schema_default, text
 from frp_assess.tui.item_editor import ItemEditor
 
 #: the defaults of a record file's format and units (the schema's)
-FORMAT, UNITS = schema_default(RecordFile, "format"), schema_default(RecordFile, "units")
+FORMAT, UNITS = schema_default(RecordFileSpec, "format"), schema_default(RecordFileSpec, "units")
 
 
 class RecordFilesEditor(ItemEditor):
@@ -24,11 +24,18 @@ class RecordFilesEditor(ItemEditor):
     BUTTONS = (("+ add", "add"), ("duplicate", "duplicate"), ("remove", "remove"))
     FORMS: ClassVar[dict[str, Any]] = {
         "file": (
-            text(("path",), "Path", RecordFile, width=44),
-            choice(("format",), "Format", None, RecordFile, width=16),
-            choice(("units",), "Units", None, RecordFile, width=12),
-            num(("dt",), "dt", "s (one-column files)", RecordFile, optional=True),
-            text(("name",), "Name", RecordFile, optional=True, width=24, placeholder="(file name)"),
+            text(("path",), "Path", RecordFileSpec, width=44),
+            choice(("format",), "Format", None, RecordFileSpec, width=16),
+            choice(("units",), "Units", None, RecordFileSpec, width=12),
+            num(("dt",), "dt", "s (one-column files)", RecordFileSpec, optional=True),
+            text(
+                ("name",),
+                "Name",
+                RecordFileSpec,
+                optional=True,
+                width=24,
+                placeholder="(file name)",
+            ),
         )
     }
 

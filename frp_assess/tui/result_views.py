@@ -2,7 +2,7 @@
 the code's kinematic checks and the sensitivity table, built from the typed results.
 
 Pure functions from :class:`~frp_assess.results.model.AssessmentResult` to Rich tables and
-plot series (the widgets are in :mod:`frp_assess.tui.results`).  Fields that a run may leave
+plot series (the widgets are in :mod:`frp_assess.tui.results_pane`).  Fields that a run may leave
 None (``as_built``, ``pivot``, ``kinematic_checks``, ``floor_spectra``): a view with nothing
 to show says so.
 """

@@ -7,7 +7,7 @@ from pathlib import Path
 from rich.text import Text
 from textual.widgets import Static
 
-from frp_assess.tui.core.model import Problem
+from frp_assess.tui.core.editor_state import Problem
 from frp_assess.tui.core.tabs import tab_of, tab_title
 from frp_assess.tui.literal import safe
 

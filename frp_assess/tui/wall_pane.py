@@ -10,7 +10,7 @@ from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.widgets import Static
 
-from frp_assess.tui.core.model import WallDerived
+from frp_assess.tui.core.editor_state import WallDerived
 from frp_assess.tui.field_specs import (
     BUILDING_FIELDS,
     BUILDING_MODE,

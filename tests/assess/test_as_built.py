@@ -14,13 +14,13 @@ from typing import Any
 
 import pytest
 
-from frp_assess.assess.as_built import (
+from frp_assess.assess.bar_catalogue import BarSize
+from frp_assess.assess.bars_as_built import (
     choose_layout,
     design_as_built,
     largest_installable_ratio,
     option_as_built,
 )
-from frp_assess.assess.bars import BarSize
 from frp_assess.assess.cache import task_key
 from frp_assess.assess.from_project import inputs_from_project
 from frp_assess.assess.inputs import AnchorageSettings, BarSettings, DesignRequest

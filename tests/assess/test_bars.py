@@ -11,21 +11,18 @@ import math
 
 import pytest
 
-from frp_assess.assess.bars import (
+from frp_assess.assess.bar_anchorage import anchorage, bar_rupture_force, cone_area
+from frp_assess.assess.bar_catalogue import (
     BAR_CATALOGUE,
     BarSize,
-    anchorage,
     bar_layout,
-    bar_rupture_force,
     bar_size,
     bar_sizes,
     best_layout,
-    characteristic_strain,
-    cone_area,
-    design_rupture_strain,
-    environmental_factor,
 )
+from frp_assess.assess.bar_strain import design_rupture_strain, environmental_factor
 from frp_assess.errors import InputError
+from frp_assess.rules.bars import characteristic_strain
 
 TABLE_3_2 = {
     "glass": (0.75, 0.65, 0.50),

@@ -23,9 +23,9 @@ from frp_assess.assess.floor_input import (
 from frp_assess.assess.inputs import (
     ArtificialRecords,
     AssessmentInputs,
-    Building,
+    BuildingSettings,
     Material,
-    Option,
+    RetrofitOption,
 )
 from frp_assess.assess.runner import IdaRunner
 from frp_assess.dynamics import IdaSettings, ModelOptions
@@ -35,7 +35,7 @@ from frp_assess.motions.floor import floor_acceleration
 GFRP = Material("GFRP", 46.0, 0.015, 2000.0, 8.0, "test")
 SETTINGS = IdaSettings(step_ratio=1.2, tolerance=0.01, max_multiplier=50.0)
 #: a gable on the top floor of a 3-storey building, T1 between the record's two frequencies
-TOP = Building(height=10.0, storeys=3, wall_base=9.0, period=0.3, damping=0.05)
+TOP = BuildingSettings(height=10.0, storeys=3, wall_base=9.0, period=0.3, damping=0.05)
 
 
 def burst(name: str, seed: int, duration: float = 8.0, dt: float = 0.01) -> Record:
@@ -51,7 +51,7 @@ def burst(name: str, seed: int, duration: float = 8.0, dt: float = 0.01) -> Reco
 RECORDS = [burst("b1", 1), burst("b2", 2)]
 
 
-def inputs(building: Building | None, **kw: object) -> AssessmentInputs:
+def inputs(building: BuildingSettings | None, **kw: object) -> AssessmentInputs:
     base: dict[str, object] = dict(
         thickness=0.3,
         height=3.0,
@@ -59,7 +59,7 @@ def inputs(building: Building | None, **kw: object) -> AssessmentInputs:
         mechanism="one-sided",
         spectrum=preset_spectrum("A2"),
         records=ArtificialRecords(count=2, seed=1, duration=14.0, dt=0.01),
-        options=(Option("GFRP ext 1", GFRP, "external", 1.0),),
+        options=(RetrofitOption("GFRP ext 1", GFRP, "external", 1.0),),
         ida=SETTINGS,
         building=building,
         model=ModelOptions(pivot="edge"),  # the hand values below: a_RM = g·B/H
@@ -70,7 +70,7 @@ def inputs(building: Building | None, **kw: object) -> AssessmentInputs:
 
 def test_wall_at_ground_level_of_a_building_gives_the_ground_results() -> None:
     """Z = 0: ψ1 = 0, the floor motion is the ground record, every number is the same."""
-    at_ground = inputs(Building(10.0, 3, 0.0, 0.3))
+    at_ground = inputs(BuildingSettings(10.0, 3, 0.0, 0.3))
     without = inputs(None)
     models = without.case_models()
     a = IdaRunner(RECORDS, at_ground, IdaCache(None), jobs=1).run(models)
@@ -126,11 +126,11 @@ def test_cache_key_changes_with_the_building(tmp_path: Path) -> None:
     keys = {
         ground,
         task_key(model, h, SETTINGS, TOP),
-        task_key(model, h, SETTINGS, Building(10.0, 3, 8.0, 0.3)),
-        task_key(model, h, SETTINGS, Building(10.0, 3, 9.0, 0.35)),
-        task_key(model, h, SETTINGS, Building(10.0, 4, 9.0, 0.3)),
-        task_key(model, h, SETTINGS, Building(10.0, 3, 9.0, 0.3, 0.08)),
-        task_key(model, h, SETTINGS, Building(12.0, 3, 9.0, 0.3)),
+        task_key(model, h, SETTINGS, BuildingSettings(10.0, 3, 8.0, 0.3)),
+        task_key(model, h, SETTINGS, BuildingSettings(10.0, 3, 9.0, 0.35)),
+        task_key(model, h, SETTINGS, BuildingSettings(10.0, 4, 9.0, 0.3)),
+        task_key(model, h, SETTINGS, BuildingSettings(10.0, 3, 9.0, 0.3, 0.08)),
+        task_key(model, h, SETTINGS, BuildingSettings(12.0, 3, 9.0, 0.3)),
     }
     assert len(keys) == 7
     # a run with another building computes again; the same building reuses
@@ -141,7 +141,7 @@ def test_cache_key_changes_with_the_building(tmp_path: Path) -> None:
     again = IdaRunner(RECORDS[:1], inputs(TOP), cache, jobs=1)
     assert again.run(models) == first.run(models)
     assert again.reused == 1 and again.computed == 0
-    moved = IdaRunner(RECORDS[:1], inputs(Building(10.0, 3, 5.0, 0.3)), cache, jobs=1)
+    moved = IdaRunner(RECORDS[:1], inputs(BuildingSettings(10.0, 3, 5.0, 0.3)), cache, jobs=1)
     moved.run(models)
     assert moved.computed == 1
 

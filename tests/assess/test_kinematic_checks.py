@@ -24,7 +24,7 @@ from frp_assess.assess.inputs import (
     AssessmentInputs,
     CodeCheckSettings,
     Material,
-    Option,
+    RetrofitOption,
 )
 from frp_assess.assess.kinematic_checks import (
     FloorPosition,
@@ -54,7 +54,7 @@ AGS = 0.25  # a_g·S [g]
 T_C, T_D = 0.5, 1.5
 SPECTRUM = ElasticSpectrum("test", "ec8", AGS, 0.15, T_C, T_D)
 CFRP = Material("CFRP", 150.0, 0.013, 1550.0, 0.0)
-CFRP_EXTERNAL = Option("CFRP external 1‰", CFRP, "external", 1.0)
+CFRP_EXTERNAL = RetrofitOption("CFRP external 1‰", CFRP, "external", 1.0)
 
 
 def _inputs(**changes: object) -> AssessmentInputs:

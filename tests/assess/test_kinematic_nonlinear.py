@@ -12,20 +12,22 @@ import math
 import numpy as np
 import pytest
 
-from frp_assess.assess.kinematic_nonlinear import (
-    a_g_limit,
-    a_g_sld,
+from frp_assess.assess.kinematic_capacity import (
     capacity_curve,
     control_displacement,
-    d_slc,
-    d_slv,
-    displacement_demand,
-    limit_state_check,
     participating_mass,
     participating_mass_fraction,
     spectral_acceleration,
     spectral_displacement,
     static_multiplier,
+)
+from frp_assess.assess.kinematic_nonlinear import (
+    a_g_limit,
+    a_g_sld,
+    d_slc,
+    d_slv,
+    displacement_demand,
+    limit_state_check,
     t_slc,
     t_slv,
     time_history_check,

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import pytest
 
-from frp_assess.assess.masonry import (
+from frp_assess.assess.masonry_strength import (
     MASONRY_TABLE,
     masonry_design_values,
     masonry_strength,

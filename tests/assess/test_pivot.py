@@ -15,9 +15,9 @@ import pytest
 
 from frp_assess.assess.cache import task_key
 from frp_assess.assess.from_project import load_inputs
-from frp_assess.assess.inputs import AssessmentInputs, Material, Option
-from frp_assess.assess.masonry import DEFAULT_COMPRESSIVE_STRENGTH, masonry_strength
-from frp_assess.assess.pivot import pivot_checks
+from frp_assess.assess.inputs import AssessmentInputs, Material, RetrofitOption
+from frp_assess.assess.masonry_strength import DEFAULT_COMPRESSIVE_STRENGTH, masonry_strength
+from frp_assess.assess.pivot_check import pivot_checks
 from frp_assess.dynamics import IdaSettings, ModelOptions
 from frp_assess.errors import InputError
 from frp_assess.motions import preset_spectrum
@@ -29,10 +29,10 @@ GFRP = Material("GFRP", 46.0, 0.015, 2000.0, 8.0)
 def inputs(pivot: str = "crushing", **kw: object) -> AssessmentInputs:
     """The façade of issue 16: B = 0.25 m, H = 4.5 m, solid brick, LC1."""
     options = (
-        Option("CFRP external 3", CFRP, "external", 3.0),
-        Option("CFRP centred 1", CFRP, "centred", 1.0),
-        Option("CFRP external 1", CFRP, "external", 1.0),
-        Option("GFRP centred 0.5", GFRP, "centred", 0.5),
+        RetrofitOption("CFRP external 3", CFRP, "external", 3.0),
+        RetrofitOption("CFRP centred 1", CFRP, "centred", 1.0),
+        RetrofitOption("CFRP external 1", CFRP, "external", 1.0),
+        RetrofitOption("GFRP centred 0.5", GFRP, "centred", 0.5),
     )
     base = AssessmentInputs(
         thickness=0.25,

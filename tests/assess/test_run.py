@@ -11,10 +11,10 @@ from frp_assess.api import run_assessment
 from frp_assess.assess.inputs import (
     ArtificialRecords,
     AssessmentInputs,
-    Costs,
+    CostSettings,
     DesignRequest,
     Material,
-    Option,
+    RetrofitOption,
 )
 from frp_assess.dynamics import ida
 from frp_assess.errors import Cancelled
@@ -35,10 +35,10 @@ def small_inputs(**kw) -> AssessmentInputs:
         spectrum=preset_spectrum("A2"),
         records=ArtificialRecords(count=3, seed=7, duration=14.0, dt=0.01),
         options=(
-            Option("GFRP ext 1", GFRP, "external", 1.0),
-            Option("CFRP cen 2", CFRP, "centred", 2.0),
+            RetrofitOption("GFRP ext 1", GFRP, "external", 1.0),
+            RetrofitOption("CFRP cen 2", CFRP, "centred", 2.0),
         ),
-        costs=Costs("EUR", 100.0),
+        costs=CostSettings("EUR", 100.0),
         target=3.0,
         project={"name": "Test <&> wall"},
     )

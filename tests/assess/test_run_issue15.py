@@ -8,7 +8,7 @@ from dataclasses import replace
 import pytest
 
 from frp_assess.api import run_assessment
-from frp_assess.assess.inputs import Building, CodeCheckSettings
+from frp_assess.assess.inputs import BuildingSettings, CodeCheckSettings
 from frp_assess.results.json_io import from_json, to_json
 from tests.assess.test_run import small_inputs
 
@@ -71,7 +71,7 @@ def test_kinematic_checks_use_the_run_ida(tmp_path):
 
 
 def test_wall_above_ground_in_the_results(tmp_path):
-    building = Building(height=10.0, storeys=3, wall_base=9.0, period=0.28, damping=0.05)
+    building = BuildingSettings(height=10.0, storeys=3, wall_base=9.0, period=0.28, damping=0.05)
     results, _ = run_assessment(
         replace(small_inputs(), building=building), tmp_path, pdf=False, created="x"
     )

@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 
 from frp_assess.api import run_assessment
-from frp_assess.assess.sensitivity import convention_variants
+from frp_assess.assess.convention_sensitivity import convention_variants
 from tests.assess.test_run import small_inputs
 
 

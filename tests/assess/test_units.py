@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from frp_assess.assess.code_check import simple_overturning_check
-from frp_assess.assess.inputs import Costs, Material
+from frp_assess.assess.inputs import CostSettings, Material
 from frp_assess.assess.quantities import frp_quantity
 from frp_assess.numbers import recommendation_text
 from frp_assess.results.json_io import from_json
@@ -24,7 +24,7 @@ GFRP = Material("GFRP", 46.0, 0.015, 2000.0, 8.0)
 
 @pytest.mark.parametrize("position,layers", [("centred", 1), ("external", 2)])
 def test_quantities(position, layers):
-    q = frp_quantity(0.4, 3.0, 6.0, GFRP, position, 2.0, Costs("EUR", 150.0))
+    q = frp_quantity(0.4, 3.0, 6.0, GFRP, position, 2.0, CostSettings("EUR", 150.0))
     area = 2e-3 * 0.4 * layers  # m² per metre of wall
     assert q.mass_per_m == pytest.approx(area * 3.0 * 2000.0)
     assert q.mass == pytest.approx(q.mass_per_m * 6.0)

@@ -10,7 +10,7 @@ import pytest
 from frp_assess.api import run_assessment
 from frp_assess.dynamics import ida
 from frp_assess.dynamics.rocking import DEFAULT_TOLERANCE
-from frp_assess.results.model import Integration
+from frp_assess.results.run_inputs import Integration
 from tests.assess.test_run import small_inputs
 
 

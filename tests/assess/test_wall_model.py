@@ -25,7 +25,7 @@ from frp_assess.dynamics import ModelOptions
 from frp_assess.errors import InputError
 from frp_assess.study import parse_study
 from frp_assess.study.plan import StudyPlan
-from frp_assess.tui.core.model import wall_derived
+from frp_assess.tui.core.editor_state import wall_derived
 
 F_D = 1.0 / 1.35  # [MPa]
 X_W = 19.0 * 0.4 * 3.0 / (0.85 * F_D * 1e3)  # [m]

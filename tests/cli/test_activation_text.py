@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from frp_assess.cli.run import activation_text
+from frp_assess.cli.cmd_run import activation_text
 from tests.results.test_pivot_and_as_built import small_result
 
 

@@ -9,8 +9,8 @@ from typing import Any
 
 import pytest
 
+from frp_assess.cli.cmd_run import print_ranking, ranking_rows
 from frp_assess.cli.output import Column, make_console, print_table, user
-from frp_assess.cli.run import print_ranking, ranking_rows
 from frp_assess.numbers import fmt_against
 from frp_assess.text_safety import PLACEHOLDER, plain
 from tests.report.test_report import raw, typed

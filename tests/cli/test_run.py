@@ -95,7 +95,7 @@ def test_interrupted_run_exits_130_without_results(tmp_path, capsys, monkeypatch
     def interrupted(*args, **kwargs):
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(assessment, "run_assessment", interrupted)  # cli.run imports it late
+    monkeypatch.setattr(assessment, "run_assessment", interrupted)  # cli.cmd_run imports it late
     project = tmp_path / "small.yaml"
     project.write_text(SMALL, encoding="utf-8")
     assert main(["run", str(project), "--no-pdf"]) == 130

@@ -59,7 +59,7 @@ def test_every_model_option_has_its_schema_field() -> None:
     """A new option in MODEL_OPTIONS needs a field in ModelOptionsSpec (shared by the project
     and study files), the integration tolerance aside."""
     missing = set(MODEL_OPTIONS) - {INTEGRATION_TOLERANCE.key} - set(ModelOptionsSpec.model_fields)
-    assert not missing, f"add {sorted(missing)} to config/schema.py ModelOptionsSpec"
+    assert not missing, f"add {sorted(missing)} to config/schema/analysis_spec.py ModelOptionsSpec"
 
 
 def test_the_schemas_give_the_dataclasses() -> None:

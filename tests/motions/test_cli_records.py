@@ -1,4 +1,4 @@
-"""`frp-assess records generate|check` (frp_assess.cli.records; issue 3 item 6)."""
+"""`frp-assess records generate|check` (frp_assess.cli.cmd_records; issue 3 item 6)."""
 
 from __future__ import annotations
 

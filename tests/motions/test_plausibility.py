@@ -8,15 +8,16 @@ import numpy as np
 import pytest
 
 from frp_assess.cli import main
-from frp_assess.motions.plausibility import (
+from frp_assess.motions.pga_plausibility import (
     PGA_MAX_G,
     PGA_MIN_G,
     likely_units,
     plausibility_warning,
     plausibility_warnings,
 )
-from frp_assess.motions.readers import UNITS, RecordFormatError, read_record
+from frp_assess.motions.readers import read_record
 from frp_assess.motions.record import G, Record
+from frp_assess.motions.record_text import UNITS, RecordFormatError
 
 SHAPE = np.sin(np.linspace(0.0, 20.0, 400)) * np.exp(-np.linspace(0.0, 3.0, 400))
 

@@ -8,7 +8,8 @@ from pathlib import Path
 import pytest
 
 from frp_assess.errors import InputError
-from frp_assess.motions.readers import MAX_RECORD_BYTES, RecordFormatError, read_record
+from frp_assess.motions.readers import read_record
+from frp_assess.motions.record_text import MAX_RECORD_BYTES, RecordFormatError
 
 HEAD = "PEER\nrecord\nunits g\n"
 

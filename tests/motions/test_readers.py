@@ -12,14 +12,9 @@ import numpy as np
 import pytest
 
 from frp_assess.errors import InputError
-from frp_assess.motions.readers import (
-    UNITS,
-    RecordFormatError,
-    detect_format,
-    read_record,
-    unit_factor,
-)
+from frp_assess.motions.readers import detect_format, read_record
 from frp_assess.motions.record import G, Record
+from frp_assess.motions.record_text import UNITS, RecordFormatError, unit_factor
 from frp_assess.motions.writers import write_at2, write_two_column
 
 DATA = Path(__file__).parent / "data"

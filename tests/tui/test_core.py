@@ -9,7 +9,7 @@ import pytest
 
 from frp_assess.api import TEMPLATE_NAME
 from frp_assess.assess.from_project import material_of
-from frp_assess.assess.inputs import Costs
+from frp_assess.assess.inputs import CostSettings
 from frp_assess.assess.quantities import frp_quantity
 from frp_assess.config import load_project_text, project_data
 from frp_assess.tui.core.opening import opening_data
@@ -57,7 +57,7 @@ def test_option_rows_are_the_quantities_of_the_expanded_options():
     options = project.expand_interventions()
     assert [r.name for r in rows] == [str(o.name) for o in options]
     w, table = project.wall, project.material_table()
-    costs = Costs(str(project.costs.currency), project.costs.installation_per_metre)
+    costs = CostSettings(str(project.costs.currency), project.costs.installation_per_metre)
     for r, o in zip(rows, options, strict=True):
         q = frp_quantity(
             w.thickness, w.height, w.length, material_of(table[o.material]), o.position,

@@ -14,7 +14,7 @@ from frp_assess.assess.from_project import inputs_from_project
 from frp_assess.config import load_project_text, project_data, validate_data
 from frp_assess.dynamics import Wall
 from frp_assess.errors import InputError
-from frp_assess.tui.core.model import (
+from frp_assess.tui.core.editor_state import (
     MISSING,
     format_value,
     frp_mass_per_m,

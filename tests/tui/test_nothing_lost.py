@@ -11,7 +11,7 @@ from textual.widgets import Input, Select
 from frp_assess.assess.from_project import bar_settings_of
 from frp_assess.config import load_project
 from frp_assess.tui.app import FrpAssessApp
-from frp_assess.tui.core.model import without_paths
+from frp_assess.tui.core.editor_state import without_paths
 from frp_assess.tui.interventions import InterventionsEditor
 from frp_assess.tui.materials import MaterialsEditor
 from tests.tui.conftest import SMALL, after_workers, run_async, settle

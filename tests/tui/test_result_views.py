@@ -19,10 +19,10 @@ from scipy import stats
 from textual.widgets import DataTable, Static, TabbedContent
 
 from frp_assess.api import prepare_records, run_assessment
-from frp_assess.assess.as_built import option_as_built
+from frp_assess.assess.bars_as_built import option_as_built
 from frp_assess.assess.from_project import inputs_from_project
 from frp_assess.assess.kinematic_checks import IdaSummary, kinematic_checks
-from frp_assess.assess.pivot import case_pivot
+from frp_assess.assess.pivot_check import case_pivot
 from frp_assess.config import load_project_text
 from frp_assess.results.checks import CaseChecks, KinematicChecks
 from frp_assess.results.model import AssessmentResult, DesignRow
@@ -36,7 +36,7 @@ from frp_assess.tui.result_views import (
     fragility_plot,
     kinematic_table,
 )
-from frp_assess.tui.results import ResultsPane
+from frp_assess.tui.results_pane import ResultsPane
 from tests.report.test_checks_section import CAPACITY, LINEAR, _ls
 from tests.report.test_report import raw, typed
 from tests.tui.conftest import SMALL, run_async, settle

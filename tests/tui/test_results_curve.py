@@ -4,7 +4,7 @@ collapse at which the IDA found the wall standing (a resurrection), read from th
 from __future__ import annotations
 
 from frp_assess.results.model import CurvePoint, RecordResult
-from frp_assess.tui.results import _resurrection
+from frp_assess.tui.results_pane import _resurrection
 
 
 def record(first: float | None, curve: tuple[CurvePoint, ...]) -> RecordResult:

@@ -7,7 +7,7 @@ from pathlib import Path
 
 from frp_assess.cli import main
 from frp_assess.tui.app import FrpAssessApp
-from frp_assess.tui.results import STALE_TITLE
+from frp_assess.tui.results_pane import STALE_TITLE
 from tests.tui.conftest import after_workers, run_async
 
 

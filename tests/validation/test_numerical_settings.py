@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from frp_assess.assess.inputs import Building
+from frp_assess.assess.inputs import BuildingSettings
 from frp_assess.assess.kinematic_checks import base_motions, peak_displacements
 from frp_assess.dynamics import IdaSettings, ModelOptions, Rebars, RockingModel, Wall, ida
 from frp_assess.dynamics.rocking import DEFAULT_TOLERANCE
@@ -35,7 +35,7 @@ FINE_IDA = IdaSettings(tolerance=1e-4, max_multiplier=2000.0)
 TIGHT = {"tolerance": DEFAULT_TOLERANCE / 100}
 TAIL = {"free_vibration_tail": 10.0}
 #: a wall whose base is at 6 m of a 9 m, three-storey building
-BUILDING = Building(height=9.0, storeys=3, wall_base=6.0, period=0.3, damping=0.05)
+BUILDING = BuildingSettings(height=9.0, storeys=3, wall_base=6.0, period=0.3, damping=0.05)
 F_D = 1.5e6  # design compressive strength of the masonry [Pa]
 
 
@@ -94,7 +94,7 @@ def test_crushing_pivot_collapse_multiplier(name: str, setting: str) -> None:
 
 @pytest.mark.parametrize("building", [None, BUILDING], ids=["ground", "floor"])
 @pytest.mark.parametrize("name", WALLS)
-def test_time_history_peak_displacements(name: str, building: Building | None) -> None:
+def test_time_history_peak_displacements(name: str, building: BuildingSettings | None) -> None:
     """(c) The time-history check's peak displacements d_C, default vs 100× tighter
     tolerance, on a crushing-pivot wall rocking hard without falling (0.6 × its collapse
     multiplier on the first motion)."""

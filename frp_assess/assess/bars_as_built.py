@@ -18,27 +18,24 @@ import math
 from dataclasses import replace
 from typing import Protocol
 
-from frp_assess.assess.bars import (
+from frp_assess.assess.bar_anchorage import Anchorage, anchorage, bar_rupture_force
+from frp_assess.assess.bar_catalogue import (
     BAR_CATALOGUE,
-    FRP_RUPTURE_PARTIAL_FACTOR,
-    Anchorage,
     BarLayout,
     BarSize,
-    anchorage,
     bar_layout,
-    bar_rupture_force,
     bar_size,
     bar_sizes,
     best_layout,
-    fibre_of,
     nominal_area,
 )
-from frp_assess.assess.inputs import AssessmentInputs, BarSettings, Material, Option
-from frp_assess.assess.masonry import MASONRY_TABLE, masonry_design_values
+from frp_assess.assess.bar_strain import fibre_of
+from frp_assess.assess.inputs import AssessmentInputs, BarSettings, Material, RetrofitOption
+from frp_assess.assess.masonry_strength import MASONRY_TABLE, masonry_design_values
 from frp_assess.dynamics import Position
 from frp_assess.errors import InputError
 from frp_assess.results.as_built import AsBuilt, BarAnchorage, BarStrain
-from frp_assess.rules.bars import MAX_RATIO
+from frp_assess.rules.bars import FRP_RUPTURE_PARTIAL_FACTOR, MAX_RATIO
 
 
 class DesignAnswer(Protocol):
@@ -53,7 +50,7 @@ class DesignAnswer(Protocol):
     def ratio_model(self) -> float | None: ...
 
 
-#: f_t = this factor × τ0d for the pull-out cone (Turnšek–Čačovič, assess/bars.py)
+#: f_t = this factor × τ0d for the pull-out cone (Turnšek–Čačovič, assess/bar_anchorage.py)
 TENSILE_OVER_SHEAR = 1.5
 
 #: the built-in nominal diameters [mm] (those of the catalogue)
@@ -154,7 +151,7 @@ def _choose_layout(
     return best
 
 
-def option_with_layout(inputs: AssessmentInputs, option: Option) -> Option:
+def option_with_layout(inputs: AssessmentInputs, option: RetrofitOption) -> RetrofitOption:
     """``option`` with its layout, ``ratio`` = the ratio the model uses (installed with
     ``bars.whole_bars``) and ``ratio_asked`` = the option's ratio.
 
@@ -178,7 +175,7 @@ def option_with_layout(inputs: AssessmentInputs, option: Option) -> Option:
             raise
         return replace(option, ratio=asked, ratio_asked=asked, layout=None)
     used = lay.ratio_installed if inputs.bars.whole_bars else asked
-    return Option(
+    return RetrofitOption(
         option.name,
         option.material,
         option.position,
@@ -253,7 +250,7 @@ def masonry_tensile_strength(inputs: AssessmentInputs) -> float | None:
 
 def bar_anchorage(inputs: AssessmentInputs, material: Material, lay: BarLayout) -> BarAnchorage:
     """The design force per bar at the model's rupture strain and, with ``bars.anchorage``,
-    its bond length and pull-out cone (assess/bars.py)."""
+    its bond length and pull-out cone (assess/bar_anchorage.py)."""
     force = bar_rupture_force(
         lay.bar_area, material.elastic_modulus, inputs.rupture_strain(material)
     )
@@ -353,7 +350,7 @@ def as_built(
     )
 
 
-def option_as_built(inputs: AssessmentInputs, option: Option) -> AsBuilt | None:
+def option_as_built(inputs: AssessmentInputs, option: RetrofitOption) -> AsBuilt | None:
     """The as-built record of an option (its layout made here if it has none); None for an
     option that cannot be built, which only ``bars.whole_bars: false`` lets through."""
     if option.layout is None:

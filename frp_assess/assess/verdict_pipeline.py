@@ -15,6 +15,7 @@ import math
 from collections.abc import Callable, Sequence
 from dataclasses import asdict, dataclass, replace
 
+from frp_assess.assess.convention_sensitivity import convention_variants, sensitivity
 from frp_assess.assess.decision import (
     DECISION_RULE,
     IDA_CHECK,
@@ -27,7 +28,7 @@ from frp_assess.assess.decision import (
     verdict,
 )
 from frp_assess.assess.explain import remark
-from frp_assess.assess.inputs import AssessmentInputs, Option
+from frp_assess.assess.inputs import AssessmentInputs, RetrofitOption
 from frp_assess.assess.kinematic_checks import (
     IdaSummary,
     base_motions,
@@ -38,13 +39,12 @@ from frp_assess.assess.kinematic_checks import (
 )
 from frp_assess.assess.results import case_result
 from frp_assess.assess.runner import CaseSummary, DesignResult, IdaRunner, design_search, summarise
-from frp_assess.assess.sensitivity import convention_variants, sensitivity
 from frp_assess.assess.statistics import fit_lognormal_fragility
 from frp_assess.config.schema import format_ratio
 from frp_assess.dynamics import IdaResult, RockingModel
 from frp_assess.motions import Record
 from frp_assess.results.checks import CaseChecks, KinematicChecks
-from frp_assess.results.model import CaseResult, Sensitivity, SensitivityRow
+from frp_assess.results.model import CaseResult, Sensitivity, SensitivityRowResult
 from frp_assess.results.verdict import ConventionOutcome, LeaveOneOut, Robustness
 
 #: how many further options are tried, per failing convention, for the one that takes over
@@ -158,11 +158,11 @@ class DecidedRun:
 
 def design_options(
     inputs: AssessmentInputs, design: Sequence[DesignResult]
-) -> tuple[list[Option], list[str | None]]:
+) -> tuple[list[RetrofitOption], list[str | None]]:
     """The design answers as options, named "<material> <position> <ρ>‰ (design)", and the
     case each answer is (an existing option of the same material, position and model ratio
     keeps its own name and is not added again)."""
-    added: list[Option] = []
+    added: list[RetrofitOption] = []
     names: list[str | None] = []
     for d in design:
         if d.ratio is None or d.ratio_model is None:
@@ -181,7 +181,7 @@ def design_options(
         if same is not None:
             names.append(same.name)
             continue
-        opt = Option(
+        opt = RetrofitOption(
             name=f"{d.material.name} {d.position} {format_ratio(d.ratio)}‰ (design)",
             material=d.material,
             position=d.position,
@@ -329,14 +329,14 @@ def conventions(
     focus: int,
     demand: float,
     max_multiplier: float,
-) -> tuple[tuple[ConventionOutcome, ...], tuple[SensitivityRow, ...]]:
-    """The focus case under each model convention (:mod:`frp_assess.assess.sensitivity`):
+) -> tuple[tuple[ConventionOutcome, ...], tuple[SensitivityRowResult, ...]]:
+    """The focus case under each model convention (:mod:`frp_assess.assess.convention_sensitivity`):
     its sensitivity rows, and whether it still passes; where the recommendation fails under a
     variant, the next passing options (as assessed, by rank; at most
     :data:`TAKE_OVER_CANDIDATES`) are run under the same variant and the first that passes
     takes over."""
     rows = tuple(
-        SensitivityRow(**asdict(r))
+        SensitivityRowResult(**asdict(r))
         for r in sensitivity(runner, models[focus], demand, max_multiplier)
     )
     variants = convention_variants(models[focus])

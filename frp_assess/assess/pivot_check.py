@@ -8,15 +8,15 @@ the unreinforced wall), on the stress block 0.85·f_d: x = N / (0.85·f_d·1 m).
 dropped for it: with ``pivot: crushing`` the dynamics follow x(θ) at every instant and a toe
 that crushes is a failure mode of the IDA; with ``pivot: edge`` x is ignored by the model and
 the record says whether x/B stays within the edge limit
-(:data:`~frp_assess.assess.masonry.DEFAULT_PIVOT_LIMIT`).
+(:data:`~frp_assess.assess.masonry_strength.DEFAULT_PIVOT_LIMIT`).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
-from frp_assess.assess.inputs import UNREINFORCED, AssessmentInputs, Option
-from frp_assess.assess.masonry import (
+from frp_assess.assess.inputs import UNREINFORCED, AssessmentInputs, RetrofitOption
+from frp_assess.assess.masonry_strength import (
     DEFAULT_PIVOT_LIMIT,
     STRESS_BLOCK_FACTOR,
     PivotCheck,
@@ -96,7 +96,7 @@ class CasePivot:
 
 
 def case_pivot(
-    inputs: AssessmentInputs, option: Option | None, limit: float = DEFAULT_PIVOT_LIMIT
+    inputs: AssessmentInputs, option: RetrofitOption | None, limit: float = DEFAULT_PIVOT_LIMIT
 ) -> CasePivot:
     """The pivot check of the unreinforced wall (``None``) or of one option."""
     b = inputs.thickness

@@ -23,7 +23,7 @@ from frp_assess.app.project import check_record_files, parse_yaml, validate_data
 from frp_assess.config.library import FRP_MATERIALS, FrpMaterial
 from frp_assess.config.messages import Loc, describe, format_path, locate
 from frp_assess.config.schema import (
-    MaterialSpec,
+    FrpMaterialSpec,
     Project,
     Spectrum,
     WallSpec,
@@ -282,11 +282,11 @@ def material_table(materials: Any) -> dict[str, FrpMaterial]:
 
     Invalid entries are skipped, so that derived quantities still show while one is typed.
     """
-    valid: dict[str, MaterialSpec] = {}
+    valid: dict[str, FrpMaterialSpec] = {}
     if isinstance(materials, Mapping):
         for name, spec in materials.items():
             try:
-                ok = MaterialSpec.model_validate(spec)
+                ok = FrpMaterialSpec.model_validate(spec)
             except ValidationError:
                 continue
             if str(name) in FRP_MATERIALS or all(

@@ -1,0 +1,187 @@
+"""The project file as pydantic v2 models (``extra="forbid"``, units in every description).
+
+The root model is :class:`Project`.  Field names are the YAML keys of issue 4.  Numbers are
+strict (a quoted ``"0.4"`` or a ``yes`` is an error, not a silent conversion); free-text fields
+accept any scalar.  Cross-checks that need several fields (B < H, known materials and masonry,
+exactly one record source) raise :class:`~pydantic_core.PydanticCustomError` whose context
+``loc`` completes the location of the error, so that the loader can point at the right line.
+
+One module per block of the file (``spec_base`` holds what they share); this package
+re-exports their public names, so ``from frp_assess.config.schema import X`` keeps working.
+"""
+
+from __future__ import annotations
+
+from frp_assess.config.schema.analysis_spec import (
+    AnalysisSpec,
+    CodeCheckSpec,
+    IdaSpec,
+    IntegrationSpec,
+    ModelOptionsSpec,
+    Restitution,
+    option_field,
+)
+from frp_assess.config.schema.project_spec import (
+    Project,
+    ProjectInfoSpec,
+)
+from frp_assess.config.schema.report_spec import (
+    CostsSpec,
+    ReportLanguage,
+    ReportSpec,
+)
+from frp_assess.config.schema.retrofit_spec import (
+    AnchorageSpec,
+    BarSizeSpec,
+    BarsSpec,
+    DesignSpec,
+    FrpMaterialSpec,
+    Intervention,
+    InterventionItem,
+    Ratio,
+    Sweep,
+    SweepAxes,
+)
+from frp_assess.config.schema.seismic_spec import (
+    ArtificialRecordsSpec,
+    RecordFileSpec,
+    RecordsSpec,
+    SeismicSpec,
+)
+from frp_assess.config.schema.spec_base import (
+    HEIGHT_RANGE,
+    MAX_BAR_AREA,
+    MAX_BAR_DIAMETER,
+    MAX_NAME_CHARS,
+    MAX_NOTES_CHARS,
+    MAX_OPTIONS,
+    MAX_RECORD_DURATION,
+    MAX_RECORD_NAME,
+    MAX_SEED,
+    MAX_TABLE_POINTS,
+    MIN_ARTIFICIAL_DURATION,
+    MIN_BAR_DIAMETER,
+    MIN_RATIO,
+    MIN_SPACING,
+    MIN_SPECTRUM_G,
+    MIN_TIME_STEP,
+    MODULUS_RANGE,
+    RECORD_FORMATS,
+    STRAIN_RANGE,
+    T1_RANGE,
+    TABLE_BAND,
+    THICKNESS_RANGE,
+    Exposure,
+    Fibre,
+    FreeText,
+    GroundType,
+    Number,
+    RecordFormat,
+    RecordUnits,
+    WholeNumber,
+    format_ratio,
+    located_error,
+    option_name,
+    unsafe_name_reason,
+)
+from frp_assess.config.schema.spectrum_spec import (
+    NTC_PARAMETER_KEYS,
+    NTC_SITE_KEYS,
+    Ec8Spectrum,
+    LimitState,
+    Ntc2018Spectrum,
+    PresetSpectrum,
+    SiteCoordinates,
+    Spectrum,
+    TableSpectrum,
+    UseClass,
+    site_hazard_cached,
+)
+from frp_assess.config.schema.wall_spec import (
+    BuildingSpec,
+    WallSpec,
+)
+from frp_assess.rules.bars import (
+    MAX_RATIO,
+)
+from frp_assess.rules.masonry import (
+    CONFIDENCE_FACTORS,
+)
+
+__all__ = [
+    "AnalysisSpec",
+    "AnchorageSpec",
+    "ArtificialRecordsSpec",
+    "BarSizeSpec",
+    "BarsSpec",
+    "BuildingSpec",
+    "CONFIDENCE_FACTORS",
+    "CodeCheckSpec",
+    "CostsSpec",
+    "DesignSpec",
+    "Ec8Spectrum",
+    "Exposure",
+    "Fibre",
+    "FreeText",
+    "GroundType",
+    "HEIGHT_RANGE",
+    "IdaSpec",
+    "IntegrationSpec",
+    "Intervention",
+    "InterventionItem",
+    "LimitState",
+    "MAX_BAR_AREA",
+    "MAX_BAR_DIAMETER",
+    "MAX_NAME_CHARS",
+    "MAX_NOTES_CHARS",
+    "MAX_OPTIONS",
+    "MAX_RATIO",
+    "MAX_RECORD_DURATION",
+    "MAX_RECORD_NAME",
+    "MAX_SEED",
+    "MAX_TABLE_POINTS",
+    "MIN_ARTIFICIAL_DURATION",
+    "MIN_BAR_DIAMETER",
+    "MIN_RATIO",
+    "MIN_SPACING",
+    "MIN_SPECTRUM_G",
+    "MIN_TIME_STEP",
+    "MODULUS_RANGE",
+    "FrpMaterialSpec",
+    "ModelOptionsSpec",
+    "NTC_PARAMETER_KEYS",
+    "NTC_SITE_KEYS",
+    "Ntc2018Spectrum",
+    "Number",
+    "PresetSpectrum",
+    "Project",
+    "ProjectInfoSpec",
+    "RECORD_FORMATS",
+    "Ratio",
+    "RecordFileSpec",
+    "RecordFormat",
+    "RecordUnits",
+    "RecordsSpec",
+    "ReportLanguage",
+    "ReportSpec",
+    "Restitution",
+    "STRAIN_RANGE",
+    "SeismicSpec",
+    "SiteCoordinates",
+    "Spectrum",
+    "Sweep",
+    "SweepAxes",
+    "T1_RANGE",
+    "TABLE_BAND",
+    "THICKNESS_RANGE",
+    "TableSpectrum",
+    "UseClass",
+    "WallSpec",
+    "WholeNumber",
+    "format_ratio",
+    "located_error",
+    "option_field",
+    "option_name",
+    "site_hazard_cached",
+    "unsafe_name_reason",
+]
