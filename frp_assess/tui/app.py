@@ -22,6 +22,7 @@ from textual.widget import Widget
 from textual.widgets import Button, Input, Select, TabbedContent, TabPane
 
 from frp_assess.app.assessment import UNREINFORCED, default_out_dir
+from frp_assess.app.report import export_folder_problem
 from frp_assess.app.rerun import project_changed
 from frp_assess.config.schema import Project
 from frp_assess.errors import InputError
@@ -30,12 +31,7 @@ from frp_assess.tui.analysis_pane import AnalysisPane
 from frp_assess.tui.core.editor_state import Problem
 from frp_assess.tui.core.opening import opening_data
 from frp_assess.tui.core.project_info import record_count
-from frp_assess.tui.core.session import (
-    RunOutcome,
-    export_folder_problem,
-    save_project,
-    yaml_path_problem,
-)
+from frp_assess.tui.core.session import RunOutcome, save_project, yaml_path_problem
 from frp_assess.tui.core.tabs import TABS, tab_of, tab_title
 from frp_assess.tui.core.text import printable
 from frp_assess.tui.dialogs import ConfirmQuit, PathPrompt
@@ -358,11 +354,9 @@ class FrpAssessApp(App[None]):
         project = self.project
         out_dir = default_out_dir(self.path)
         names = [UNREINFORCED, *(str(o.name) for o in project.expand_interventions())]
-        # the inputs' digest is recorded only when the file holds what is run
-        saved: Path | None = self.path
-        if self.modified():
+        saved = None if self.modified() else self.path  # the digest: only of what the file holds
+        if saved is None:
             panel.log_line("note: running the project as edited (not saved yet)", "yellow")
-            saved = None
         panel.start(names, record_count(project), str(out_dir))
         self.cancel_event = threading.Event()
         self.running = True

@@ -15,7 +15,7 @@ from pathlib import Path
 from frp_assess.app.assessment import RunOutcome, load_previous, prepare_run, run_prepared
 from frp_assess.app.history import HistoryData, case_history
 from frp_assess.app.project import Project, save_project, yaml_path_problem
-from frp_assess.app.report import export_folder_problem, export_run
+from frp_assess.app.report import export_run
 from frp_assess.tui.core.progress import CaseCount, CaseProgress
 
 __all__ = [
@@ -25,7 +25,6 @@ __all__ = [
     "RunOutcome",
     "case_history",
     "execute_run",
-    "export_folder_problem",
     "export_outputs",
     "load_previous",
     "save_project",
