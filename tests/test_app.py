@@ -7,6 +7,7 @@ from __future__ import annotations
 import math
 import threading
 from pathlib import Path
+from typing import Any, cast
 
 import pytest
 import yaml
@@ -20,6 +21,7 @@ from frp_assess.app.project import (
     ensure_project_file,
     load_project_text,
 )
+from frp_assess.app.report import export_folder_problem, export_run
 from frp_assess.assess.wall_model import design_strength
 from frp_assess.config.library import FRP_MATERIALS
 from frp_assess.config.schema import WallSpec
@@ -59,6 +61,24 @@ def test_prepare_run_reports_the_records_stage_and_a_cancelled_run_writes_nothin
     with pytest.raises(Cancelled):
         run_prepared(prepared, out, cancel=stop, jobs=1)
     assert not out.exists()
+
+
+def test_export_follows_the_missing_parent_rule_of_run_out(tmp_path: Path) -> None:
+    """The TUI's export folder is checked as ``run --out`` is (frp_assess/output_set.py,
+    "Missing parent folder"): a new folder is fine, a new folder under a missing one is
+    refused naming the missing folder, and nothing is created; a file is refused."""
+    assert export_folder_problem(tmp_path / "new") is None
+    assert export_folder_problem(tmp_path) is None
+    deep = tmp_path / "a" / "b" / "export"
+    problem = export_folder_problem(deep)
+    assert problem is not None and f"{tmp_path / 'a' / 'b'} does not exist" in problem
+    (tmp_path / "file").write_text("x")
+    assert "is a file" in (export_folder_problem(tmp_path / "file") or "")
+    # the export itself refuses before it looks at the run (here: no run at all)
+    with pytest.raises(InputError) as info:
+        export_run(cast(Any, None), deep)
+    assert info.value.key == "export" and "does not exist" in info.value.message
+    assert not (tmp_path / "a").exists()
 
 
 def test_previews_are_the_closed_forms() -> None:

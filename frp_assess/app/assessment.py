@@ -19,6 +19,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from frp_assess.app.report import write_outputs
+from frp_assess.app.rerun import project_digest, referenced_paths, write_sidecar
 from frp_assess.assess.cache import IdaCache, cache_file, record_digest, task_key
 from frp_assess.assess.floor_input import floor_record, floor_spectra
 from frp_assess.assess.from_project import inputs_from_project, load_inputs
@@ -337,15 +338,26 @@ def run_prepared(
     progress: Progress | None = None,
     case_progress: PairDone | None = None,
     jobs: int | None = None,
+    project_file: Path | None = None,
 ) -> RunOutcome:
     """Every IDA (cached in ``out_dir/.cache``), ranking and result files, report.pdf and
     report.docx included, as ``frp-assess run`` writes them.
+
+    ``project_file``: the file the project was read from, when the project run is that
+    file's content (not edited since): its inputs' digest (:func:`frp_assess.app.rerun.
+    project_digest`, with ``run``'s default options) goes into results.json and the
+    sidecar, as ``frp-assess run`` records it, so a later unchanged ``run`` recomputes
+    nothing and the results can be told stale.  None (an edited, unsaved project): no
+    digest, since no file holds these inputs.
 
     Raises :class:`~frp_assess.errors.Cancelled` when ``cancel`` is set (finished IDAs stay
     in the cache), :class:`~frp_assess.errors.InputError` for a problem the user can fix.
     """
     if cancel.is_set():
         raise Cancelled("cancelled")
+    digest = None
+    if project_file is not None:
+        digest = project_digest(project_file, prepared.project)
     results, stats = run_assessment(
         prepared.inputs,
         out_dir,
@@ -355,7 +367,11 @@ def run_prepared(
         cancel=cancel,
         seismic=prepared.seismic,
         pdf=True,
+        inputs_digest=digest,
     )
+    if digest is not None:
+        files = referenced_paths(prepared.project)
+        write_sidecar(Path(out_dir), digest, results.created, files, pdf=True)
     return RunOutcome(
         results, prepared.seismic, prepared.inputs, Path(out_dir), stats, prepared.project
     )

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_write_text
 from frp_assess.motions import write_at2
-from frp_assess.output_set import FolderLock, check_out_file, staged_set
+from frp_assess.output_set import FolderLock, check_out_dir, check_out_file, staged_set
 from frp_assess.results.csv_files import results_csv, spectra_csv
 from frp_assess.results.json_io import to_json
 from frp_assess.results.model import AssessmentResult
@@ -31,6 +31,7 @@ __all__ = [
     "REPORT_FILES",
     "build_pdf",
     "build_word",
+    "export_folder_problem",
     "export_run",
     "rebuild_report",
     "write_outputs",
@@ -161,12 +162,25 @@ def _report_warning(name: str, reason: str) -> None:
     )
 
 
+def export_folder_problem(directory: Path) -> str | None:
+    """Why ``directory`` cannot receive an export (None: it can): the checks of
+    ``frp-assess run --out`` (:func:`~frp_assess.output_set.check_out_dir`): a file or a
+    device, a path under a file, not writable, a missing parent folder (only the export
+    folder itself is created), a link named like one of the tool's files."""
+    try:
+        check_out_dir(Path(directory), key="export")
+    except InputError as exc:
+        return exc.message
+    return None
+
+
 def export_run(outcome: RunOutcome, directory: Path) -> list[Path]:
     """Write report.pdf, report.docx, results.json/.csv, spectra.csv and records/ of a
-    finished run into ``directory``; returns the files and folders written."""
+    finished run into ``directory``; returns the files and folders written.  ``directory`` is
+    checked as ``run --out`` is (:func:`export_folder_problem`): it may be new, the folder
+    that holds it must exist."""
     directory = Path(directory)
-    if directory.exists() and not directory.is_dir():
-        raise InputError(f"{directory} is a file, not a directory")
+    check_out_dir(directory, key="export")  # the rules of `run --out`, missing parent included
     try:
         write_outputs(outcome.results, outcome.seismic, directory, pdf=True)
     except OSError as exc:

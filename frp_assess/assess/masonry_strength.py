@@ -38,17 +38,15 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
-from frp_assess.dynamics.units import KPA_PER_GPA, KPA_PER_MPA
+from frp_assess.dynamics.units import KPA_PER_MPA
 from frp_assess.errors import InputError
 from frp_assess.results.pivot import MasonryResult
 from frp_assess.rules import masonry as rule
-from frp_assess.rules.bars import bar_area, bar_force
 from frp_assess.rules.masonry import STRESS_BLOCK_FACTOR as STRESS_BLOCK_FACTOR  # re-export
 from frp_assess.rules.masonry import (
     base_force,
     compressed_zone_depth,
     design_strength,
-    force_for_depth,
 )
 
 KnowledgeLevel = Literal["LC1", "LC2", "LC3"]
@@ -343,32 +341,6 @@ def pivot_check(
         limit=limit,
         rigid_block_holds=bool(ratio <= limit and ratio < 1.0),
     )
-
-
-def max_ratio_for_pivot(
-    weight: float,
-    thickness: float,
-    elastic_modulus: float,
-    strain: float,
-    f_d: float,
-    depth: float,
-) -> float:
-    """Largest bar ratio ρ [‰] whose compressed zone x(W + T) stays within ``depth`` [m].
-
-    The inverse of x = (W + T)/(0.85·f_d·1 m) (:func:`~frp_assess.rules.masonry.force_for_depth`)
-    with T = E·ρ·B·ε (:func:`~frp_assess.rules.bars.bar_force`):
-    ρ_max = (0.85·f_d·x_b − W) / (E·B·ε), 0 when the wall alone already reaches x_b.
-
-    Args:
-        weight: W [kN/m].  thickness: B [m].  elastic_modulus: E [GPa].
-        strain: ε of the bar at the state checked (rupture or peak) [-].
-        f_d: [MPa].  depth: the bound x_b [m].
-    """
-    if not (thickness > 0 and elastic_modulus > 0 and strain > 0 and f_d > 0):
-        raise ValueError("thickness, elastic_modulus, strain and f_d must be > 0")
-    capacity = force_for_depth(depth, f_d * KPA_PER_MPA)  # [kN/m]
-    per_permille = bar_force(elastic_modulus * KPA_PER_GPA, bar_area(1.0, thickness), strain)
-    return max(capacity - weight, 0.0) / per_permille
 
 
 # ---------------------------------------------------------------------------------------------

@@ -57,6 +57,8 @@ def run(args: argparse.Namespace) -> int:
                 "collapse_multiplier": res.collapse_multiplier,
                 "a_dyn": None if res.a_dyn is None else res.a_dyn / G,
                 "q": res.q,
+                # how the wall failed at the first collapse; null without collapse
+                "failure_mode": res.failure_mode,
             }
         )
     # one definition with `run`: a record that does not collapse up to C_max counts at

@@ -50,6 +50,8 @@ def run(args: argparse.Namespace) -> int:
     out = {
         "collapsed": res.collapsed,
         "fate": res.fate,
+        # how the wall failed (docs/model.md §1.1); null when it did not collapse
+        "failure_mode": res.failure_mode,
         "decided_time": res.decided_time,
         "collapse_time": res.collapse_time,
         "max_rotation": res.max_rotation,

@@ -22,6 +22,7 @@ from textual.widget import Widget
 from textual.widgets import Button, Input, Select, TabbedContent, TabPane
 
 from frp_assess.app.assessment import UNREINFORCED, default_out_dir
+from frp_assess.app.report import export_folder_problem
 from frp_assess.app.rerun import project_changed
 from frp_assess.config.schema import Project
 from frp_assess.errors import InputError
@@ -353,7 +354,8 @@ class FrpAssessApp(App[None]):
         project = self.project
         out_dir = default_out_dir(self.path)
         names = [UNREINFORCED, *(str(o.name) for o in project.expand_interventions())]
-        if self.modified():
+        saved = None if self.modified() else self.path  # the digest: only of what the file holds
+        if saved is None:
             panel.log_line("note: running the project as edited (not saved yet)", "yellow")
         panel.start(names, record_count(project), str(out_dir))
         self.cancel_event = threading.Event()
@@ -368,6 +370,7 @@ class FrpAssessApp(App[None]):
             out_dir,
             self.cancel_event,
             self.jobs,
+            saved,
         )
         self.run_worker(job, thread=True, exclusive=True, group="run", exit_on_error=False)
 
@@ -423,11 +426,6 @@ class FrpAssessApp(App[None]):
             return
         outcome = self.outcome
 
-        def check(path: Path) -> str | None:
-            if path.exists() and not path.is_dir():
-                return f"{path} is a file, not a directory"
-            return None
-
         def done(path: Path | None) -> None:
             if path is not None:
                 self.notify(f"exporting into {path}/ …")
@@ -441,7 +439,7 @@ class FrpAssessApp(App[None]):
                 "Export the PDF report and the results into the folder",
                 str(outcome.out_dir),
                 "report.pdf, results.json, results.csv, spectra.csv, records/",
-                check,
+                export_folder_problem,
             ),
             done,
         )

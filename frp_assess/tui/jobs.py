@@ -36,8 +36,10 @@ def run_assessment_job(
     out_dir: Path,
     cancel: threading.Event,
     jobs: int | None,
+    project_file: Path | None = None,
 ) -> None:
-    """Run the assessment (as ``frp-assess run``); posts RunProgress, then RunDone."""
+    """Run the assessment (as ``frp-assess run``); posts RunProgress, then RunDone.
+    ``project_file``: the saved file the project is, None when edited (``execute_run``)."""
     last: dict[str, float] = {}
 
     def emit(ev: RunEvent) -> None:
@@ -52,7 +54,14 @@ def run_assessment_job(
 
     try:
         outcome = execute_run(
-            project, base_dir, input_file, out_dir, cancel=cancel, emit=emit, jobs=jobs
+            project,
+            base_dir,
+            input_file,
+            out_dir,
+            cancel=cancel,
+            emit=emit,
+            jobs=jobs,
+            project_file=project_file,
         )
     except Cancelled:
         post(RunDone("cancelled", None, "finished analyses are kept in the cache"))

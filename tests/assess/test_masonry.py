@@ -13,7 +13,6 @@ from frp_assess.assess.masonry_strength import (
     MASONRY_TABLE,
     masonry_design_values,
     masonry_strength,
-    max_ratio_for_pivot,
     pivot_check,
 )
 from frp_assess.config.library import MASONRY
@@ -104,17 +103,6 @@ def test_pivot_check_unreinforced_holds_gfrp_at_rupture_does_not():
     assert gfrp.depth_ratio == pytest.approx(0.1633, abs=1e-4)
     assert not gfrp.rigid_block_holds
     assert pivot_check(21.6, t, 0.4, f_d, limit=0.2).rigid_block_holds
-
-
-def test_largest_ratio_the_pivot_can_carry_by_hand():
-    # B = 0.4, W = 21.6 kN/m, f_d = 2.875 MPa, k = 0.1: 0.1·0.4·2443.75 = 97.75 kN/m at the
-    # limit; GFRP at rupture, T(1 ‰) = 46e6·4e-4·0.0075 = 138 kN/m → ρ_max = 76.15/138 ‰
-    rho = max_ratio_for_pivot(21.6, 0.4, 46.0, 0.0075, 2.875, 0.1 * 0.4)
-    assert rho == pytest.approx(76.15 / 138)
-    at_limit = pivot_check(21.6, bar_force(rho, 0.4, 46.0, 0.0075), 0.4, 2.875)
-    assert at_limit.depth_ratio == pytest.approx(0.1)
-    # a wall whose own weight already needs x > 0.1·B admits no bars
-    assert max_ratio_for_pivot(200.0, 0.4, 46.0, 0.0075, 2.875, 0.1 * 0.4) == 0.0
 
 
 @pytest.mark.parametrize("call", ["design_values", "strength"])

@@ -65,9 +65,11 @@ def test_simulate_json_matches_api(record_file, capsys):
     assert out["peak_strain"] == res.peak_strain
     assert out["rupture_strain"] == pytest.approx(0.5 * 0.015)
     assert out["collapse_rule"] == "overturning" and out["tolerance"] == DEFAULT_TOLERANCE
+    assert not res.collapsed and out["failure_mode"] is None  # at rest: no failure mode
     assert set(out) == {
         "collapsed",
         "fate",
+        "failure_mode",
         "decided_time",
         "collapse_time",
         "max_rotation",
@@ -79,6 +81,17 @@ def test_simulate_json_matches_api(record_file, capsys):
         "collapse_rule",
         "tolerance",
     }
+
+
+def test_simulate_json_names_the_failure_mode(record_file, capsys):
+    """A run that collapses says how (docs/model.md §1.1): at 12 × the record the GFRP bars
+    of this wall rupture and the wall then falls, "rupture then overturning"; the mode is
+    derived here from the JSON's own fate and ruptures, not from the kernel's property."""
+    argv = ["simulate", *WALL_ARGS, *BAR_ARGS, "--record", str(record_file), "--json"]
+    assert main([*argv, "--scale", "12"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["fate"] == "fell" and len(out["ruptures"]) >= 1
+    assert out["failure_mode"] == "rupture then overturning"
 
 
 def test_simulate_history_csv(record_file, tmp_path, capsys):
@@ -131,6 +144,20 @@ def test_ida_json(record_file, capsys):
     assert r0["a_dyn"] == pytest.approx(ref.a_dyn / G) and r0["q"] == pytest.approx(ref.q)
     assert r0["pga"] == pytest.approx(rec.pga_g)
     assert out["mean_q"] == pytest.approx(ref.q)
+    # the unreinforced wall has no bars to rupture: it overturns
+    assert ref.failure_mode == "overturning"
+    assert [r["failure_mode"] for r in out["records"]] == ["overturning", "overturning"]
+
+
+def test_ida_json_failure_mode_of_a_reinforced_wall(record_file, capsys):
+    """With GFRP bars the first collapse of this record comes after a bar ruptures: each
+    record's row carries "rupture then overturning" (ida's IdaResult.failure_mode)."""
+    argv = ["ida", *WALL_ARGS, *BAR_ARGS, "--record", str(record_file), "--json"]
+    assert main(argv) == 0
+    out = json.loads(capsys.readouterr().out)
+    (row,) = out["records"]
+    assert row["collapse_multiplier"] is not None
+    assert row["failure_mode"] == "rupture then overturning"
 
 
 @pytest.mark.parametrize(

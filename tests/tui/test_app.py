@@ -11,6 +11,7 @@ from rich.console import Console
 from textual.widgets import DataTable, Input, Select, Static, TabbedContent, TabPane
 
 from frp_assess.api import CACHE_DIR, default_out_dir, run_assessment, template_text
+from frp_assess.app.rerun import inputs_digest, unchanged_run
 from frp_assess.assess.from_project import inputs_from_project
 from frp_assess.config import load_project, load_project_text
 from frp_assess.results.json_io import from_json
@@ -215,6 +216,12 @@ def test_run_to_the_end_matches_batch_mode(small_project: Path, tmp_path: Path):
     variants = len(on_disk["sensitivity"]["rows"]) - 1  # the first row is a cached case
     assert len(list((out / CACHE_DIR).glob("*.json"))) == 9 + variants * len(on_disk["records"])
     assert (out / "report.pdf").read_bytes().startswith(b"%PDF")  # as `frp-assess run` writes
+    # the inputs' digest, as `frp-assess run` records it (frp_assess/app/rerun.py): the file's
+    # bytes and its records', so an unchanged `run` after the TUI's recomputes nothing
+    records = [f.path for f in loaded.project.seismic.records.files or []]
+    assert on_disk["inputs_digest"] == inputs_digest(small_project, records)
+    assert tui.inputs_digest == on_disk["inputs_digest"]
+    assert unchanged_run(small_project, out) is not None
 
 
 @pytest.mark.slow
@@ -330,6 +337,13 @@ def test_export_pdf_and_help(small_project: Path, tmp_path: Path):
             await settle(pilot, lambda: bool(app.screen.query("#path-input")))
             box = app.screen.query_one("#path-input", Input)
             assert box.value == str(default_out_dir(small_project))
+            # the rule of `run --out`: the folder that holds the export must exist
+            box.value = str(tmp_path / "missing" / "exported")
+            await pilot.press("enter")
+            error = app.screen.query_one("#path-error", Static)
+            # (the message wraps at the dialog's width: compare it as one line)
+            await settle(pilot, lambda: "missing does not exist" in " ".join(plain(error).split()))
+            assert not (tmp_path / "missing").exists()
             box.value = str(export)
             await pilot.press("enter")
             await after_workers(pilot, lambda: (export / "results.json").exists())

@@ -62,10 +62,14 @@ def execute_run(
     cancel: threading.Event,
     emit: Emit,
     jobs: int | None = None,
+    project_file: Path | None = None,
 ) -> RunOutcome:
     """Records, then every IDA (cached in ``out_dir/.cache``), ranking and result files,
     report.pdf included, as ``frp-assess run`` writes them
     (:func:`frp_assess.app.assessment.run_prepared`), reported through ``emit``.
+
+    ``project_file``: the saved file the project is (None when edited and not saved): its
+    inputs' digest is recorded as ``frp-assess run`` records it (``run_prepared``).
 
     Raises :class:`~frp_assess.errors.Cancelled` when ``cancel`` is set (finished IDAs stay
     in the cache), :class:`~frp_assess.errors.InputError` for a problem the user can fix.
@@ -102,6 +106,7 @@ def execute_run(
         progress=progress,
         case_progress=tracker.mark,
         jobs=jobs,
+        project_file=project_file,
     )
 
 
