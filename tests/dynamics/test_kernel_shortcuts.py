@@ -26,17 +26,17 @@ from frp_assess.dynamics.kernel.params import (
     STEP_SAFETY,
     STEP_SHRINK_MIN,
 )
-from frp_assess.dynamics.kernel.simulate import _grow_threshold, _quiet, _step_size
+from frp_assess.dynamics.kernel.step_control import grow_threshold, quiet, step_size
 from frp_assess.dynamics.kernel.steppers import acceleration, step
 
 
 @pytest.mark.parametrize("exponent", [-1.0 / 5.0, -1.0 / 3.0])
 def test_step_factor_without_the_power_is_the_same(exponent: float) -> None:
     """h_new = h·min(5, max(0.2, 0.9·err^e)) for every accepted err, the power skipped or not."""
-    threshold = _grow_threshold(exponent)
+    threshold = grow_threshold(exponent)
     errs = np.concatenate([np.geomspace(1e-12, 1.0, 4001), [threshold, threshold * 1.0000001]])
     for err in errs:
-        accepted, h = _step_size(float(err), 1.0, 1.0, exponent, threshold)
+        accepted, h = step_size(float(err), 1.0, 1.0, exponent, threshold)
         expected = min(STEP_GROWTH_MAX, max(STEP_SHRINK_MIN, STEP_SAFETY * err**exponent))
         assert accepted
         assert h == expected
@@ -47,17 +47,17 @@ def test_quiet_steps_stay_inside() -> None:
     the test is not vacuous: it says quiet for many of the random steps."""
     rng = np.random.default_rng(7)
     u = np.linspace(0.0, 1.0, 2001)
-    quiet = 0
+    quiet_steps = 0
     for _ in range(4000):
         y0, y1 = rng.uniform(-0.2, 1.2, 2)
         m0, m1 = rng.normal(0.0, 0.5, 2)
         top = 1.0
-        if _quiet(y0, y1, m0, m1, top):
-            quiet += 1
+        if quiet(y0, y1, m0, m1, top):
+            quiet_steps += 1
             c0, c1, c2, c3 = ev.hermite(y0, y1, m0, m1)
             y = c0 + u * (c1 + u * (c2 + u * c3))
             assert y.min() > 0.0 and y.max() < top
-    assert quiet > 400
+    assert quiet_steps > 400
 
 
 def test_crossing_on_the_cubic_matches_the_polynomial_roots() -> None:

@@ -48,11 +48,9 @@ from frp_assess.dynamics.kernel.params import (
     STATUS_FREE_VIBRATION_UNDECIDED,
     STATUS_OK,
     STATUS_STEP_UNDERFLOW,
-    STEP_GROWTH_MAX,
-    STEP_SAFETY,
-    STEP_SHRINK_MIN,
     KernelParams,
 )
+from frp_assess.dynamics.kernel.step_control import grow_threshold, quiet, step_length, step_size
 from frp_assess.dynamics.kernel.steppers import acceleration, step
 
 _NO_EVENT = 0
@@ -60,9 +58,6 @@ _IMPACT = 1
 _RUPTURE = 2
 _LIMIT = 3  #: the collapse level: π/2 (fell) or α_x (first exceedance)
 _CRUSH = 4  #: θ_cr of the intact acting bar: the toe crushes
-#: A step that would leave less than this fraction of itself before the next sample is
-#: stretched to the sample; shorter steps divide the rest of the interval equally.
-_SLIVER = 0.01
 
 
 class Outcome(NamedTuple):
@@ -161,59 +156,6 @@ def _verdict_at_end(theta: float, last_alpha_up: float, prm: KernelParams) -> tu
 
 
 @njit(cache=True, nogil=True)
-def _step_length(h: float, rest: float, equal: bool) -> float:
-    """The step to take when ``rest`` [s] remain to the next sample and h is proposed: the
-    rest itself when h nearly reaches it, else h, or (``equal``) the rest divided into equal
-    steps no longer than h, so that no sliver is left before the sample."""
-    if h >= rest * (1.0 - _SLIVER):
-        return rest
-    if equal:
-        return rest / math.ceil(rest / h)
-    return h
-
-
-@njit(cache=True, nogil=True)
-def _step_size(
-    err: float, hh: float, h: float, exponent: float, err_grow_max: float
-) -> tuple[bool, float]:
-    """Error control: (accept the step of length hh, the next step length [s]).
-
-    A step is accepted when err ≤ 1 (NaN never); the next one is hh·0.9·err^exponent within
-    [0.2, 5]·hh.  Below ``err_grow_max`` (:func:`_grow_threshold`) the factor is 5 and the
-    power is not evaluated: the steps that the record's samples cut short are the common case,
-    and ``pow`` was a tenth of the kernel's time.
-    """
-    if not err <= 1.0:
-        shrink = STEP_SHRINK_MIN
-        if err < 1e300:
-            shrink = max(STEP_SHRINK_MIN, STEP_SAFETY * err**exponent)
-        return False, hh * shrink
-    grow = STEP_GROWTH_MAX
-    if err > err_grow_max:
-        grow = min(STEP_GROWTH_MAX, max(STEP_SHRINK_MIN, STEP_SAFETY * err**exponent))
-    return True, hh * grow
-
-
-@njit(cache=True, nogil=True)
-def _grow_threshold(exponent: float) -> float:
-    """The error below which 0.9·err^exponent exceeds the largest growth 5 (kept a part in
-    10⁹ below the exact bound, so the factor is the same as with the power evaluated)."""
-    bound: float = (STEP_GROWTH_MAX / STEP_SAFETY) ** (1.0 / exponent)
-    return (1.0 - 1e-9) * bound
-
-
-@njit(cache=True, nogil=True)
-def _quiet(y0: float, y1: float, m0: float, m1: float, top: float) -> bool:
-    """Whether the Hermite cubic through (0, y0), (1, y1) with slopes m0, m1 stays inside
-    (0, top): its Bernstein control points y0, y0 + m0/3, y1 − m1/3, y1 do (the cubic lies in
-    their convex hull).  Then the step holds no event and no turning point above ``top``, and
-    the critical points and crossings need not be computed (most steps)."""
-    b1 = y0 + m0 / 3.0
-    b2 = y1 - m1 / 3.0
-    return min(min(y0, y1), min(b1, b2)) > 0.0 and max(max(y0, y1), max(b1, b2)) < top
-
-
-@njit(cache=True, nogil=True)
 def _first_event(
     y0: float,
     y1: float,
@@ -281,7 +223,7 @@ def _scan_step(
     y1 = s * th1
     m0 = s * omega * hh
     m1 = s * om1 * hh
-    if _quiet(y0, y1, m0, m1, top):
+    if quiet(y0, y1, m0, m1, top):
         # the dense output stays inside (0, top): no event, no new peak
         return _NO_EVENT, 2.0, 0.0, max(y0, y1)
     c = ev.hermite(y0, y1, m0, m1)
@@ -348,7 +290,7 @@ def simulate(
     adaptive = prm.method != METHOD_RK4
     # step-size exponent: 1/(q + 1), q the order of the embedded error estimate
     exponent = -1.0 / 5.0 if prm.method == METHOD_DOPRI5 else -1.0 / 3.0
-    err_grow_max = _grow_threshold(exponent)
+    err_grow_max = grow_threshold(exponent)
     bar_level = min(prm.theta_max, prm.theta_cr, limit)  # the lowest level with the bar intact
     h_fixed = dt / max(1, int(math.ceil(dt / prm.fixed_step - 1e-9))) if not adaptive else dt
 
@@ -424,10 +366,10 @@ def simulate(
             if need_a:
                 a1 = acceleration(theta, s, u0, k_s, prm)
                 need_a = False
-            hh = _step_length(h if adaptive else h_fixed, dt - x, adaptive)
+            hh = step_length(h if adaptive else h_fixed, dt - x, adaptive)
             th1, om1, a_end, err = step(theta, omega, hh, u0, slope, s, k_s, a1, prm)
             if adaptive:
-                accepted, h = _step_size(err, hh, h, exponent, err_grow_max)
+                accepted, h = step_size(err, hh, h, exponent, err_grow_max)
                 if not accepted:
                     n_rejected += 1
                     if h < MIN_STEP_FRACTION * dt:
