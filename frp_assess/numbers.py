@@ -192,21 +192,23 @@ def recommendation_text(results: AssessmentResult) -> str:
 
 def check_verdicts(checks: CaseChecks, labelled: bool = False) -> list[tuple[str, bool]]:
     """(name, passed) of every check made on one case, in the order of the report's table:
-    linear, nonlinear SLV, nonlinear SLC, time history, IDA (the last two when made).
+    linear, nonlinear SLV, nonlinear SLC, time history (SLV, SLC), IDA (when made).
 
     ``labelled``: the names say what each check is in the decision (docs/results-json.md,
     "The decision"): the linear and nonlinear static checks "(supporting)", the time history
-    at SLV and at SLC and the IDA deciding; without it, the report's short names (one time
-    history, at SLV)."""
+    at SLV and at SLC and the IDA deciding; without it, the report's short names ("time
+    history" alone when only the SLV one was run, as in files written before the SLC one)."""
     sup = " (supporting)" if labelled else ""
     out = [
         (f"linear{sup}", checks.linear.passed),
         (f"nonlinear SLV{sup}", checks.slv.passed),
         (f"nonlinear SLC{sup}", checks.slc.passed),
     ]
+    both = checks.time_history_slc is not None
     if checks.time_history is not None:
-        out.append(("time history SLV" if labelled else "time history", checks.time_history.passed))
-    if labelled and checks.time_history_slc is not None:
+        name = "time history SLV" if labelled or both else "time history"
+        out.append((name, checks.time_history.passed))
+    if checks.time_history_slc is not None:
         out.append(("time history SLC", checks.time_history_slc.passed))
     if checks.ida is not None:
         out.append(("IDA", checks.ida.passed))

@@ -93,8 +93,11 @@ def checks_table(results: Results, lang: Lang) -> TableData | None:
     kc = results.kinematic_checks
     if kc is None or not kc.cases:
         return None
+    # the SLC time-history column when any case has it (files written before it: none)
+    slc = any(k.time_history_slc is not None for k in kc.cases)
     header = [lang.t("annex.col.option"), lang.t("check.linear"), lang.t("check.slv"),
-              lang.t("check.slc"), lang.t("check.th"), "IDA"]  # fmt: skip
+              lang.t("check.slc"), lang.t("check.th", ls="SLV"),
+              *([lang.t("check.th", ls="SLC")] if slc else []), "IDA"]  # fmt: skip
     by_name = {c.name: c for c in results.cases}
 
     def cell(z: float | None, ok: bool | None) -> str:
@@ -107,13 +110,14 @@ def checks_table(results: Results, lang: Lang) -> TableData | None:
     for k in kc.cases:
         case = by_name.get(k.case)
         label = case_label(case, lang) if case is not None else k.case
-        th, ida = k.time_history, k.ida
+        th, th_slc, ida = k.time_history, k.time_history_slc, k.ida
         rows.append([
             label,
             cell(k.linear.zeta_e, k.linear.passed),
             cell(k.slv.zeta_e, k.slv.passed),
             cell(k.slc.zeta_e, k.slc.passed),
             cell(th.ratio, th.passed) if th is not None else "—",
+            *([cell(th_slc.ratio, th_slc.passed) if th_slc is not None else "—"] if slc else []),
             cell(ida.zeta_e, ida.passed) if ida is not None else "—",
         ])  # fmt: skip
     return TableData(header, rows)
@@ -195,8 +199,9 @@ def annex(results: Results, lang: Lang) -> list[Block]:
     checks = checks_table(results, lang)
     if checks is not None:
         out += [cond_break(60 * mm), heading("annex.h.checks")]
-        out.append(grid(checks, [x * mm for x in (52, 24, 24, 24, 26, 24)], wrap=(0,),
-                        small=True))  # fmt: skip
+        # 174 mm, the text width, with or without the SLC time-history column
+        cols = (52, 24, 24, 24, 26, 24) if len(checks.header) == 6 else (42, 20, 21, 21, 25, 25, 20)
+        out.append(grid(checks, [x * mm for x in cols], wrap=(0,), small=True))
         out.append(markup(lang.t("annex.checks.note"), "caption"))
         states = intensities_text(results, lang)
         if states:

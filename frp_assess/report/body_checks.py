@@ -49,9 +49,10 @@ def _checks_lines(checks: CaseChecks, lang: Lang) -> str:
     ]
     parts.append((lang.t("check.slv"), checks.slv.zeta_e, checks.slv.passed))
     parts.append((lang.t("check.slc"), checks.slc.zeta_e, checks.slc.passed))
-    if checks.time_history is not None:
-        th = checks.time_history
-        parts.append((lang.t("check.th"), th.ratio, th.passed))
+    # the time-history checks at SLV and at SLC, each at its own a_g·S (both decide)
+    for th in (checks.time_history, checks.time_history_slc):
+        if th is not None:
+            parts.append((lang.t("check.th", ls=th.limit_state), th.ratio, th.passed))
     if checks.ida is not None:
         parts.append(("IDA", checks.ida.zeta_e, checks.ida.passed))
     return "; ".join(

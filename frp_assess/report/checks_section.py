@@ -1,7 +1,7 @@
 """The report section of the code's kinematic checks, side by side for every case.
 
 Circolare 2019 §C8.7.1 (docs/model.md, "Displacement-based checks"): one table of every check
-(linear, nonlinear static SLV and SLC, time history at the design intensity, IDA mean and least
+(linear, nonlinear static SLV and SLC, time history at SLV and at SLC, IDA mean and least
 favourable record) with capacity, demand, ζ_E and verdict; one table of the capacity curves
 (e*, M*, d0, d_SLV, T_SLV, demand); a line stating FC and its basis, and the floor when the
 wall stands above ground.  Built from :mod:`frp_assess.results.checks` (read back from
@@ -19,7 +19,7 @@ from frp_assess.numbers import fmt_zeta
 from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import esc, gap, grid, markup, para
 from frp_assess.report.tables import DASH, TableData, fmt_acc, pass_fail
-from frp_assess.results.checks import CaseChecks, KinematicChecks
+from frp_assess.results.checks import CaseChecks, KinematicChecks, TimeHistoryResult
 from frp_assess.text_safety import Markup
 
 CHECKS_HEADER = ["case", "check", "capacity", "demand", Markup("ζ<sub>E</sub>"), "verdict"]
@@ -48,6 +48,24 @@ def fmt_g(x: float | None) -> str:
     return DASH if x is None else f"{fmt_acc(x)} g"
 
 
+def _time_history_row(th: TimeHistoryResult) -> list[str]:
+    """One time-history check (Circolare 2019 §C8.7.1.2.1.9): d_SLV or d_SLC [mm] against
+    the mean peak of the records scaled to its limit state's a_g·S [g] (when stored)."""
+    ls = th.limit_state
+    at = "" if th.a_g is None else f" at a_g·S = {fmt_g(th.a_g)}"
+    verdict = pass_fail(th.passed)
+    if not th.d0_respected:
+        verdict += " (d0 exceeded)"
+    return [
+        "",
+        f"time history {ls}{at}: d_{ls} vs mean peak",
+        fmt_mm(th.d_limit),
+        "fell" if th.mean_peak is None else fmt_mm(th.mean_peak),
+        fmt_zeta(th.ratio),
+        verdict,
+    ]
+
+
 def _case_rows(c: CaseChecks) -> list[list[str]]:
     rows = [
         [
@@ -70,21 +88,8 @@ def _case_rows(c: CaseChecks) -> list[list[str]]:
                 pass_fail(ls.passed),
             ]
         )
-    th = c.time_history
-    if th is not None:
-        verdict = pass_fail(th.passed)
-        if not th.d0_respected:
-            verdict += " (d0 exceeded)"
-        rows.append(
-            [
-                "",
-                "time history: d_SLV vs mean peak",
-                fmt_mm(th.d_limit),
-                "fell" if th.mean_peak is None else fmt_mm(th.mean_peak),
-                fmt_zeta(th.ratio),
-                verdict,
-            ]
-        )
+    # the time-history checks at SLV and at SLC (each at its own a_g·S; both decide)
+    rows += [_time_history_row(th) for th in (c.time_history, c.time_history_slc) if th is not None]
     ida = c.ida
     if ida is not None:
         for label, zeta, deciding in (
@@ -160,9 +165,10 @@ def checks_section(checks: KinematicChecks) -> list[Block]:
         para(
             "Circolare 2019 §C8.7.1: the linear check (§C8.7.1.2.1.7), the nonlinear static "
             "checks at SLV and SLC (§C8.7.1.2.1.6-8, bars entering through the internal work "
-            "of elastic elements, d0 the bare wall's), the time-history check at the design "
-            "intensity (§C8.7.1.2.1.9) and the IDA. ζ_E = capacity/demand; the time-history "
-            "ζ_E is a ratio of displacements, the others of ground accelerations."
+            "of elastic elements, d0 the bare wall's), the time-history checks at SLV and SLC, "
+            "each with the records scaled to its own a_g·S (§C8.7.1.2.1.9), and the IDA. "
+            "ζ_E = capacity/demand; the time-history ζ_E is a ratio of displacements, the "
+            "others of ground accelerations."
         ),
         para(basis_text(checks), "small"),
         *([para(checks.intensity_basis, "small")] if checks.intensity_basis else []),
