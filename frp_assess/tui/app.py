@@ -391,8 +391,8 @@ class FrpAssessApp(App[None]):
             panel.finish(
                 "done",
                 f"{o.stats.computed} IDAs computed, {o.stats.reused} reused from the cache; "
-                f"recommended: {recommendation_text(o.results)}; results and report.pdf in "
-                f"{o.out_dir}/"
+                f"recommended: {recommendation_text(o.results)}; results, report.pdf and "
+                f"report.docx in {o.out_dir}/"
                 + (f"\n{check}" if (check := numerical_check_text(o.results)) else ""),
             )
             self.show_outcome(o)
@@ -436,9 +436,9 @@ class FrpAssessApp(App[None]):
 
         self.push_screen(
             PathPrompt(
-                "Export the PDF report and the results into the folder",
+                "Export the reports (PDF and Word) and the results into the folder",
                 str(outcome.out_dir),
-                "report.pdf, results.json, results.csv, spectra.csv, records/",
+                "report.pdf, report.docx, results.json, results.csv, spectra.csv, records/",
                 export_folder_problem,
             ),
             done,

@@ -65,9 +65,10 @@ conventions. *Design*: the smallest ratio per material and position (design mode
 *History*: pick a case and a record; `c` at collapse, `b` just below, `1` for C = 1, or
 type a multiplier and press `enter`.
 
-Runs write `results.json`, `results.csv`, `spectra.csv`, `records/` and `report.pdf`
-into `<project>-results/` next to the project file and keep every finished analysis in
-its `.cache/`, as `frp-assess run` does; `ctrl+e` writes them all into another folder.
+Runs write `results.json`, `results.csv`, `spectra.csv`, `records/`, `report.pdf` and
+`report.docx` (the editable Word report) into `<project>-results/` next to the project
+file and keep every finished analysis in its `.cache/`, as `frp-assess run` does;
+`ctrl+e` writes them all (both reports included) into another folder.
 Opening a project that was run before shows that run's results again (rebuilt from the
 cache, nothing recomputed) when they match the project as it is.
 """

@@ -348,6 +348,7 @@ def test_export_pdf_and_help(small_project: Path, tmp_path: Path):
             await pilot.press("enter")
             await after_workers(pilot, lambda: (export / "results.json").exists())
             assert (export / "report.pdf").exists()
+            assert (export / "report.docx").exists()  # as the prompt and the help say
             # help: F1 anywhere, ? outside free-text fields (also in a number field)
             thickness = app.query_one("#f-wall-thickness-control", Input)
             await pilot.press("f2")
