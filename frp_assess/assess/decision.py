@@ -40,6 +40,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
+from frp_assess.assess.kinematic_nonlinear import time_history_check
 from frp_assess.results.model import MEAN_OF_RECORDS_FROM
 from frp_assess.results.verdict import DecidingCheck
 
@@ -135,28 +136,23 @@ def time_history_deciding_check(
     """Circolare 2019 §C8.7.1.2.1.9 on the peaks [m]: d0 never exceeded, mean ≤ d_limit;
     margin min(d_limit/mean, d0/largest), 0 if a record made the wall fall, None if nothing
     moved."""
-    n = len(peaks)
-    worst = max(peaks)
-    mean = math.fsum(peaks) / n
-    over = sum(1 for p in peaks if p > d0)
+    th = time_history_check(peaks, d0, d_limit)
+    n = len(th.peaks)
     state = "SLV" if name == TH_SLV else "SLC"
-    limit = f"d_{state}"
-    margin: float | None
-    if not math.isfinite(worst):
-        fell = sum(1 for p in peaks if not math.isfinite(p))
-        margin = 0.0
+    if not math.isfinite(th.max_peak):
+        fell = sum(1 for p in th.peaks if not math.isfinite(p))
         detail = f"the wall falls under {fell} of {n} records at the {state} intensity"
-    elif worst == 0.0:
-        margin = None
+    elif th.max_peak == 0.0:
         detail = f"no record makes the wall rock at the {state} intensity"
     else:
-        margin = min(d_limit / mean, d0 / worst)
+        over = sum(1 for p in th.peaks if p > d0)
         detail = (
-            f"mean peak {mean * 1000:.0f} mm against {limit} = {d_limit * 1000:.0f} mm; "
+            f"mean peak {th.mean_peak * 1000:.0f} mm against d_{state} = {d_limit * 1000:.0f} mm; "
             f"{over} of {n} records exceed d0 = {d0 * 1000:.0f} mm"
         )
-    passed = worst <= d0 and mean <= d_limit
-    return DecidingCheck(name=name, margin=margin, passed=passed, lower_bound=False, detail=detail)
+    return DecidingCheck(
+        name=name, margin=th.margin, passed=th.passed, lower_bound=False, detail=detail
+    )
 
 
 def verdict(ev: Evidence) -> Verdict:

@@ -242,13 +242,6 @@ def time_history_result(
     """The §C8.7.1.2.1.9 check of ``peaks`` [m] against d0 and d_limit [m], as results;
     ``a_g`` [g] the limit state's a_g·S the records were scaled to."""
     th = time_history_check(peaks, d0, d_limit)
-    margin: float | None
-    if not math.isfinite(th.max_peak):
-        margin = 0.0
-    elif th.max_peak == 0.0:
-        margin = None
-    else:
-        margin = min(th.d_limit / th.mean_peak, th.d0 / th.max_peak)
     return TimeHistoryResult(
         scale=scale,
         peaks=tuple(_optional(p) for p in th.peaks),
@@ -261,7 +254,7 @@ def time_history_result(
         ratio=_optional(th.ratio) if math.isfinite(th.mean_peak) else 0.0,
         passed=th.passed,
         limit_state=limit_state,
-        margin=margin,
+        margin=th.margin,
         a_g=a_g,
     )
 

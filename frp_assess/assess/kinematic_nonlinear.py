@@ -257,6 +257,18 @@ class TimeHistoryCheck:
         mean = self.mean_peak
         return math.inf if mean == 0.0 else self.d_limit / mean
 
+    @property
+    def margin(self) -> float | None:
+        """The number that decides the check: min(d_lim/mean peak, d0/largest peak) [-],
+        ≥ 1 when both conditions hold (:attr:`passed`); 0 if a record made the wall fall;
+        None if no record made it rock (nothing to compare)."""
+        worst = self.max_peak
+        if not math.isfinite(worst):
+            return 0.0
+        if worst == 0.0:
+            return None
+        return min(self.d_limit / self.mean_peak, self.d0 / worst)
+
 
 def time_history_check(peaks: Sequence[float], d0: float, d_limit: float) -> TimeHistoryCheck:
     """Circolare 2019 §C8.7.1.2.1.9: the limit state is met if no record's peak displacement

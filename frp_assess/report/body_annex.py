@@ -116,8 +116,8 @@ def checks_table(results: Results, lang: Lang) -> TableData | None:
             cell(k.linear.zeta_e, k.linear.passed),
             cell(k.slv.zeta_e, k.slv.passed),
             cell(k.slc.zeta_e, k.slc.passed),
-            cell(th.ratio, th.passed) if th is not None else "—",
-            *([cell(th_slc.ratio, th_slc.passed) if th_slc is not None else "—"] if slc else []),
+            cell(th.zeta_e, th.passed) if th is not None else "—",
+            *([cell(th_slc.zeta_e, th_slc.passed) if th_slc is not None else "—"] if slc else []),
             cell(ida.zeta_e, ida.passed) if ida is not None else "—",
         ])  # fmt: skip
     return TableData(header, rows)

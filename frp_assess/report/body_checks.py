@@ -52,7 +52,7 @@ def _checks_lines(checks: CaseChecks, lang: Lang) -> str:
     # the time-history checks at SLV and at SLC, each at its own a_g·S (both decide)
     for th in (checks.time_history, checks.time_history_slc):
         if th is not None:
-            parts.append((lang.t("check.th", ls=th.limit_state), th.ratio, th.passed))
+            parts.append((lang.t("check.th", ls=th.limit_state), th.zeta_e, th.passed))
     if checks.ida is not None:
         parts.append(("IDA", checks.ida.zeta_e, checks.ida.passed))
     return "; ".join(

@@ -49,19 +49,32 @@ def fmt_g(x: float | None) -> str:
 
 
 def _time_history_row(th: TimeHistoryResult) -> list[str]:
-    """One time-history check (Circolare 2019 §C8.7.1.2.1.9): d_SLV or d_SLC [mm] against
-    the mean peak of the records scaled to its limit state's a_g·S [g] (when stored)."""
+    """One time-history check (Circolare 2019 §C8.7.1.2.1.9) with the condition that governs
+    its ζ_E = min(d_lim/mean peak, d0/largest peak): d_SLV or d_SLC [mm] against the mean
+    peak of the records scaled to its limit state's a_g·S [g] (when stored), or d0 against
+    the largest peak when that is the smaller ratio."""
     ls = th.limit_state
     at = "" if th.a_g is None else f" at a_g·S = {fmt_g(th.a_g)}"
     verdict = pass_fail(th.passed)
     if not th.d0_respected:
         verdict += " (d0 exceeded)"
+    by_d0 = (  # (files written before the margin print d_lim/mean: the d_lim pair)
+        th.margin is not None
+        and th.max_peak is not None
+        and th.max_peak > 0.0
+        and th.mean_peak is not None
+        and th.d0 / th.max_peak < th.d_limit / th.mean_peak
+    )
+    if by_d0:
+        what, capacity, demand = "d0 vs largest peak", th.d0, th.max_peak
+    else:
+        what, capacity, demand = f"d_{ls} vs mean peak", th.d_limit, th.mean_peak
     return [
         "",
-        f"time history {ls}{at}: d_{ls} vs mean peak",
-        fmt_mm(th.d_limit),
-        "fell" if th.mean_peak is None else fmt_mm(th.mean_peak),
-        fmt_zeta(th.ratio),
+        f"time history {ls}{at}: {what}",
+        fmt_mm(capacity),
+        "fell" if demand is None else fmt_mm(demand),
+        fmt_zeta(th.zeta_e),
         verdict,
     ]
 
@@ -167,8 +180,9 @@ def checks_section(checks: KinematicChecks) -> list[Block]:
             "checks at SLV and SLC (§C8.7.1.2.1.6-8, bars entering through the internal work "
             "of elastic elements, d0 the bare wall's), the time-history checks at SLV and SLC, "
             "each with the records scaled to its own a_g·S (§C8.7.1.2.1.9), and the IDA. "
-            "ζ_E = capacity/demand; the time-history ζ_E is a ratio of displacements, the "
-            "others of ground accelerations."
+            "ζ_E = capacity/demand; the time-history ζ_E = min(d_lim/mean peak, d0/largest "
+            "peak) is a ratio of displacements (≥ 1 exactly when both of its conditions hold), "
+            "the others of ground accelerations."
         ),
         para(basis_text(checks), "small"),
         *([para(checks.intensity_basis, "small")] if checks.intensity_basis else []),

@@ -105,6 +105,12 @@ class TimeHistoryResult:
     #: files written before it
     a_g: float | None = None
 
+    @property
+    def zeta_e(self) -> float | None:
+        """ζ_E of the check, the number every output prints: :attr:`margin`, or
+        :attr:`ratio` in files written before the margin was stored."""
+        return self.margin if self.margin is not None or self.ratio is None else self.ratio
+
 
 @dataclass(frozen=True)
 class IdaCheck:

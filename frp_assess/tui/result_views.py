@@ -298,7 +298,7 @@ def _th_cell(th: TimeHistoryResult | None) -> Text:
         return Text("—", "dim")
     if th.ratio == 0:
         return Text("falls", "bold red")
-    value = th.margin if th.margin is not None or th.ratio is None else th.ratio
+    value = th.zeta_e
     if value is None:
         return Text("no rocking", "green" if th.passed else "red")
     return _zeta(value, th.passed)

@@ -247,5 +247,12 @@ def test_time_history_check():
     assert not one_over_d0.passed
     fell = time_history_check([0.01, math.inf], d0, d_lim)
     assert not fell.passed and fell.ratio == 0.0
+    # the margin that decides: min(d_lim/mean, d0/largest), by hand
+    assert ok.margin == pytest.approx(min(0.0790 / 0.05, 0.1975 / 0.08))  # 1.58, d_lim governs
+    assert high_mean.margin == pytest.approx(0.0790 / (0.26 / 3))  # 0.912
+    assert one_over_d0.ratio > 1.0  # d_lim/mean alone would pass it
+    assert one_over_d0.margin == pytest.approx(0.1975 / 0.20)  # 0.9875 < 1: d0 governs
+    assert fell.margin == 0.0
+    assert time_history_check([0.0, 0.0], d0, d_lim).margin is None  # nothing rocked
     with pytest.raises(ValueError):
         time_history_check([], d0, d_lim)

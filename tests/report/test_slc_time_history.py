@@ -153,3 +153,32 @@ def test_the_short_check_names_tell_the_two_time_histories_apart():
         ("IDA", True),
     ]
     assert ("time history", False) in check_verdicts(CHECKS.cases[0])  # an older file
+
+
+#: an option whose SLC mean peak is within d_SLC (110 mm ≤ 118.5 mm) but one record passes
+#: d0 (210 mm > 197.5 mm): it fails, and its ζ_E is d0/largest = 0.9404, not d_SLC/mean =
+#: 1.077 (a ζ_E above 1 beside "FAIL" is what the report printed before)
+D0_GOVERNS = _case("CFRP external 1‰", (0.020, 0.030), (0.010, 0.210))
+ZETA_D0 = D0 / 0.210  # 0.9404 → 0.94
+
+
+@pytest.mark.parametrize("code", LANGUAGES)
+def test_a_record_beyond_d0_gives_the_zeta_that_decides(code: str):
+    """Circolare 2019 §C8.7.1.2.1.9 asks for both conditions; ζ_E = min(d_SLC/mean peak,
+    d0/largest peak) worked out by hand above.  The checks table names the governing pair, the
+    case line and the annex cell print ζ_E < 1 with the failure."""
+    th = D0_GOVERNS.time_history_slc
+    assert th is not None and not th.passed and th.ratio > 1.0
+    rows = checks_table(replace(KC, cases=(D0_GOVERNS,))).rows
+    row = next(r for r in rows if r[1].startswith("time history SLC"))
+    assert row[1] == "time history SLC at a_g·S = 0.355 g: d0 vs largest peak"
+    assert row[2:] == [f"{1e3 * D0:.1f} mm", "210.0 mm", f"{ZETA_D0:.2f}", "FAIL (d0 exceeded)"]
+    lang = Lang(code)
+    zeta = lang.num(ZETA_D0, 2)
+    assert f"{lang.t('check.th', ls='SLC')}: ζ<sub>E</sub> = {zeta} (" in _checks_lines(
+        D0_GOVERNS, lang
+    )
+    results = replace(results_in(code), kinematic_checks=replace(KC, cases=(URM, D0_GOVERNS)))
+    table = annex_checks_table(results, lang)
+    assert table is not None
+    assert table.rows[1][5] == f"{zeta} {lang.t('annex.ko')}"
