@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import dataclasses
 import functools
+import itertools
 import json
 import types
 import typing
@@ -129,38 +130,32 @@ _EXACT: dict[Any, tuple[type, ...]] = {bool: (bool,), int: (int,), float: (int, 
 
 
 @functools.cache
-def _plain_types(tp: Any) -> tuple[tuple[type, ...], ...] | None:
-    """For a scalar annotation, ``((types,),)``; for a fixed tuple of scalars
-    (``tuple[float, bool, float]``), the exact types allowed at each position; else None."""
+def _plain_types(tp: Any) -> frozenset[Any] | None:
+    """For a scalar annotation, the exact types it accepts; for a fixed tuple of scalars
+    (``tuple[float, bool, float]``), every accepted tuple of the items' exact types; else
+    None."""
     if tp in _EXACT:
-        return (_EXACT[tp],)
+        return frozenset(_EXACT[tp])
     args = typing.get_args(tp)
-    if typing.get_origin(tp) is tuple and args and Ellipsis not in args:
-        if all(a in _EXACT for a in args):
-            return tuple(_EXACT[a] for a in args)
+    if typing.get_origin(tp) is tuple and args and all(a in _EXACT for a in args):
+        return frozenset(itertools.product(*(_EXACT[a] for a in args)))
     return None
 
 
 def _plain_items(tp: Any, value: list[Any]) -> list[Any] | None:
     """The items of ``value`` converted to ``tp`` when ``tp`` is a scalar or a fixed tuple of
-    scalars and every item fits (the bulk of results.json: the IDA curves), checked without
-    the generic per-item walk; None otherwise (then the generic walk converts, or words the
-    error with its key path).  The same values as the generic walk."""
-    types_ = _plain_types(tp)
-    if types_ is None:
+    scalars and every item fits (the bulk of results.json: the IDA curves), checked by their
+    exact types without the generic per-item walk; None otherwise (then the generic walk
+    converts, or words the error with its key path).  The same values as the generic walk."""
+    allowed = _plain_types(tp)
+    if allowed is None:
         return None
     if typing.get_origin(tp) is not tuple:
-        allowed = types_[0]
-        return list(value) if all(type(v) in allowed for v in value) else None
-    n = len(types_)
-    out = []
-    for v in value:
-        if type(v) is not list or len(v) != n:
-            return None
-        if not all(type(x) in t for x, t in zip(v, types_, strict=True)):
-            return None
-        out.append(tuple(v))
-    return out
+        return list(value) if set(map(type, value)) <= allowed else None
+    items = [tuple(v) for v in value if type(v) is list]
+    if len(items) != len(value) or not {tuple(map(type, v)) for v in items} <= allowed:
+        return None
+    return items
 
 
 def _dataclass(cls: Any, value: Any, file: str | None, key: str) -> Any:
