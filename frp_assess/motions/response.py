@@ -20,7 +20,7 @@ import math
 import os
 
 import numpy as np
-from numba import get_num_threads, njit, prange
+from numba import config, get_num_threads, njit, prange, set_num_threads
 from numpy.typing import ArrayLike, NDArray
 
 # The parallel loop below (the only one in the product) runs on numba's OpenMP threading
@@ -32,6 +32,15 @@ from numpy.typing import ArrayLike, NDArray
 # libgomp reads the variable once, when numba launches its threads (at the first parallel
 # call, never at import), so setting it here is early enough.  A value the user set is kept.
 os.environ.setdefault("OMP_WAIT_POLICY", "passive")
+
+
+def limit_threads(jobs: int | None) -> None:
+    """At most ``jobs`` threads for the parallel loop below when called from this thread
+    (``--jobs N`` of the command line: N cores in all, the SIMQKE records included); None
+    leaves numba's default (all cores).  numba's setting is per calling thread: the
+    commands make their records on the main thread.  The spectra do not depend on it."""
+    if jobs is not None:
+        set_num_threads(max(1, min(jobs, config.NUMBA_NUM_THREADS)))
 
 
 @njit(cache=True, nogil=True)
