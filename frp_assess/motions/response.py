@@ -40,7 +40,8 @@ def limit_threads(jobs: int | None) -> None:
     leaves numba's default (all cores).  numba's setting is per calling thread: the
     commands make their records on the main thread.  The spectra do not depend on it."""
     if jobs is not None:
-        set_num_threads(max(1, min(jobs, config.NUMBA_NUM_THREADS)))
+        most = int(config.NUMBA_NUM_THREADS)  # type: ignore[attr-defined]  # set at runtime
+        set_num_threads(max(1, min(jobs, most)))
 
 
 @njit(cache=True, nogil=True)
