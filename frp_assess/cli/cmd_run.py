@@ -219,7 +219,7 @@ def run(args: argparse.Namespace) -> int:
         if same is not None:
             return _unchanged(same.out_dir, same.created)
     from frp_assess.app.assessment import load_inputs
-    from frp_assess.motions.response import limit_threads
+    from frp_assess.app.records import limit_threads
     from frp_assess.output_set import FolderLock, check_out_dir  # not needed when unchanged
 
     inputs = load_inputs(path)  # InputError -> one line, exit 2, nothing written

@@ -50,8 +50,8 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from frp_assess.app.records import limit_threads
     from frp_assess.app.study import load_study, make_executor, plan_and_records, run_study
-    from frp_assess.motions.response import limit_threads
 
     path = Path(args.file)
     study = load_study(path)
