@@ -28,7 +28,6 @@ from frp_assess.numbers import (
     recommendation_text,
     verdict_text,
 )
-from frp_assess.output_set import FolderLock, check_out_dir
 from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.text_safety import plain
 
@@ -220,6 +219,8 @@ def run(args: argparse.Namespace) -> int:
         if same is not None:
             return _unchanged(same.out_dir, same.created)
     from frp_assess.app.assessment import load_inputs
+    from frp_assess.app.records import limit_threads
+    from frp_assess.output_set import FolderLock, check_out_dir  # not needed when unchanged
 
     inputs = load_inputs(path)  # InputError -> one line, exit 2, nothing written
     if args.jobs is not None and args.jobs < 1:
@@ -229,6 +230,7 @@ def run(args: argparse.Namespace) -> int:
     if args.verify:
         inputs = replace(inputs, verify=True)
     out_dir = check_out_dir(out)
+    limit_threads(args.jobs)
     with FolderLock(out_dir):  # a second run into the same folder refuses here, exit 2
         return _run(args, inputs, out_dir)
 

@@ -17,10 +17,31 @@ Chopra, *Dynamics of Structures*, Table 5.2.1 ("interpolation of excitation").
 from __future__ import annotations
 
 import math
+import os
 
 import numpy as np
-from numba import get_num_threads, njit, prange
+from numba import config, get_num_threads, njit, prange, set_num_threads
 from numpy.typing import ArrayLike, NDArray
+
+# The parallel loop below (the only one in the product) runs on numba's OpenMP threading
+# layer, whose idle threads spin-wait by default: between two spectra (the SIMQKE iterations
+# compute ~100 of them, with FFTs in between on the calling thread) the idle thread burns a
+# core, taken from the IDA workers of `run --jobs N` / `study --jobs N` and from any other
+# process.  Measured on 2 loaded cores (benchmarks/bench_run.py): 7 artificial records of the
+# bundled example cost 1.3-1.9 CPU-s spinning, 0.5-0.6 CPU-s passive, with the same numbers.
+# libgomp reads the variable once, when numba launches its threads (at the first parallel
+# call, never at import), so setting it here is early enough.  A value the user set is kept.
+os.environ.setdefault("OMP_WAIT_POLICY", "passive")
+
+
+def limit_threads(jobs: int | None) -> None:
+    """At most ``jobs`` threads for the parallel loop below when called from this thread
+    (``--jobs N`` of the command line: N cores in all, the SIMQKE records included); None
+    leaves numba's default (all cores).  numba's setting is per calling thread: the
+    commands make their records on the main thread.  The spectra do not depend on it."""
+    if jobs is not None:
+        most = int(config.NUMBA_NUM_THREADS)  # type: ignore[attr-defined]  # set at runtime
+        set_num_threads(max(1, min(jobs, most)))
 
 
 @njit(cache=True, nogil=True)

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import dataclasses
 import functools
+import itertools
 import json
 import types
 import typing
@@ -112,6 +113,9 @@ def _convert(tp: Any, value: Any, file: str | None, key: str) -> Any:
                 _convert(a, v, file, f"{key}[{i}]")
                 for i, (a, v) in enumerate(zip(args, value, strict=True))
             )
+        fast = _plain_items(args[0], value)
+        if fast is not None:
+            return tuple(fast) if origin is tuple else fast
         items = [_convert(args[0], v, file, f"{key}[{i}]") for i, v in enumerate(value)]
         return tuple(items) if origin is tuple else items
     if origin is dict:
@@ -119,6 +123,39 @@ def _convert(tp: Any, value: Any, file: str | None, key: str) -> Any:
             raise _fail(file, key, f"expected an object, found {_kind(value)}")
         return {k: _convert(args[1], v, file, _join(key, k)) for k, v in value.items()}
     return _scalar(tp, value, file, key)
+
+
+#: The exact JSON types each scalar annotation accepts (bool is not a number here)
+_EXACT: dict[Any, tuple[type, ...]] = {bool: (bool,), int: (int,), float: (int, float), str: (str,)}
+
+
+@functools.cache
+def _plain_types(tp: Any) -> frozenset[Any] | None:
+    """For a scalar annotation, the exact types it accepts; for a fixed tuple of scalars
+    (``tuple[float, bool, float]``), every accepted tuple of the items' exact types; else
+    None."""
+    if tp in _EXACT:
+        return frozenset(_EXACT[tp])
+    args = typing.get_args(tp)
+    if typing.get_origin(tp) is tuple and args and all(a in _EXACT for a in args):
+        return frozenset(itertools.product(*(_EXACT[a] for a in args)))
+    return None
+
+
+def _plain_items(tp: Any, value: list[Any]) -> list[Any] | None:
+    """The items of ``value`` converted to ``tp`` when ``tp`` is a scalar or a fixed tuple of
+    scalars and every item fits (the bulk of results.json: the IDA curves), checked by their
+    exact types without the generic per-item walk; None otherwise (then the generic walk
+    converts, or words the error with its key path).  The same values as the generic walk."""
+    allowed = _plain_types(tp)
+    if allowed is None:
+        return None
+    if typing.get_origin(tp) is not tuple:
+        return list(value) if set(map(type, value)) <= allowed else None
+    items = [tuple(v) for v in value if type(v) is list]
+    if len(items) != len(value) or not {tuple(map(type, v)) for v in items} <= allowed:
+        return None
+    return items
 
 
 def _dataclass(cls: Any, value: Any, file: str | None, key: str) -> Any:
