@@ -68,6 +68,44 @@ def test_a_wrong_value_names_its_key(text: str, key: str, words: str) -> None:
     assert str(err.value) == f"results.json: {key}: {words}"
 
 
+@pytest.mark.parametrize(
+    ("curve", "key", "words"),
+    [
+        ("[[1.0, false, 0.5], [2.0, 1, 0.5]]", "s.curve[1][1]", "expected bool, found a number"),
+        (
+            "[[1.0, false, 0.5], [true, false, 0.5]]",
+            "s.curve[1][0]",
+            "expected float, found true/false",
+        ),
+        ('[[1.0, false, 0.5], [2.0, false, "x"]]', "s.curve[1][2]", "expected float, found text"),
+        ("[[1.0, false, 0.5], [2.0, false]]", "s.curve[1]", "expected 3 items, found 2"),
+        ("[[1.0, false, 0.5], 2.0]", "s.curve[1]", "expected an array, found a number"),
+    ],
+)
+def test_a_wrong_item_of_a_long_array_names_its_index(curve: str, key: str, words: str) -> None:
+    """The IDA curves (arrays of fixed scalar tuples) are read by their items' types at once;
+    an item that does not fit is still named by its index, in the words of the generic
+    reader (the expected messages are the ones that reader wrote before the shortcut)."""
+    text = f'{{"name": "s", "points": [], "curve": {curve}, "tags": {{}}, "extra": {{}}}}'
+    with pytest.raises(InputError) as err:
+        from_data(Shape, json.loads(text), file="results.json", key="s")
+    assert str(err.value) == f"results.json: {key}: {words}"
+
+
+def test_long_arrays_of_scalars_keep_their_values_and_types() -> None:
+    """Ints stay ints in float arrays (the file is rewritten byte for byte), bools are not
+    numbers, tuples come back as tuples."""
+    text = (
+        '{"name": "s", "points": [], "curve": [[1, true, 2.5], [0.5, false, 3]], '
+        '"tags": {}, "extra": {}}'
+    )
+    shape = from_data(Shape, json.loads(text))
+    assert shape.curve == ((1, True, 2.5), (0.5, False, 3))
+    assert [type(v) for v in shape.curve[0]] == [int, bool, float]
+    assert isinstance(shape.curve, tuple) and isinstance(shape.curve[1], tuple)
+    assert to_data(shape)["curve"] == json.loads(text)["curve"]
+
+
 def test_another_schema_version_is_refused_in_one_line() -> None:
     text = json.dumps({"schema_version": SCHEMA_VERSION + 1})
     with pytest.raises(InputError) as err:
