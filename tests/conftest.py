@@ -71,7 +71,29 @@ def pytest_configure(config: pytest.Config) -> None:
         return
     if not config.getoption("numprocesses", None) or config.getoption("collectonly"):
         return
-    warm_numba_cache()
+    if not numba_cache_is_warm():
+        warm_numba_cache()
+
+
+PACKAGE = Path(__file__).resolve().parents[1] / "frp_assess"
+
+
+def numba_cache_is_warm(package: Path = PACKAGE) -> bool:
+    """Whether every module with cached kernels (``cache=True``) has a numba index in its
+    ``__pycache__`` written after the module's last change: then the workers load the kernels
+    from the cache and warming it (a whole project run in the controller, before any worker
+    starts: ~4 CPU-s, all of it added to the wall time) is skipped.  An edited module, a new
+    one or a fresh checkout has no such index: the cache is warmed.  (Numba itself decides
+    whether an index is stale by the same module's stamp: a kernel inlined from another
+    file is not tracked either way; delete the ``*.nbi``/``*.nbc`` files after such an
+    edit.)"""
+    for source in sorted(package.rglob("*.py")):
+        if "cache=True" not in source.read_text(encoding="utf-8"):
+            continue
+        indexes = list((source.parent / "__pycache__").glob(f"{source.stem}.*.nbi"))
+        if not indexes or min(i.stat().st_mtime for i in indexes) < source.stat().st_mtime:
+            return False
+    return True
 
 
 def warm_numba_cache() -> None:
