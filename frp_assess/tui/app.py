@@ -15,7 +15,7 @@ from typing import Any, ClassVar
 
 from rich.text import Text
 from textual import on
-from textual.app import App, ComposeResult, SystemCommand
+from textual.app import ComposeResult, SystemCommand
 from textual.binding import Binding, BindingType
 from textual.screen import Screen
 from textual.widget import Widget
@@ -44,6 +44,7 @@ from frp_assess.tui.jobs import export_job, previous_results_job, run_assessment
 from frp_assess.tui.keybar import KeyBar
 from frp_assess.tui.main_tabs import MainTabs
 from frp_assess.tui.materials_pane import MaterialsPane
+from frp_assess.tui.pane_lookup import PaneLookupApp
 from frp_assess.tui.project_form import ProjectForm
 from frp_assess.tui.ranking_table import RankingTable
 from frp_assess.tui.records_pane import RecordsPane
@@ -56,7 +57,7 @@ from frp_assess.tui.wall_pane import WallPane
 from frp_assess.tui.worker_messages import ExportDone, PreviousLoaded, RunDone, RunProgress
 
 
-class FrpAssessApp(App[None]):
+class FrpAssessApp(PaneLookupApp):
     """Edit, run and read an FRP retrofit assessment."""
 
     CSS_PATH = "app.tcss"
@@ -208,9 +209,10 @@ class FrpAssessApp(App[None]):
 
     @on(PreviousLoaded)
     def _previous_loaded(self, message: PreviousLoaded) -> None:
-        if self.quitting or self.running or self.outcome is not None or self.path is None:
+        if self.running or self.outcome is not None or self.path is None:
             return
-        panel = self.query_one(RunPanel)
+        if (panel := self.pane(RunPanel)) is None:
+            return
         out_dir = default_out_dir(self.path)
         o = message.outcome
         if o is None:
@@ -240,16 +242,18 @@ class FrpAssessApp(App[None]):
     @on(Select.Changed)
     def _field_changed(self, event: Input.Changed | Select.Changed) -> None:
         row = next((a for a in event.control.ancestors if isinstance(a, FieldRow)), None)
-        if row is not None:
+        if row is not None and not self.closing:
             self.form.choose_variant(row)
             self.revalidate()
 
     @on(ItemEditor.Edited)
     def _items_edited(self, event: ItemEditor.Edited) -> None:
-        self.revalidate()
+        if not self.closing:
+            self.revalidate()
 
     def on_descendant_focus(self, event: Any) -> None:
-        self.query_one(HelpLine).show_for(event.widget)
+        if (line := self.pane(HelpLine)) is not None:
+            line.show_for(event.widget)
 
     # ------------------------------------------------------------------------ tabs
     def action_tab(self, index: int) -> None:
@@ -265,12 +269,13 @@ class FrpAssessApp(App[None]):
 
     @on(TabbedContent.TabActivated, "#tabs")
     def _tab_activated(self, event: TabbedContent.TabActivated) -> None:
-        if event.pane.id == "tab-history":
-            self.query_one(HistoryPane).refresh_if_needed()
+        if event.pane.id == "tab-history" and (history := self.pane(HistoryPane)) is not None:
+            history.refresh_if_needed()
 
     @on(RankingTable.CaseChosen)
     def _case_chosen(self, message: RankingTable.CaseChosen) -> None:
-        self.query_one(HistoryPane).set_case(message.index)
+        if (history := self.pane(HistoryPane)) is not None:
+            history.set_case(message.index)
 
     def action_help(self) -> None:
         if not isinstance(self.screen, HelpScreen):
@@ -376,16 +381,15 @@ class FrpAssessApp(App[None]):
 
     @on(RunProgress)
     def _run_progress(self, message: RunProgress) -> None:
-        if not self.quitting:
-            self.query_one(RunPanel).show_event(message.event)
+        if (panel := self.pane(RunPanel)) is not None:
+            panel.show_event(message.event)
 
     @on(RunDone)
     def _run_done(self, message: RunDone) -> None:
         self.running = False
         self.cancel_event = None
-        if self.quitting:
+        if (panel := self.pane(RunPanel)) is None:
             return
-        panel = self.query_one(RunPanel)
         if message.status == "done" and message.outcome is not None:
             o = message.outcome
             panel.finish(
@@ -446,9 +450,8 @@ class FrpAssessApp(App[None]):
 
     @on(ExportDone)
     def _export_done(self, message: ExportDone) -> None:
-        if self.quitting:
+        if (panel := self.pane(RunPanel)) is None:
             return
-        panel = self.query_one(RunPanel)
         if message.error:
             self.notify(message.error, title="Export failed", severity="error")
             panel.log_line(f"export failed: {message.error}", "red")

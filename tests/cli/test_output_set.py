@@ -14,7 +14,7 @@ import pytest
 
 from frp_assess.cli import main
 from frp_assess.output_set import STAGING_PREFIX
-from tests.cli.outputs_helpers import ROOT, cli_command, run_cli, tiny_project, tree
+from tests.cli.outputs_helpers import ROOT, cli_command, tiny_project, tree
 
 
 def assert_valid_set(out: Path, *, pdf: bool) -> dict:
@@ -33,10 +33,14 @@ def assert_valid_set(out: Path, *, pdf: bool) -> dict:
 
 
 @pytest.mark.slow
-def test_kill_9_mid_run_then_rerun_gives_the_same_results(tmp_path: Path) -> None:
+def test_kill_9_mid_run_then_rerun_gives_the_same_results(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Only the killed run is a process of its own (SIGKILL needs one); the reference run
+    and the rerun call the CLI's main() in the test's process (the same command, exit code,
+    output and files, without two more interpreter start-ups)."""
     project = tiny_project(tmp_path)
-    reference = run_cli("run", str(project), "--out", str(tmp_path / "ref"), "--jobs", "1")
-    assert reference.returncode == 0, reference.stderr
+    assert main(["run", str(project), "--out", str(tmp_path / "ref"), "--jobs", "1"]) == 0
     out = tmp_path / "killed"
     env = dict(os.environ, PYTHONPATH=str(ROOT))
     proc = subprocess.Popen(
@@ -55,9 +59,9 @@ def test_kill_9_mid_run_then_rerun_gives_the_same_results(tmp_path: Path) -> Non
         proc.wait()
     assert proc.returncode == -signal.SIGKILL, "the run finished before it could be killed"
     assert not (out / "results.json").exists()
-    rerun = run_cli("run", str(project), "--out", str(out), "--jobs", "1")
-    assert rerun.returncode == 0, rerun.stderr
-    assert "reused from the cache" in rerun.stdout
+    capsys.readouterr()
+    assert main(["run", str(project), "--out", str(out), "--jobs", "1"]) == 0
+    assert "reused from the cache" in capsys.readouterr().out
     assert (out / "results.json").read_bytes() == (tmp_path / "ref" / "results.json").read_bytes()
     for report in ("report.pdf", "report.docx"):
         assert (out / report).read_bytes() == (tmp_path / "ref" / report).read_bytes()

@@ -31,12 +31,11 @@ def _first_option(r: dict[str, Any]) -> dict[str, Any]:
     return min((c for c in r["cases"] if c["rank"] is not None), key=lambda c: c["rank"])
 
 
-@pytest.mark.parametrize("text", HOSTILE)
-@pytest.mark.parametrize("field", ["currency", "name", "material", "record", "notes"])
-def test_markup_in_any_user_field_prints_literally(
-    results: dict[str, Any], tmp_path: Path, text: str, field: str
-) -> None:
-    r = copy.deepcopy(results)
+FIELDS = ["currency", "name", "material", "record", "notes"]
+
+
+def _set_field(r: dict[str, Any], field: str, text: str) -> None:
+    """Put ``text`` into the user field ``field`` of the results ``r`` (edited in place)."""
     if field == "currency":
         r["costs"]["currency"] = text
     elif field == "name":
@@ -53,12 +52,28 @@ def test_markup_in_any_user_field_prints_literally(
             for rec in c["records"]:
                 if rec["record"] == old:
                     rec["record"] = text
+
+
+@pytest.mark.parametrize("text", HOSTILE)
+def test_markup_in_any_user_field_prints_literally(
+    results: dict[str, Any], tmp_path: Path, text: str
+) -> None:
+    """Every user field holds the hostile text at once, each with its own number after it
+    (``<b>EUR0`` in the currency, ``<b>EUR1`` in the name...): one PDF per text instead of
+    one per (field, text), the same checks: no image, link or annotation object in the PDF,
+    and each field's own text shown literally in the story."""
+    r = copy.deepcopy(results)
+    values = {field: f"{text}{i}" for i, field in enumerate(FIELDS)}
+    for field, value in values.items():
+        _set_field(r, field, value)
     out = tmp_path / "report.pdf"
     build_report(typed(r), out)
     data = out.read_bytes()
     assert data.startswith(b"%PDF")
     assert b"/XObject" not in data and b"/URI" not in data and b"/Annot" not in data
-    assert text in story_text(build_story(typed(r)))
+    shown = story_text(build_story(typed(r)))
+    for field, value in values.items():
+        assert value in shown, field
 
 
 def test_currency_in_headers_is_text(results: dict[str, Any]) -> None:

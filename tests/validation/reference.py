@@ -4,6 +4,11 @@ scipy's DOP853 (8th order, rtol 1e-11) integrates Eq. 10 one sample interval at 
 (where ü_g is linear, hence smooth), with scipy's own event location for impacts, ruptures
 and collapse, and the exact linear uplift instant from rest.  Only the model is shared with
 the package (no code): the equation, the jumps and the collapse rule are written out again.
+
+``tail_from`` (the free vibration appended to a record for the `overturning` rule) stops the
+integration once the wall's energy proves it can never again reach its peak so far, α, or
+the bars' rupture rotation (see :func:`settled`): what is left of the record can then change
+neither the peak nor the collapse flag, only the impact count.
 """
 
 from __future__ import annotations
@@ -50,8 +55,36 @@ class RefSystem:
             self.e_vel = math.sqrt(r1 if self.one_sided else r2)
 
 
-def reference_run(sys: RefSystem, acc: np.ndarray, dt: float, scale: float) -> dict:
-    """Peak |θ|, collapse flag and impact count under scale·acc [m/s²]."""
+def settled(
+    sys: RefSystem, theta: float, omega: float, k_s: float, peak: float, bars: bool
+) -> bool:
+    """In free vibration (ü_g = 0): the wall can never again reach |θ| = min(peak, α, θ_max).
+
+    Energy per unit rotational inertia, from Eq. 10 with ü_g = 0 (θ'' = −p²[sin(α − |θ|) +
+    k sin|θ|]·sign θ): E = ω²/2 + p²[cos(α − |θ|) − cos α + k(1 − cos θ)], zero at rest.  Between
+    impacts E is conserved; an impact (θ = 0) keeps or lowers it; the bars' potential
+    p²k(1 − cos θ) ≥ 0 on either side.  So |θ| stays below θ_b with V₀(θ_b) = E for
+    V₀(θ) = p²[cos(α − θ) − cos α], increasing on [0, α]: if E < V₀(θ_lim), |θ| < θ_lim for ever
+    (no new peak, no fall, no rupture, hence no energy transferred by one).
+    """
+    a, p2 = sys.alpha, sys.p2
+    lim = min(peak, a, sys.theta_max if bars else math.inf)
+    energy = 0.5 * omega**2 + p2 * (
+        math.cos(a - abs(theta)) - math.cos(a) + k_s * (1.0 - math.cos(theta))
+    )
+    return energy < p2 * (math.cos(a - lim) - math.cos(a))
+
+
+def reference_run(
+    sys: RefSystem, acc: np.ndarray, dt: float, scale: float, tail_from: int | None = None
+) -> dict:
+    """Peak |θ|, collapse flag and impact count under scale·acc [m/s²].
+
+    ``tail_from``: the index from which acc is all zero (free vibration); the run ends there as
+    soon as :func:`settled` holds (the impacts are then counted only up to that instant).
+    """
+    if tail_from is not None and np.any(np.asarray(acc[tail_from:]) != 0.0):
+        raise ValueError("the record is not zero from tail_from on")
     a = sys.alpha
     shared = sys.position == "centred"
     intact = {1: sys.K > 0, -1: sys.K > 0}
@@ -60,6 +93,10 @@ def reference_run(sys: RefSystem, acc: np.ndarray, dt: float, scale: float) -> d
     theta, omega, s, rest = 0.0, 0.0, 1, True
     peak, impacts = 0.0, 0
     for i in range(len(u) - 1):
+        if tail_from is not None and i >= tail_from:
+            k_now = sys.K if intact[s] else 0.0
+            if rest or settled(sys, theta, omega, k_now, peak, any(intact.values())):
+                return {"peak": peak, "collapsed": False, "impacts": impacts}
         t0, t1 = i * dt, (i + 1) * dt
         ua, ub = u[i], u[i + 1]
 
