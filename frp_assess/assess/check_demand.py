@@ -11,7 +11,7 @@ Units: ground accelerations in g (a_g·S); records in m/s²; displacements in m;
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Protocol
 
@@ -85,35 +85,48 @@ def floor_ratio(spectrum: ElasticSpectrum, building: Building | None) -> float:
     return a_z / spectrum.pga_g
 
 
+@dataclass(frozen=True)
+class _CodeDisplacementSpectrum:
+    """Sd(T, ξ) [m] of a vectorised spectrum function, one period or many
+    (:class:`~frp_assess.assess.kinematic_nonlinear.SampledSpectrum`)."""
+
+    values_at: Callable[[NDArray[np.float64], float], NDArray[np.float64]]
+
+    def __call__(self, period: float, damping: float) -> float:
+        return float(self.values_at(np.array([period], dtype=float), damping)[0])
+
+    def at(self, periods: NDArray[np.float64], damping: float) -> NDArray[np.float64]:
+        return self.values_at(np.asarray(periods, dtype=float), damping)
+
+
 def displacement_spectrum(
     spectrum: ElasticSpectrum, building: Building | None
 ) -> DisplacementSpectrum:
     """Sd(T [s], ξ [-]) [m] at the design intensity: the ground's S_De (NTC 2018 eq. 3.2.12)
-    or, above ground, the floor's (Circolare 2019 eq. C8.7.1.12)."""
+    or, above ground, the floor's (Circolare 2019 eq. C8.7.1.12); elementwise, so one period
+    or many give the same values."""
     ground = ground_spectrum_function(spectrum)
     if building is None or building.wall_base == 0.0:
 
-        def at_ground(period: float, damping: float) -> float:
-            return float(ground_displacement_spectrum([period], ground, damping)[0])
+        def at_ground(periods: NDArray[np.float64], damping: float) -> NDArray[np.float64]:
+            return ground_displacement_spectrum(periods, ground, damping)
 
-        return at_ground
+        return _CodeDisplacementSpectrum(at_ground)
     t1 = building_period(building)
     z_over_h = building.wall_base / building.height
 
-    def at_floor(period: float, damping: float) -> float:
-        return float(
-            floor_displacement_spectrum(
-                [period],
-                ground,
-                period=t1,
-                storeys=building.storeys,
-                z_over_h=z_over_h,
-                building_damping=building.damping,
-                damping=damping,
-            )[0]
+    def at_floor(periods: NDArray[np.float64], damping: float) -> NDArray[np.float64]:
+        return floor_displacement_spectrum(
+            periods,
+            ground,
+            period=t1,
+            storeys=building.storeys,
+            z_over_h=z_over_h,
+            building_damping=building.damping,
+            damping=damping,
         )
 
-    return at_floor
+    return _CodeDisplacementSpectrum(at_floor)
 
 
 def base_motions(

@@ -19,9 +19,10 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Literal
+from typing import Literal, Protocol, runtime_checkable
 
 import numpy as np
+from numpy.typing import NDArray
 from scipy.optimize import minimize_scalar
 
 from frp_assess.assess.kinematic_capacity import CapacityCurve as CapacityCurve  # re-export
@@ -45,6 +46,18 @@ PERIOD_FACTOR_SLC = 1.56
 #: An elastic displacement spectrum: Sd(T [s], ξ [-]) -> spectral displacement [m].  Both
 #: the ground's S_De(T) and the floor's S_eZ·T²/4π² (frp_assess.motions.floor) fit.
 DisplacementSpectrum = Callable[[float, float], float]
+
+
+@runtime_checkable
+class SampledSpectrum(Protocol):
+    """A :data:`DisplacementSpectrum` that also gives Sd at many periods in one call, with
+    the same values (the code spectra of :mod:`frp_assess.assess.check_demand`)."""
+
+    def __call__(self, period: float, damping: float) -> float: ...
+
+    def at(self, periods: NDArray[np.float64], damping: float) -> NDArray[np.float64]:
+        """Sd [m] at each of ``periods`` [s], damping ξ [-]."""
+        ...
 
 
 # --- the limit states (Circolare 2019 §C8.7.1.2.1.6 and .8) ------------------------------------
@@ -98,7 +111,10 @@ def displacement_demand(
     if not (0.0 <= t0 <= period and math.isfinite(period)):
         raise ValueError(f"need 0 <= T0 <= T_s, got T0 = {t0!r}, T_s = {period!r}")
     periods = np.linspace(t0, period, max(samples, 3))
-    values = [float(sd(float(T), damping)) for T in periods]
+    if isinstance(sd, SampledSpectrum):  # the same values, one call (the checks' hot spot)
+        values = [float(v) for v in sd.at(periods, damping)]
+    else:
+        values = [float(sd(float(T), damping)) for T in periods]
     i = int(np.argmax(values))
     lo, hi = periods[max(i - 1, 0)], periods[min(i + 1, periods.size - 1)]
     if hi <= lo:
