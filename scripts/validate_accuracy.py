@@ -21,10 +21,12 @@ with the record multiplied by 1 ± 1e-6; a changed fate or a rotation history th
 more than 1e-2·α (the perturbation amplified 1e4 times) marks the multiplier
 ill-conditioned.  A curve peak is likewise tested only where D and a reference disagree by
 more than 0.1 %: it is then rerun at the tight tolerance with the record multiplied by
-1 ± 1e-6, and a change of more than 0.1 % marks it ill-conditioned.  The peak at the survivor
+1 ± 1e-6, 1 ± 2e-6 and 1 ± 4e-6, and a change of more than 0.1 % per 1e-6 marks it
+ill-conditioned (a small-rocking tail can send the peak to another branch at a few 1e-6 of
+the record while ± 1e-6 alone leaves it).  The peak at the survivor
 multiplier is reported but not gated (and left out of the curve): it is by construction the
 time history closest to the collapse boundary.  The curve peaks are reported and their misses
-listed, not yet gated (docs/model.md §4.5: four known misses).  The ill-conditioned cases
+listed, not yet gated (docs/model.md §4.5: two known misses).  The ill-conditioned cases
 are counted and listed, not hidden.  Exit code 1 if any gated,
 well-conditioned comparison misses its bar.
 """
@@ -50,6 +52,10 @@ C_BAR = 2e-3  #: relative agreement of collapse multipliers
 PEAK_BAR = 1e-3  #: relative agreement of peak rotations
 RK4_STEP = 1e-4  #: [s] (0.25 ms is not converged on every corpus record)
 PERTURBATION = 1e-6  #: relative change of the record that defines ill-conditioning
+#: changes of the record that test a curve peak's conditioning: its change per 1e-6 of them
+#: (a peak that a change of a few 1e-6 sends to another branch is not determined by the data
+#: either, and ± 1e-6 alone can miss the branch: docs/model.md §4.5)
+CURVE_PERTURBATIONS = (1e-6, -1e-6, 2e-6, -2e-6, 4e-6, -4e-6)
 SETTINGS = IdaSettings(tolerance=1e-3)
 
 
@@ -82,7 +88,7 @@ class Row:
     def gated(self) -> bool:
         """The peak at the survivor multiplier is reported, not gated: by construction that
         time history is the closest to the collapse boundary the search found.  The other
-        curve peaks are reported, not yet gated: four well-conditioned ones of the whole
+        curve peaks are reported, not yet gated: two well-conditioned ones of the whole
         corpus miss the bar at the default (docs/model.md §4.5)."""
         return self.quantity not in ("peak@survivor", "peak@curve")
 
@@ -129,8 +135,9 @@ def curve_rows(
 ) -> list[Row]:
     """One row per multiplier at which D, T and R all ran and none collapsed (the survivor
     multiplier excepted): the peaks of the three curves compared, and where D misses the bar
-    against T or R, the peak's change under the record multiplied by 1 ± 1e-6 at the tight
-    tolerance (its conditioning; 0 where D agrees, as for C)."""
+    against T or R, the peak's largest change per 1e-6 under the record multiplied by 1 + ε,
+    ε in CURVE_PERTURBATIONS, at the tight tolerance (its conditioning; 0 where D agrees, as
+    for C)."""
     peaks = {
         k: {p.multiplier: p.peak_ratio for p in r.curve if not p.collapsed} for k, r in idas.items()
     }
@@ -143,10 +150,10 @@ def curve_rows(
         vs_t, vs_r = rel(d, t), rel(d, r)
         conditioning = 0.0
         if max(vs_t, vs_r) > PEAK_BAR:
-            for sign in (1.0, -1.0):
-                pert = tight.run(rec.acc * (1.0 + sign * PERTURBATION), rec.dt, c)
+            for eps in CURVE_PERTURBATIONS:
+                pert = tight.run(rec.acc * (1.0 + eps), rec.dt, c)
                 moved = 1.0 if pert.collapsed else rel(pert.max_rotation_ratio, t)
-                conditioning = max(conditioning, moved)
+                conditioning = max(conditioning, moved * PERTURBATION / abs(eps))
         rows.append(Row("peak@curve", name, f"{rec.name} C={c:.4g}", vs_t, vs_r, conditioning))
     return rows
 
