@@ -142,7 +142,9 @@ def curve_rows(
         k: {p.multiplier: p.peak_ratio for p in r.curve if not p.collapsed} for k, r in idas.items()
     }
     common = set(peaks["D"]) & set(peaks["T"]) & set(peaks["R"])
-    common.discard(idas["D"].survivor_multiplier)  # type: ignore[arg-type]
+    survivor = idas["D"].survivor_multiplier
+    if survivor is not None:
+        common.discard(survivor)
     tight = model.with_options(tolerance=tol / 100)
     rows = []
     for c in sorted(common):
