@@ -12,12 +12,18 @@ of the validation script.
 from __future__ import annotations
 
 import math
+from functools import cache
+from pathlib import Path
 
 import numpy as np
 import pytest
 
+from frp_assess.app.assessment import prepare_run
+from frp_assess.assess.floor_input import floor_record
+from frp_assess.config.loader import load_project
 from frp_assess.dynamics import IdaSettings, RockingModel, Wall, ida
 from frp_assess.dynamics.rocking import DEFAULT_TOLERANCE
+from frp_assess.motions import Record
 from tests.conftest import synthetic_record
 from tests.validation.configs import CASES, model_for
 
@@ -88,3 +94,93 @@ def test_impact_sequence_then_rocking_agrees_with_rk4() -> None:
     b = base.with_options(**REFERENCES["RK4 0.1 ms"]).run(acc, DT)
     assert a.impacts > 100 and not a.collapsed and a.max_rotation > 0.3 * wall.alpha
     assert abs(a.max_rotation - b.max_rotation) <= 1e-6 * b.max_rotation
+
+
+STIFF_PROJECT = (
+    Path(__file__).resolve().parents[1] / "golden" / "projects" / "building-crushing.yaml"
+)
+STIFF_CASE = 2  #: its CFRP external 1 ‰ option: K ≈ 240, crushing pivot, floor motion at Z = 9 m
+PEAK_BAR = 1e-3  #: relative agreement of peak rotations (docs/model.md §4.5)
+SMALL_ROCKING = 0.02  #: peak |θ|/α_x below which a curve point is "small rocking" [-]
+
+
+@cache
+def stiff_wall() -> tuple[RockingModel, tuple[Record, ...], IdaSettings]:
+    """The very stiff wall of docs/model.md §4.5: the golden project building-crushing's CFRP
+    external option, as `run` builds it (its records as the floor motion at the wall's base),
+    at the default tolerance, and the project's IDA settings."""
+    loaded = load_project(STIFF_PROJECT)
+    prepared = prepare_run(loaded.project, loaded.base_dir, STIFF_PROJECT.name)
+    model = prepared.inputs.case_models()[STIFF_CASE].with_options(tolerance=DEFAULT_TOLERANCE)
+    recs = tuple(floor_record(r, prepared.inputs.building) for r in prepared.seismic.records)
+    return model, recs, prepared.inputs.ida
+
+
+def rel(a: float, b: float) -> float:
+    return abs(a - b) / max(abs(a), abs(b))
+
+
+def small_rocking_points(model: RockingModel, rec: Record, settings: IdaSettings) -> list[float]:
+    """The multipliers of the IDA curve (as `run` searches it) where the wall rocks without
+    falling, below SMALL_ROCKING·α_x."""
+    curve = ida(model, rec.acc, rec.dt, settings).curve
+    return [p.multiplier for p in curve if not p.collapsed and 0 < p.peak_ratio < SMALL_ROCKING]
+
+
+def against_tighter(model: RockingModel, rec: Record, c: float) -> tuple[float, float]:
+    """(how far the peak at C is from a 100× tighter tolerance and from RK4 at 0.1 ms, the
+    larger, how far a change of the record by ± 1e-6 moves it at the tight tolerance),
+    relative; the second only where the first misses the peak bar (0 otherwise), as
+    scripts/validate_accuracy.py judges the curve."""
+    tight = model.with_options(tolerance=model.options.tolerance / 100)
+    ref = tight.run(rec.acc, rec.dt, c).max_rotation
+    rk4 = model.with_options(**REFERENCES["RK4 0.1 ms"]).run(rec.acc, rec.dt, c).max_rotation
+    peak = model.run(rec.acc, rec.dt, c).max_rotation
+    off = max(rel(peak, ref), rel(peak, rk4))
+    if off <= PEAK_BAR:
+        return off, 0.0
+    return off, max(
+        rel(tight.run(rec.acc * (1.0 + s * 1e-6), rec.dt, c).max_rotation, ref) for s in (1, -1)
+    )
+
+
+@cache
+def stiff_points(record: int) -> tuple[tuple[float, float, float], ...]:
+    """(C, :func:`against_tighter`) at the small-rocking points of the stiff wall under its
+    record ``record`` (0: art-01, 1: art-02)."""
+    model, recs, settings = stiff_wall()
+    rec = recs[record]
+    return tuple(
+        (c, *against_tighter(model, rec, c)) for c in small_rocking_points(model, rec, settings)
+    )
+
+
+@pytest.mark.parametrize("record", [0, 1])
+def test_stiff_wall_small_rocking_converges(record: int) -> None:
+    """A number depends on the wall and the record, not on the tolerance: the small rocking
+    (peaks of 0.1–2 % of α_x, 600–1400 impacts in 14 s) of a very stiff wall (K ≈ 240) is at
+    the default within the peak bar of docs/model.md §4.5 (0.1 %) of a 100× tighter tolerance
+    and of RK4 at h = 0.1 ms at every IDA-curve point below 2 % of α_x where the peak is
+    well-conditioned.  Where they disagree, a change of the record by one part in a million
+    (far below the precision of any accelerogram) moves the peak by more than the bar too:
+    the number is not determined by the data there (the "ill-conditioned" numbers of §4.5),
+    and no tolerance changes that.  At least three points per record agree, so the
+    comparison is not vacuous.  (These well-conditioned peaks are easy: they agree within
+    6e-4 even at a tolerance of 1e-3 or one step per sample; the test guards the statement,
+    the error control's own tests are above.)"""
+    agree = 0
+    for c, off, data in stiff_points(record):
+        assert off <= PEAK_BAR or data > PEAK_BAR, (c, off, data)
+        agree += off <= PEAK_BAR
+    assert agree >= 3
+
+
+def test_stiff_wall_known_limit_is_ill_conditioned() -> None:
+    """Why no tolerance fixes the "known limit" first reported in docs/model.md §4.5 (the
+    same wall under art-01, where the default and a 100× tighter tolerance disagreed by up to
+    35 % at small-rocking points): there the peak is ill-conditioned, not under-resolved.  A
+    change of the record by one part in a million moves it by more than 10 %, as much as the
+    tolerance does: the wall rocks at ~1e-3·α_x about an equilibrium just off θ = 0, with an
+    impact every half cycle, and the low-velocity (grazing) impacts amplify any difference."""
+    worst = max(stiff_points(0), key=lambda point: point[1])
+    assert worst[1] > 0.1 and worst[2] > 0.1, worst
