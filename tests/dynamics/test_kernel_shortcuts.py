@@ -26,20 +26,53 @@ from frp_assess.dynamics.kernel.params import (
     STEP_SAFETY,
     STEP_SHRINK_MIN,
 )
-from frp_assess.dynamics.kernel.step_control import grow_threshold, quiet, step_size
+from frp_assess.dynamics.kernel.step_control import (
+    SLIVER,
+    grow_threshold,
+    quiet,
+    step_length,
+    step_size,
+)
 from frp_assess.dynamics.kernel.steppers import acceleration, step
 
 
-@pytest.mark.parametrize("exponent", [-1.0 / 5.0, -1.0 / 3.0])
-def test_step_factor_without_the_power_is_the_same(exponent: float) -> None:
-    """h_new = h·min(5, max(0.2, 0.9·err^e)) for every accepted err, the power skipped or not."""
+@pytest.mark.parametrize("order", [5, 3])
+def test_step_factor_without_the_power_is_the_same(order: int) -> None:
+    """h_new = h·min(5, max(0.2, 0.9·err^e)) for every accepted err, the power skipped or not
+    (no step long enough to reach the next sample: h_enough out of reach)."""
+    exponent = -1.0 / order
     threshold = grow_threshold(exponent)
     errs = np.concatenate([np.geomspace(1e-12, 1.0, 4001), [threshold, threshold * 1.0000001]])
     for err in errs:
-        accepted, h = step_size(float(err), 1.0, 1.0, exponent, threshold)
+        accepted, h = step_size(float(err), 1.0, 1.0, exponent, threshold, math.inf, order)
         expected = min(STEP_GROWTH_MAX, max(STEP_SHRINK_MIN, STEP_SAFETY * err**exponent))
         assert accepted
         assert h == expected
+
+
+@pytest.mark.parametrize("order", [5, 3])
+def test_step_long_enough_for_the_sample_takes_the_same_next_step(order: int) -> None:
+    """With the power skipped once the proposal surely reaches h_enough, the next step
+    (:func:`step_length` for every rest ≤ dt) is the one the exact proposal gives; and the
+    shortcut is not vacuous: it is taken for many of the errors."""
+    exponent = -1.0 / order
+    threshold = grow_threshold(exponent)
+    dt = 0.005
+    h_enough = (1.0 - SLIVER) * dt
+    rng = np.random.default_rng(5)
+    skipped = 0
+    for _ in range(4000):
+        hh = dt * float(rng.uniform(0.05, 1.0))
+        err = float(10.0 ** rng.uniform(-5.0, 0.0))
+        accepted, h = step_size(err, hh, hh, exponent, threshold, h_enough, order)
+        exact = hh * min(STEP_GROWTH_MAX, max(STEP_SHRINK_MIN, STEP_SAFETY * err**exponent))
+        assert accepted
+        if h != exact:
+            skipped += 1
+            assert h >= h_enough and exact >= h_enough
+        for rest in (dt, 0.999 * dt, 0.5 * dt, 0.01 * dt, hh):
+            assert step_length(h, rest, True) == step_length(exact, rest, True)
+    assert skipped > 400
 
 
 def test_quiet_steps_stay_inside() -> None:

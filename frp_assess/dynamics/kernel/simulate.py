@@ -50,7 +50,13 @@ from frp_assess.dynamics.kernel.params import (
     STATUS_STEP_UNDERFLOW,
     KernelParams,
 )
-from frp_assess.dynamics.kernel.step_control import grow_threshold, quiet, step_length, step_size
+from frp_assess.dynamics.kernel.step_control import (
+    SLIVER,
+    grow_threshold,
+    quiet,
+    step_length,
+    step_size,
+)
 from frp_assess.dynamics.kernel.steppers import acceleration, step
 
 _NO_EVENT = 0
@@ -289,8 +295,10 @@ def simulate(
     inv_g = scale / prm.g
     adaptive = prm.method != METHOD_RK4
     # step-size exponent: 1/(q + 1), q the order of the embedded error estimate
-    exponent = -1.0 / 5.0 if prm.method == METHOD_DOPRI5 else -1.0 / 3.0
+    order = 5 if prm.method == METHOD_DOPRI5 else 3
+    exponent = -1.0 / order
     err_grow_max = grow_threshold(exponent)
+    h_enough = (1.0 - SLIVER) * dt  # every step ends at a sample, at most dt away
     bar_level = min(prm.theta_max, prm.theta_cr, limit)  # the lowest level with the bar intact
     h_fixed = dt / max(1, int(math.ceil(dt / prm.fixed_step - 1e-9))) if not adaptive else dt
 
@@ -369,7 +377,7 @@ def simulate(
             hh = step_length(h if adaptive else h_fixed, dt - x, adaptive)
             th1, om1, a_end, err = step(theta, omega, hh, u0, slope, s, k_s, a1, prm)
             if adaptive:
-                accepted, h = step_size(err, hh, h, exponent, err_grow_max)
+                accepted, h = step_size(err, hh, h, exponent, err_grow_max, h_enough, order)
                 if not accepted:
                     n_rejected += 1
                     if h < MIN_STEP_FRACTION * dt:

@@ -31,14 +31,28 @@ def step_length(h: float, rest: float, equal: bool) -> float:
 
 @njit(cache=True, nogil=True)
 def step_size(
-    err: float, hh: float, h: float, exponent: float, err_grow_max: float
+    err: float,
+    hh: float,
+    h: float,
+    exponent: float,
+    err_grow_max: float,
+    h_enough: float,
+    order: int,
 ) -> tuple[bool, float]:
     """Error control: (accept the step of length hh, the next step length [s]).
 
     A step is accepted when err ≤ 1 (NaN never); the next one is hh·0.9·err^exponent within
-    [0.2, 5]·hh.  Below ``err_grow_max`` (:func:`grow_threshold`) the factor is 5 and the
-    power is not evaluated: the steps that the record's samples cut short are the common case,
-    and ``pow`` was a tenth of the kernel's time.
+    [0.2, 5]·hh, exponent = −1/order.  Below ``err_grow_max`` (:func:`grow_threshold`) the
+    factor is 5 and the power is not evaluated: the steps that the record's samples cut short
+    are the common case, and ``pow`` was a tenth of the kernel's time.
+
+    ``h_enough`` [s]: a proposal at least this long is as good as any longer one (every step
+    ends at the next record sample, at most dt away, and :func:`step_length` takes all the
+    rest of the interval whenever h ≥ (1 − SLIVER)·rest).  When 0.9·err^exponent·hh surely
+    reaches it (err ≤ (0.9·hh/h_enough)^order, an integer power), 5·hh is returned without
+    the power: a different number, the same next step.  With one step per record sample this
+    spares the power on most of the steps above ``err_grow_max`` (63 % of all steps on the
+    paper's grid).
     """
     if not err <= 1.0:
         shrink = STEP_SHRINK_MIN
@@ -47,6 +61,9 @@ def step_size(
         return False, hh * shrink
     grow = STEP_GROWTH_MAX
     if err > err_grow_max:
+        enough = STEP_SAFETY * hh / h_enough
+        if err <= (1.0 - 1e-9) * enough**order:
+            return True, hh * STEP_GROWTH_MAX
         grow = min(STEP_GROWTH_MAX, max(STEP_SHRINK_MIN, STEP_SAFETY * err**exponent))
     return True, hh * grow
 

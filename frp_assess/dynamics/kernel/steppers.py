@@ -8,10 +8,12 @@ the step: the events that change them are located by :mod:`.events` and the step
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 
 from numba import njit
 
 from frp_assess.dynamics.kernel.params import METHOD_BS3, METHOD_DOPRI5, KernelParams
+from frp_assess.dynamics.kernel.trig import sin_cos
 
 
 @njit(cache=True, nogil=True)
@@ -24,26 +26,26 @@ def acceleration(theta: float, s: float, u: float, k_s: float, prm: KernelParams
 
     With the edge pivot (ξ = 0) the reaction term is skipped: the paper's Eq. 10 bit for bit.
     """
-    sin_a = prm.sin_a
-    cos_a = prm.cos_a
+    # sin(α s − θ) = s sinα cosθ − cosα sinθ ;  cos(α s − θ) = cosα cosθ + s sinα sinθ, so
+    # the bracket is A·cosθ + B·sinθ with A = s sinα + u cosα − s ξ n², B = K_s − cosα + u s sinα.
+    # A and B do not depend on θ: they are formed while sin θ, cos θ are computed, and the
+    # stage's chain of dependent operations from θ to θ'' is the shortest (docs/model.md §4.2).
+    ssa = s * prm.sin_a
+    a_coef = ssa + u * prm.cos_a
+    b_coef = k_s - prm.cos_a + u * ssa
     if prm.xi != 0.0 and k_s != 0.0:
         # the bar force needs sin(|θ|/2) = s·sin(θ/2) (smooth across θ = 0 inside a step that
         # overshoots an impact before it is located): one sin/cos pair of θ/2 gives it and
         # sin θ, cos θ by the double-angle formulas, where √ and a division were needed
-        sh = math.sin(0.5 * theta)
-        ch = math.cos(0.5 * theta)
+        sh, ch = sin_cos(0.5 * theta)
         st = 2.0 * sh * ch
         ct = 1.0 - 2.0 * sh * sh
         n = 1.0 + k_s * prm.kappa_per_k * s * sh
-        # sin(α s − θ) = s sinα cosθ − cosα sinθ ;  cos(α s − θ) = cosα cosθ + s sinα sinθ
-        m = s * sin_a * ct - cos_a * st + u * (cos_a * ct + s * sin_a * st) + k_s * st
-        return -prm.p2 * (m - s * prm.xi * n * n * ct)
-    st = math.sin(theta)
-    ct = math.cos(theta)
-    m = s * sin_a * ct - cos_a * st + u * (cos_a * ct + s * sin_a * st) + k_s * st
+        return -prm.p2 * ((a_coef - s * prm.xi * n * n) * ct + b_coef * st)
     if prm.xi != 0.0:  # no bar force: n = 1
-        m -= s * prm.xi * ct
-    return -prm.p2 * m
+        a_coef -= s * prm.xi
+    st, ct = sin_cos(theta)
+    return (-prm.p2 * a_coef) * ct + (-prm.p2 * b_coef) * st
 
 
 #: The error norm measures θ against ERROR_FLOOR·α + |θ| and θ' against ERROR_FLOOR·p·α + |θ'|:
@@ -70,17 +72,67 @@ def error_norm(
 
 # Dormand & Prince (1980), "A family of embedded Runge-Kutta formulae", J. Comp. Appl. Math.
 # 6(1):19-26, the RK5(4)7M pair (as in Hairer, Nørsett & Wanner, Solving ODEs I, Table 5.2).
-_C2, _C3, _C4, _C5 = 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0
-_A21 = 1.0 / 5.0
-_A31, _A32 = 3.0 / 40.0, 9.0 / 40.0
-_A41, _A42, _A43 = 44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0
-_A51, _A52, _A53, _A54 = 19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, -212.0 / 729.0
-_A61, _A62, _A63 = 9017.0 / 3168.0, -355.0 / 33.0, 46732.0 / 5247.0
-_A64, _A65 = 49.0 / 176.0, -5103.0 / 18656.0
-_B1, _B3, _B4, _B5, _B6 = 35.0 / 384.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0, 11.0 / 84.0
-# error coefficients: 5th-order weights minus the embedded 4th-order ones
-_E1, _E3, _E4 = -71.0 / 57600.0, 71.0 / 16695.0, -71.0 / 1920.0
-_E5, _E6, _E7 = 17253.0 / 339200.0, -22.0 / 525.0, 1.0 / 40.0
+_DP_A: tuple[tuple[Fraction, ...], ...] = (
+    (),
+    (Fraction(1, 5),),
+    (Fraction(3, 40), Fraction(9, 40)),
+    (Fraction(44, 45), Fraction(-56, 15), Fraction(32, 9)),
+    (Fraction(19372, 6561), Fraction(-25360, 2187), Fraction(64448, 6561), Fraction(-212, 729)),
+    (
+        Fraction(9017, 3168),
+        Fraction(-355, 33),
+        Fraction(46732, 5247),
+        Fraction(49, 176),
+        Fraction(-5103, 18656),
+    ),
+    # the 5th-order weights b: the seventh stage is evaluated at the new state (FSAL)
+    (
+        Fraction(35, 384),
+        Fraction(0),
+        Fraction(500, 1113),
+        Fraction(125, 192),
+        Fraction(-2187, 6784),
+        Fraction(11, 84),
+    ),
+)
+# the 5th-order weights minus the embedded 4th-order ones (b − b*)
+_DP_E = (
+    Fraction(-71, 57600),
+    Fraction(0),
+    Fraction(71, 16695),
+    Fraction(-71, 1920),
+    Fraction(17253, 339200),
+    Fraction(-22, 525),
+    Fraction(1, 40),
+)
+
+
+def _nystrom(j: int, k: int) -> float:
+    """Σ_m A_jm·A_mk (stages numbered from 1): the weight of the acceleration of stage k in
+    the rotation of stage j, θ_j = θ + c_j·h·θ' + h²·Σ_k Ā_jk·θ''_k.  Eq. 10's θ'' does not
+    depend on θ', so the pair needs the rotations of its stages only (the Nyström form of
+    the same method; Hairer, Nørsett & Wanner, Solving ODEs I, §II.14)."""
+    row = _DP_A[j - 1]
+    return float(sum(row[m - 1] * _DP_A[m - 1][k - 1] for m in range(k + 1, len(row) + 1)))
+
+
+def _error_nystrom(k: int) -> float:
+    """Σ_m E_m·A_mk: the weight of stage k's acceleration in the error of θ, h²·Σ_k Ē_k·θ''_k
+    (the term in h·θ' vanishes: Σ E_m = 0)."""
+    return float(sum(_DP_E[m - 1] * _DP_A[m - 1][k - 1] for m in range(k + 1, 8)))
+
+
+_C2, _C3, _C4, _C5 = (float(sum(_DP_A[j])) for j in (1, 2, 3, 4))
+# Ā_jk (the rotations of the stages; Ā_j,j−1 = 0: stage j needs the accelerations up to j − 2)
+_N31 = _nystrom(3, 1)
+_N41, _N42 = _nystrom(4, 1), _nystrom(4, 2)
+_N51, _N52, _N53 = _nystrom(5, 1), _nystrom(5, 2), _nystrom(5, 3)
+_N61, _N62, _N63, _N64 = _nystrom(6, 1), _nystrom(6, 2), _nystrom(6, 3), _nystrom(6, 4)
+_N71, _N73, _N74, _N75 = _nystrom(7, 1), _nystrom(7, 3), _nystrom(7, 4), _nystrom(7, 5)
+# the 5th-order weights of θ' and the error weights
+_B1, _B3, _B4, _B5, _B6 = (float(_DP_A[6][k]) for k in (0, 2, 3, 4, 5))
+_E1, _E3, _E4, _E5, _E6, _E7 = (float(_DP_E[k]) for k in (0, 2, 3, 4, 5, 6))
+_F1, _F3, _F4, _F5, _F6 = (_error_nystrom(k) for k in (1, 3, 4, 5, 6))
 
 
 @njit(cache=True, nogil=True)
@@ -101,28 +153,26 @@ def dopri5(
     extrapolation), the end acceleration (the first stage of the next step, FSAL), and the
     estimated local error of the embedded 4th-order solution in units of the tolerance
     (:func:`error_norm`).
+
+    Written in the Nyström form (:func:`_nystrom`): the rotation of each stage is the part
+    known in advance plus one product with the latest acceleration it needs, so the chain of
+    dependent operations from one evaluation of θ'' to the next is as short as it can be.
     """
-    w1 = omega
-    t2 = theta + h * _A21 * w1
-    w2 = omega + h * _A21 * a1
+    hh = h * h
+    t2 = theta + h * _C2 * omega
     a2 = acceleration(t2, s, u0 + slope * _C2 * h, k_s, prm)
-    t3 = theta + h * (_A31 * w1 + _A32 * w2)
-    w3 = omega + h * (_A31 * a1 + _A32 * a2)
+    t3 = (theta + h * _C3 * omega) + hh * (_N31 * a1)
     a3 = acceleration(t3, s, u0 + slope * _C3 * h, k_s, prm)
-    t4 = theta + h * (_A41 * w1 + _A42 * w2 + _A43 * w3)
-    w4 = omega + h * (_A41 * a1 + _A42 * a2 + _A43 * a3)
+    t4 = (theta + h * _C4 * omega + hh * (_N41 * a1)) + hh * (_N42 * a2)
     a4 = acceleration(t4, s, u0 + slope * _C4 * h, k_s, prm)
-    t5 = theta + h * (_A51 * w1 + _A52 * w2 + _A53 * w3 + _A54 * w4)
-    w5 = omega + h * (_A51 * a1 + _A52 * a2 + _A53 * a3 + _A54 * a4)
+    t5 = (theta + h * _C5 * omega + hh * (_N51 * a1 + _N52 * a2)) + hh * (_N53 * a3)
     a5 = acceleration(t5, s, u0 + slope * _C5 * h, k_s, prm)
-    t6 = theta + h * (_A61 * w1 + _A62 * w2 + _A63 * w3 + _A64 * w4 + _A65 * w5)
-    w6 = omega + h * (_A61 * a1 + _A62 * a2 + _A63 * a3 + _A64 * a4 + _A65 * a5)
+    t6 = (theta + h * omega + hh * (_N61 * a1 + _N62 * a2 + _N63 * a3)) + hh * (_N64 * a4)
     a6 = acceleration(t6, s, u0 + slope * h, k_s, prm)
-    theta1 = theta + h * (_B1 * w1 + _B3 * w3 + _B4 * w4 + _B5 * w5 + _B6 * w6)
+    theta1 = (theta + h * omega + hh * (_N71 * a1 + _N73 * a3 + _N74 * a4)) + hh * (_N75 * a5)
     omega1 = omega + h * (_B1 * a1 + _B3 * a3 + _B4 * a4 + _B5 * a5 + _B6 * a6)
     a7 = acceleration(theta1, s, u0 + slope * h, k_s, prm)
-    w7 = omega1
-    err_t = h * (_E1 * w1 + _E3 * w3 + _E4 * w4 + _E5 * w5 + _E6 * w6 + _E7 * w7)
+    err_t = hh * (_F1 * a1 + _F3 * a3 + _F4 * a4 + _F5 * a5 + _F6 * a6)
     err_w = h * (_E1 * a1 + _E3 * a3 + _E4 * a4 + _E5 * a5 + _E6 * a6 + _E7 * a7)
     return theta1, omega1, a7, error_norm(theta, omega, theta1, omega1, err_t, err_w, prm)
 
