@@ -100,7 +100,7 @@ def appendix(results: Results, lang: Lang) -> list[Block]:
     out.append(
         markup(
             lang.t("appendix.generated", name=esc(sw.name), version=esc(sw.version),
-                   date=esc(results.created)),
+                   date=esc(lang.date(results.created))),
             "small",
         )
     )  # fmt: skip

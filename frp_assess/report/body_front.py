@@ -66,7 +66,7 @@ def title(results: Results, lang: Lang) -> list[Block]:
             lang.t("title.subtitle")
             + "<br/>"
             + (who + " · " if who else "")
-            + lang.t("title.results_of", date=esc(results.created)),
+            + lang.t("title.results_of", date=esc(lang.date(results.created))),
             "subtitle",
         ),
     ]

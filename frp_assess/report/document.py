@@ -206,7 +206,9 @@ def document_head(results: AssessmentResult) -> Document:
     return Document(
         title=lang.t("doc.title", name=p.name or lang.t("title.unnamed")),
         header=lang.t("doc.header"),
-        footer=lang.t("doc.footer", software=sw.name, version=sw.version, date=results.created)
+        footer=lang.t(
+            "doc.footer", software=sw.name, version=sw.version, date=lang.date(results.created)
+        )
         + (f" · {results.input_file}" if results.input_file else ""),
         page_word=lang.t("doc.page", n="{n}", total="{total}"),
         author=p.engineer or "",

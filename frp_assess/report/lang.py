@@ -42,6 +42,10 @@ def swap_separators(text: str) -> str:
     return text.replace(",", "\x00").replace(".", ",").replace("\x00", ".")
 
 
+#: an ISO calendar date, as the results store their date
+_ISO_DATE = re.compile(r"(\d{4})-(\d{2})-(\d{2})")
+
+
 class Lang:
     """The strings and number format of one language."""
 
@@ -62,6 +66,15 @@ class Lang:
             return "—"
         text = f"{x:,.{decimals}f}" if grouping else f"{x:.{decimals}f}"
         return swap_separators(text) if self.code == "it" else text
+
+    def date(self, iso: str) -> str:
+        """The results' date (ISO ``YYYY-MM-DD``) as the language writes it: ISO in English,
+        ``DD/MM/YYYY`` in Italian; any other text unchanged."""
+        m = _ISO_DATE.fullmatch(iso.strip())
+        if m is None or self.code != "it":
+            return iso
+        year, month, day = m.groups()
+        return f"{day}/{month}/{year}"
 
     def gnum(self, x: float) -> str:
         """``x`` in the shortest form (``:g``), the language's decimal separator."""

@@ -256,3 +256,17 @@ def test_a_site_by_coordinates_is_stated_in_both_languages() -> None:
         text = " ".join(plain_texts(build_document(r)))
         assert life in text and slv_row in text
     assert "0,2610 2,360 0,347 adottato" in text
+
+
+@pytest.mark.parametrize(("code", "shown"), [("en", "2026-11-25"), ("it", "25/11/2026")])
+def test_the_date_of_the_results_is_written_as_the_language_writes_it(code: str, shown: str):
+    """The results' ISO date on the title, in the footer and in the closing note: ISO in
+    English, DD/MM/YYYY in an Italian relazione (the date as the reviewer reads it)."""
+    results = replace(results_in(code), created="2026-11-25")
+    doc = build_document(results)
+    texts = plain_texts(doc)
+    assert shown in doc.footer
+    assert sum(shown in t for t in texts) >= 2  # the subtitle and the closing note
+    other = "25/11/2026" if code == "en" else "2026-11-25"
+    assert not any(other in t for t in texts) and other not in doc.footer
+    assert Lang(code).date("not a date") == "not a date"
