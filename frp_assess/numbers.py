@@ -144,6 +144,18 @@ def no_retrofit_caveats(results: AssessmentResult) -> list[str]:
 NOT_COMPLIANT = "input not code-compliant"
 
 
+def noncompliant_sets(results: AssessmentResult) -> str:
+    """Which record sets fail the code's spectrum-compatibility checks, in words: the
+    assessment's (results.json ``compliance``) and those a limit state generated for its own
+    spectrum (``kinematic_checks.intensities``, in ``records/<state>/``)."""
+    sets = [] if results.compliance.passed else ["the records (table above)"]
+    kc = results.kinematic_checks
+    for i in () if kc is None else kc.intensities:
+        if i.records_compliant is False:
+            sets.append(f"the {i.limit_state} records (records/{i.limit_state}/)")
+    return " and ".join(sets) or "the records"
+
+
 def recommendation_label(results: AssessmentResult) -> str:
     """The label of the rank-1 option: "Recommended", or "Best ranked (input not
     code-compliant)" when the record set fails the code's spectrum-compatibility checks."""

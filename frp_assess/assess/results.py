@@ -302,6 +302,14 @@ def applied_restitution_ratio(inputs: AssessmentInputs) -> float:
     return inputs.model_for(None).impact_velocity_ratio
 
 
+def inputs_code_compliant(seismic: SeismicInput, checks: KinematicChecks | None) -> bool:
+    """Whether every record set a verdict rests on passes the code's spectrum-compatibility
+    checks (EC8 §3.2.3.1.2, NTC 2018 §3.2.3.6): the assessment's set, and the set a limit
+    state generated for its own spectrum (the SLC time-history check decides too)."""
+    own = () if checks is None else checks.intensities
+    return bool(seismic.compliance.passed) and all(i.records_compliant is not False for i in own)
+
+
 def build_results(
     *,
     inputs: AssessmentInputs,
@@ -393,7 +401,7 @@ def build_results(
         input_warnings=(*inputs.warnings, *seismic.warnings),
         # false: the records fail the code's spectrum-compatibility checks; the CLI, TUI and
         # report then call the rank-1 option "best ranked", never "recommended"
-        input_code_compliant=bool(seismic.compliance.passed),
+        input_code_compliant=inputs_code_compliant(seismic, kinematic_checks),
         sensitivity=sensitivity,
         building=None if inputs.building is None else building_result(inputs.building),
         floor_spectra=None if floor_spectra is None else floor_spectra_result(floor_spectra),

@@ -23,6 +23,7 @@ from frp_assess.errors import Cancelled, InputError
 from frp_assess.numbers import (
     checks_summary,
     fmt_capacity,
+    noncompliant_sets,
     numerical_check_text,
     recommendation_label,
     recommendation_text,
@@ -365,8 +366,8 @@ def print_summary(console: Console, results: AssessmentResult) -> None:
             console.print(f"Robustness: {user(results.robustness.summary)}")
     if not results.input_code_compliant:
         console.print(
-            "[bold red]INPUT NOT CODE-COMPLIANT[/]: the records fail the code's "
-            "spectrum-compatibility checks (table above); the results are not a basis for a "
+            f"[bold red]INPUT NOT CODE-COMPLIANT[/]: {noncompliant_sets(results)} fail the "
+            "code's spectrum-compatibility checks; the results are not a basis for a "
             "signed verdict and no option is recommended."
         )
     for d in results.design or ():
