@@ -21,36 +21,13 @@ from __future__ import annotations
 import argparse
 import sys
 import time
-from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
-
-import numpy as np
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from frp_assess.dynamics import RockingModel, ida  # noqa: E402
+from frp_assess.dynamics import ida  # noqa: E402
 from frp_assess.study import StudyPlan, load_study, study_records  # noqa: E402
-
-
-@dataclass(frozen=True)
-class PerRun:
-    """A :class:`RockingModel` seen through its ``run`` only: :func:`ida` drives it from
-    Python, one time history per call."""
-
-    model: RockingModel
-
-    @property
-    def a_rm(self) -> float:
-        return self.model.a_rm
-
-    @property
-    def crushing_rotation(self) -> float:
-        return self.model.crushing_rotation
-
-    def run(self, acc: np.ndarray, dt: float, scale: float) -> Any:
-        return self.model.run(acc, dt, scale)
 
 
 def main() -> int:
@@ -64,7 +41,7 @@ def main() -> int:
     warm = plan.model(cases[0])
     rec0 = records[cases[0].spectrum][0]
     ida(warm, rec0.acc, rec0.dt, plan.ida_settings)  # compile both paths before timing
-    ida(PerRun(warm), rec0.acc, rec0.dt, plan.ida_settings)  # type: ignore[arg-type]
+    ida(warm, rec0.acc, rec0.dt, plan.ida_settings, compiled=False)
     t_compiled = t_per_run = 0.0
     n_ida = n_runs = differ = 0
     for case in cases:
@@ -73,7 +50,7 @@ def main() -> int:
             t0 = time.process_time()
             a = ida(model, rec.acc, rec.dt, plan.ida_settings)
             t1 = time.process_time()
-            b = ida(PerRun(model), rec.acc, rec.dt, plan.ida_settings)  # type: ignore[arg-type]
+            b = ida(model, rec.acc, rec.dt, plan.ida_settings, compiled=False)
             t2 = time.process_time()
             t_compiled += t1 - t0
             t_per_run += t2 - t1

@@ -98,6 +98,7 @@ def ida(
     settings: IdaSettings = IdaSettings(),
     *,
     should_stop: Callable[[], bool] | None = None,
+    compiled: bool = True,
 ) -> IdaResult:
     """First collapse multiplier of ``model`` under the record ``acc`` [m/s²] sampled every dt [s].
 
@@ -109,7 +110,10 @@ def ida(
 
     ``should_stop`` is polled before the search (its time histories run in one compiled
     call, :func:`~frp_assess.dynamics.ida_search.search`); when it returns True the search
-    raises :class:`~frp_assess.errors.Cancelled`.
+    raises :class:`~frp_assess.errors.Cancelled`.  ``compiled=False`` drives the same search
+    from Python instead, one ``model.run`` per time history from the record's first sample
+    (the reference the compiled search is tested and benchmarked against; any model with
+    ``a_rm``, ``crushing_rotation`` and ``run`` takes this path).
 
     A centred bar already inside the compressed zone of the weight (x_W ≥ B/2, θ_cr = 0)
     crushes the toe as the wall uplifts: the first collapse is C₀, no time history is run.
@@ -132,7 +136,7 @@ def ida(
     hunt: list[float] = []  # C₀·s^k up to C_max
     while (c := c0 * settings.step_ratio ** len(hunt)) <= c_max * (1.0 + 1e-12):
         hunt.append(c)
-    if isinstance(model, RockingModel):
+    if compiled and isinstance(model, RockingModel):
         if should_stop is not None and should_stop():
             raise Cancelled("IDA cancelled")
         points, modes = _compiled_search(model, acc, dt, np.array(hunt), settings.tolerance)

@@ -5,7 +5,6 @@ history from the record's first sample."""
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -19,25 +18,6 @@ from tests.conftest import G, synthetic_record
 WALL = Wall(thickness=0.4, height=3.0, unit_weight=18e3, compressive_strength=2.0e6)
 CFRP = Rebars(150e9, 0.013, "external", 1.0, strain_factor=0.5)
 GFRP_CENTRED = Rebars(46e9, 0.015, "centred", 2.0, strain_factor=0.5)
-
-
-@dataclass(frozen=True)
-class PerRun:
-    """A model seen through ``run`` only: :func:`ida` drives it from Python, one time history
-    per call from the record's first sample (no quiet start skipped)."""
-
-    model: RockingModel
-
-    @property
-    def a_rm(self) -> float:
-        return self.model.a_rm
-
-    @property
-    def crushing_rotation(self) -> float:
-        return self.model.crushing_rotation
-
-    def run(self, acc: np.ndarray, dt: float, scale: float) -> Any:
-        return self.model.run(acc, dt, scale)
 
 
 def _quiet_start(seed: int, quiet_s: float = 2.0, dt: float = 0.01) -> np.ndarray:
@@ -94,7 +74,7 @@ def test_compiled_search_equals_one_run_per_time_history(mechanism, bars, option
     for seed in range(3):
         acc = _quiet_start(seed)
         compiled = ida(model, acc, 0.01, settings)
-        per_run = ida(PerRun(model), acc, 0.01, settings)  # type: ignore[arg-type]
+        per_run = ida(model, acc, 0.01, settings, compiled=False)
         assert compiled == per_run
         assert compiled.runs >= 3
 
