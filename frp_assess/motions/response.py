@@ -101,48 +101,115 @@ def _hermite_peak(u0: float, v0: float, u1: float, v1: float, h: float) -> float
 
 
 @njit(cache=True, nogil=True)
-def _peak_displacement(acc: np.ndarray, dt: float, period: float, xi: float) -> float:
-    """max |u(t)| [units of acc · s²] of the oscillator of period T under ground acc ``acc``."""
+def _may_exceed(u0: float, v0: float, u1: float, v1: float, h: float, top: float) -> bool:
+    """Whether the cubic Hermite interpolant of a step can reach above ``top``.
+
+    Written as p(s) = (1-s)·u0 + s·u1 + s(1-s)·((1-s)·α + s·β) with α = h·v0 - (u1 - u0) and
+    β = (u1 - u0) - h·v1, it is bounded by max(|u0|, |u1|) + max(|α|, |β|)/4.  The slack
+    (1e-12 of the terms' size, far above their rounding) makes a "no" certain, so skipping
+    :func:`_hermite_peak` there leaves the peak unchanged to the last bit."""
+    alpha = h * v0 - (u1 - u0)
+    beta = (u1 - u0) - h * v1
+    bound = max(abs(u0), abs(u1)) + 0.25 * max(abs(alpha), abs(beta))
+    slack = 1e-12 * (abs(u0) + abs(u1) + h * (abs(v0) + abs(v1)))
+    return bound + slack >= top
+
+
+@njit(cache=True, nogil=True)
+def _peak_displacements(
+    acc: np.ndarray, dt: float, periods: np.ndarray, xi: float, nsub: int, umax: np.ndarray
+) -> None:
+    """max |u(t)| [units of acc · s²] of the oscillators of ``periods`` under ground acc
+    ``acc``, into ``umax``.
+
+    The periods share their sub-steps per sample (``nsub``: dt/nsub ≤ T/10 for each) and are
+    sorted by period (so by length of the free vibration after the record, one period plus
+    one sample).  The sample loop runs outside and the oscillators inside: the processor
+    advances them side by side instead of waiting on one recurrence at a time, and the rare
+    steps where a velocity changes sign are handled after the sweep.  Each oscillator sees
+    exactly the arithmetic it would alone (same operations, same order), so its peak does not
+    depend on which periods are computed with it.
+    """
     n = acc.size
-    omega = 2.0 * math.pi / period
-    nsub = max(1, int(math.ceil(10.0 * dt / period - 1e-9)))
+    k = periods.size
     h = dt / nsub
-    a, b, c, d, ap, bp, cp, dp = _coefficients(omega, xi, h)
-    n_free = int(math.ceil(period / dt)) + 1
-    u = 0.0
-    v = 0.0
-    umax = 0.0
-    for i in range(n - 1 + n_free):
+    coef = np.empty((k, 8))  # (A, B, C, D, A', B', C', D') of each oscillator
+    last = np.empty(k, np.int64)  # its sample steps: the record, then one period at rest
+    for j in range(k):
+        c = _coefficients(2.0 * math.pi / periods[j], xi, h)
+        for q in range(8):
+            coef[j, q] = c[q]
+        last[j] = n - 1 + int(math.ceil(periods[j] / dt)) + 1
+    state = np.zeros((k, 5))  # u, v, u and v before the (sub-)step, max |u| so far
+    turned = np.empty(k, np.int64)  # the oscillators whose velocity changed sign
+    first = 0  # the oscillators before it have finished
+    i = 0
+    while first < k:
+        while first < k and i >= last[first]:
+            first += 1
+        if first == k:
+            break
         a0 = acc[i] if i < n else 0.0
         a1 = acc[i + 1] if i + 1 < n else 0.0
         for m in range(nsub):
             p0 = -(a0 + (a1 - a0) * m / nsub)
             p1 = -(a0 + (a1 - a0) * (m + 1) / nsub)
-            un = a * u + b * v + c * p0 + d * p1
-            vn = ap * u + bp * v + cp * p0 + dp * p1
-            if abs(un) > umax:
-                umax = abs(un)
-            if v * vn < 0.0:
-                peak = _hermite_peak(u, v, un, vn, h)
-                if peak > umax:
-                    umax = peak
-            u = un
-            v = vn
-    return umax
+            count = 0
+            for j in range(first, k):
+                u0 = state[j, 0]
+                v0 = state[j, 1]
+                un = coef[j, 0] * u0 + coef[j, 1] * v0 + coef[j, 2] * p0 + coef[j, 3] * p1
+                vn = coef[j, 4] * u0 + coef[j, 5] * v0 + coef[j, 6] * p0 + coef[j, 7] * p1
+                state[j, 0] = un
+                state[j, 1] = vn
+                state[j, 2] = u0
+                state[j, 3] = v0
+                top = abs(un)
+                state[j, 4] = state[j, 4] if state[j, 4] >= top else top
+                turned[count] = j
+                count += v0 * vn < 0.0
+            for q in range(count):
+                j = turned[q]
+                u0, v0, un, vn = state[j, 2], state[j, 3], state[j, 0], state[j, 1]
+                if _may_exceed(u0, v0, un, vn, h, state[j, 4]):
+                    state[j, 4] = max(state[j, 4], _hermite_peak(u0, v0, un, vn, h))
+        i += 1
+    for j in range(k):
+        umax[j] = state[j, 4]
 
 
 @njit(cache=True, nogil=True, parallel=True)
-def _psa(acc: np.ndarray, dt: float, periods: np.ndarray, xi: float) -> np.ndarray:
+def _psa(
+    acc: np.ndarray, dt: float, periods: np.ndarray, xi: float, nsub: np.ndarray, starts: np.ndarray
+) -> np.ndarray:
+    """PSA at ``periods`` (> 0), computed block by block: block b is periods[starts[b]:
+    starts[b + 1]], all with ``nsub[b]`` sub-steps per sample, sorted by period."""
     out = np.empty(periods.size)
-    pga = np.max(np.abs(acc)) if acc.size else 0.0
-    for j in prange(periods.size):  # the periods are independent: one thread each
-        T = periods[j]
-        if T <= 0.0:
-            out[j] = pga
-        else:
-            omega = 2.0 * math.pi / T
-            out[j] = omega * omega * _peak_displacement(acc, dt, T, xi)
+    for b in prange(starts.size - 1):  # the blocks are independent: one thread each
+        lo = starts[b]
+        hi = starts[b + 1]
+        _peak_displacements(acc, dt, periods[lo:hi], xi, nsub[b], out[lo:hi])
+        for j in range(lo, hi):
+            omega = 2.0 * math.pi / periods[j]
+            out[j] = omega * omega * out[j]
     return out
+
+
+def _blocks(periods: NDArray[np.float64], dt: float) -> tuple[NDArray, NDArray, NDArray]:
+    """(order, sub-steps per block, block starts) of the periods > 0: sorted by sub-steps,
+    then by period, and cut into blocks that share their sub-steps, one per thread."""
+    nsub = np.maximum(1, np.ceil(10.0 * dt / periods - 1e-9)).astype(np.int64)
+    order = np.lexsort((periods, nsub))
+    size = max(1, -(-periods.size // max(1, get_num_threads())))
+    starts: list[int] = []
+    subs: list[int] = []
+    sorted_nsub = nsub[order]
+    for lo in range(periods.size):
+        if lo == 0 or sorted_nsub[lo] != sorted_nsub[lo - 1] or lo - starts[-1] >= size:
+            starts.append(lo)
+            subs.append(int(sorted_nsub[lo]))
+    starts.append(periods.size)
+    return order, np.array(subs, dtype=np.int64), np.array(starts, dtype=np.int64)
 
 
 def response_spectrum(
@@ -165,8 +232,12 @@ def response_spectrum(
     if np.any(per < 0) or not np.all(np.isfinite(per)):
         raise ValueError("periods must be finite and >= 0")
     a = np.ascontiguousarray(np.ravel(acc), dtype=np.float64)
-    # deal the periods round-robin to the threads (short periods cost more: sub-steps)
-    order = np.argsort(np.arange(per.size) % max(1, get_num_threads()), kind="stable")
     out = np.empty_like(per)
-    out[order] = _psa(a, float(dt), per[order], float(damping))
+    zero = per == 0.0
+    out[zero] = np.max(np.abs(a)) if a.size else 0.0  # T = 0: the PGA
+    positive = np.flatnonzero(~zero)
+    if positive.size:
+        order, nsub, starts = _blocks(per[positive], float(dt))
+        sel = positive[order]
+        out[sel] = _psa(a, float(dt), per[sel], float(damping), nsub, starts)
     return out
