@@ -1,20 +1,17 @@
 """Time `frp-assess run` on the full-sweep example (targets: ≤ 15 s, rerun ≤ 2 s).
 
-Run: ``PYTHONPATH=. python3 benchmarks/bench_run.py [PROJECT.yaml] [--jobs N] [--pdf]
-[--omp-wait passive|active|unset]`` (default: projects/facade-laquila.yaml, 19 cases × 7 records
+Run: ``PYTHONPATH=. python3 benchmarks/bench_run.py [PROJECT.yaml] [--jobs N] [--pdf]``
+(default: projects/facade-laquila.yaml, 19 cases × 7 records
 plus its design mode).  The kernels are compiled (or loaded from numba's cache) by a small
 warm-up run first; the timed runs start from an empty results directory and then rerun with
 nothing changed.  Each phase reports its wall time and the CPU time of the process (user +
 system, all threads): on a loaded machine the CPU time is the fairer measure, and CPU well
-above wall × jobs means threads burn cores without working.  ``--omp-wait`` overrides the
-OpenMP wait policy the product sets (passive, frp_assess/motions/response.py) to measure
-the spinning it avoids.  Not collected by pytest.
+above wall × jobs means threads burn cores without working.  Not collected by pytest.
 """
 
 from __future__ import annotations
 
 import argparse
-import os
 import resource
 import tempfile
 import time
@@ -41,16 +38,7 @@ def main() -> int:
     ap.add_argument("project", nargs="?", default=str(DEFAULT), help="a project file")
     ap.add_argument("--jobs", type=int, default=None, help="threads (default: all cores)")
     ap.add_argument("--pdf", action="store_true", help="also build report.pdf")
-    ap.add_argument(
-        "--omp-wait",
-        choices=("passive", "active", "unset"),
-        help="OMP_WAIT_POLICY (unset: libgomp's default, a short spin; as before 2026-11-25)",
-    )
     args = ap.parse_args()
-    if args.omp_wait == "unset":  # libgomp reads it at numba's first parallel call, to come
-        os.environ.pop("OMP_WAIT_POLICY", None)
-    elif args.omp_wait:
-        os.environ["OMP_WAIT_POLICY"] = args.omp_wait
     inputs = load_inputs(args.project)
     warm = replace(
         inputs, records=ArtificialRecords(1, 1, 14.0, 0.02), options=inputs.options[:1], design=None
@@ -70,8 +58,7 @@ def main() -> int:
     n = 1 + len(inputs.options)
     print(
         f"{Path(args.project).name}: {n} cases, design mode "
-        f"{'on' if inputs.design else 'off'}, pdf {'on' if args.pdf else 'off'}, "
-        f"OMP_WAIT_POLICY={os.environ.get('OMP_WAIT_POLICY', '(unset)')}\n"
+        f"{'on' if inputs.design else 'off'}, pdf {'on' if args.pdf else 'off'}\n"
         f"  sweep only ({n} cases): {t4 - t3:.2f} s, CPU {c4 - c3:.2f} s "
         f"(target ≤ {TARGET_FIRST_S:g} s)\n"
         f"  whole run: {t1 - t0:.2f} s, CPU {c1 - c0:.2f} s, {first.computed} IDAs computed\n"

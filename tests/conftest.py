@@ -1,19 +1,11 @@
 """Shared fixtures: seeded synthetic ground motions (no files, no network); the ``tui`` marker
-of tests/tui/; the numba cache warmed once before pytest-xdist's workers start; OpenMP
-threads that sleep instead of spinning while they wait; Textual without animations."""
+of tests/tui/; the numba cache warmed once before pytest-xdist's workers start; Textual without
+animations."""
 
 from __future__ import annotations
 
 import os
 
-# Numba's parallel loops (the response spectrum, frp_assess/motions/response.py) run on the
-# OpenMP threading layer, whose idle threads spin-wait by default.  With pytest-xdist's
-# workers already on every core, the spinning threads of one worker take the cores from the
-# others: measured on 2 busy cores, 3 artificial sets of 3 records cost 1.2-2.0 s of CPU
-# with spinning and 0.34 s with passive waiting (the same wall time, the same numbers).
-# Set here, before anything loads libgomp (it reads the variable once, at load); xdist's
-# workers and the CLI subprocesses of the tests inherit it.  A value the user set is kept.
-os.environ.setdefault("OMP_WAIT_POLICY", "passive")
 # The TUI tests drive the app with Pilot: Textual's animations (tab underline, scrolling,
 # progress bars) only repaint frames no test looks at.  Textual reads the variable when it is
 # first imported, so it is set here, before any test module imports it.  Measured on five

@@ -23,7 +23,6 @@ from frp_assess.motions.pga_plausibility import plausibility_warnings
 from frp_assess.motions.readers import read_record
 from frp_assess.motions.record import Record
 from frp_assess.motions.record_text import FORMATS, UNITS
-from frp_assess.motions.response import limit_threads
 from frp_assess.motions.simqke import generate_artificial
 from frp_assess.motions.spectra import SPECTRUM_HELP, ElasticSpectrum, parse_spectrum
 from frp_assess.motions.writers import write_at2
@@ -39,7 +38,6 @@ __all__ = [
     "GeneratedRecords",
     "check_compliance",
     "generate_records",
-    "limit_threads",
     "parse_spectrum",
     "read_records",
     "spectra_csv",

@@ -220,7 +220,6 @@ def run(args: argparse.Namespace) -> int:
         if same is not None:
             return _unchanged(same.out_dir, same.created)
     from frp_assess.app.assessment import load_inputs
-    from frp_assess.app.records import limit_threads
     from frp_assess.output_set import FolderLock, check_out_dir  # not needed when unchanged
 
     inputs = load_inputs(path)  # InputError -> one line, exit 2, nothing written
@@ -231,7 +230,6 @@ def run(args: argparse.Namespace) -> int:
     if args.verify:
         inputs = replace(inputs, verify=True)
     out_dir = check_out_dir(out)
-    limit_threads(args.jobs)
     with FolderLock(out_dir):  # a second run into the same folder refuses here, exit 2
         return _run(args, inputs, out_dir)
 

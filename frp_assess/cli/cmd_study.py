@@ -50,7 +50,6 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from frp_assess.app.records import limit_threads
     from frp_assess.app.study import load_study, make_executor, plan_and_records, run_study
 
     path = Path(args.file)
@@ -60,7 +59,6 @@ def run(args: argparse.Namespace) -> int:
     out_dir = check_out_dir(Path(args.out) if args.out else path.with_name(f"{path.stem}-results"))
     console = make_console()
     executor = make_executor(args.executor, args.scheduler, args.jobs)
-    limit_threads(args.jobs)
     cancel = threading.Event()
     try:
         with Progress(

@@ -17,31 +17,10 @@ Chopra, *Dynamics of Structures*, Table 5.2.1 ("interpolation of excitation").
 from __future__ import annotations
 
 import math
-import os
 
 import numpy as np
-from numba import config, get_num_threads, njit, prange, set_num_threads
+from numba import njit
 from numpy.typing import ArrayLike, NDArray
-
-# The parallel loop below (the only one in the product) runs on numba's OpenMP threading
-# layer, whose idle threads spin-wait by default: between two spectra (the SIMQKE iterations
-# compute ~100 of them, with FFTs in between on the calling thread) the idle thread burns a
-# core, taken from the IDA workers of `run --jobs N` / `study --jobs N` and from any other
-# process.  Measured on 2 loaded cores (benchmarks/bench_run.py): 7 artificial records of the
-# bundled example cost 1.3-1.9 CPU-s spinning, 0.5-0.6 CPU-s passive, with the same numbers.
-# libgomp reads the variable once, when numba launches its threads (at the first parallel
-# call, never at import), so setting it here is early enough.  A value the user set is kept.
-os.environ.setdefault("OMP_WAIT_POLICY", "passive")
-
-
-def limit_threads(jobs: int | None) -> None:
-    """At most ``jobs`` threads for the parallel loop below when called from this thread
-    (``--jobs N`` of the command line: N cores in all, the SIMQKE records included); None
-    leaves numba's default (all cores).  numba's setting is per calling thread: the
-    commands make their records on the main thread.  The spectra do not depend on it."""
-    if jobs is not None:
-        most = int(config.NUMBA_NUM_THREADS)  # type: ignore[attr-defined]  # set at runtime
-        set_num_threads(max(1, min(jobs, most)))
 
 
 @njit(cache=True, nogil=True)
@@ -178,14 +157,19 @@ def _peak_displacements(
         umax[j] = state[j, 4]
 
 
-@njit(cache=True, nogil=True, parallel=True)
+@njit(cache=True, nogil=True)
 def _psa(
     acc: np.ndarray, dt: float, periods: np.ndarray, xi: float, nsub: np.ndarray, starts: np.ndarray
 ) -> np.ndarray:
-    """PSA at ``periods`` (> 0), computed block by block: block b is periods[starts[b]:
-    starts[b + 1]], all with ``nsub[b]`` sub-steps per sample, sorted by period."""
+    """PSA at ``periods`` (> 0), block by block: block b is periods[starts[b]:starts[b + 1]],
+    all with ``nsub[b]`` sub-steps per sample, sorted by period.
+
+    One thread: a numba parallel loop here (the product's only one) cost ~4 CPU-s of
+    compilation on a cold cache and OpenMP threads that spun against the IDA workers, for
+    ~20 % less wall time on a set of records (measured 2026-11-25); the oscillators advanced
+    side by side made the single thread 2.5x faster than the parallel loop was per CPU-s."""
     out = np.empty(periods.size)
-    for b in prange(starts.size - 1):  # the blocks are independent: one thread each
+    for b in range(starts.size - 1):
         lo = starts[b]
         hi = starts[b + 1]
         _peak_displacements(acc, dt, periods[lo:hi], xi, nsub[b], out[lo:hi])
@@ -197,19 +181,12 @@ def _psa(
 
 def _blocks(periods: NDArray[np.float64], dt: float) -> tuple[NDArray, NDArray, NDArray]:
     """(order, sub-steps per block, block starts) of the periods > 0: sorted by sub-steps,
-    then by period, and cut into blocks that share their sub-steps, one per thread."""
+    then by period; one block per number of sub-steps."""
     nsub = np.maximum(1, np.ceil(10.0 * dt / periods - 1e-9)).astype(np.int64)
     order = np.lexsort((periods, nsub))
-    size = max(1, -(-periods.size // max(1, get_num_threads())))
-    starts: list[int] = []
-    subs: list[int] = []
     sorted_nsub = nsub[order]
-    for lo in range(periods.size):
-        if lo == 0 or sorted_nsub[lo] != sorted_nsub[lo - 1] or lo - starts[-1] >= size:
-            starts.append(lo)
-            subs.append(int(sorted_nsub[lo]))
-    starts.append(periods.size)
-    return order, np.array(subs, dtype=np.int64), np.array(starts, dtype=np.int64)
+    starts = np.flatnonzero(np.diff(sorted_nsub, prepend=0))
+    return order, sorted_nsub[starts], np.append(starts, periods.size).astype(np.int64)
 
 
 def response_spectrum(
