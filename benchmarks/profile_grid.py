@@ -53,7 +53,7 @@ def profile(study: Path, stride: int) -> dict[str, np.ndarray]:
         model = plan.model(case)
         prm = model.params
         for rec in records[case.spectrum]:
-            acc = np.ascontiguousarray(rec.acc)
+            acc = kp.kernel_record(rec.acc)  # as the product passes it
             c0 = model.a_rm / float(np.max(np.abs(acc)))
             hunt: list[float] = []
             while (c := c0 * settings.step_ratio ** len(hunt)) <= settings.max_multiplier * c0 * (

@@ -10,7 +10,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from frp_assess.dynamics.ida_search import STATUS_TOO_MANY_RUNS, next_multiplier, search
-from frp_assess.dynamics.kernel.params import STATUS_OK
+from frp_assess.dynamics.kernel.params import STATUS_OK, kernel_record
 from frp_assess.dynamics.options import IDA_MAX_MULTIPLIER, IDA_STEP_RATIO, IDA_TOLERANCE
 from frp_assess.dynamics.rocking import (
     COLLAPSE_FATES,
@@ -118,7 +118,7 @@ def ida(
     A centred bar already inside the compressed zone of the weight (x_W ≥ B/2, θ_cr = 0)
     crushes the toe as the wall uplifts: the first collapse is C₀, no time history is run.
     """
-    acc = np.ascontiguousarray(acc, dtype=np.float64)
+    acc = kernel_record(acc)
     pga = float(np.max(np.abs(acc)))
     if not (math.isfinite(pga) and pga > 0.0):
         raise ValueError("the record has no ground motion (PGA = 0 or not finite)")

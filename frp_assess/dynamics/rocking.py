@@ -325,7 +325,7 @@ class RockingModel:
         omega0: float = 0.0,
     ) -> RockingResult:
         """Integrate the wall under ``scale``·acc (acc in m/s², sampled every dt seconds)."""
-        acc = np.ascontiguousarray(acc, dtype=np.float64)
+        acc = kp.kernel_record(acc)
         if acc.ndim != 1 or acc.size < 2:
             raise ValueError("the record needs at least two samples")
         if not (math.isfinite(dt) and dt > 0.0):

@@ -13,6 +13,7 @@ import pytest
 from frp_assess.dynamics import IdaSettings, Rebars, RockingModel, Wall, ida
 from frp_assess.dynamics.ida_search import next_multiplier, quiet_intervals, running_max_abs
 from frp_assess.dynamics.kernel import simulate
+from frp_assess.dynamics.kernel.params import kernel_record
 from tests.conftest import G, synthetic_record
 
 WALL = Wall(thickness=0.4, height=3.0, unit_weight=18e3, compressive_strength=2.0e6)
@@ -84,7 +85,7 @@ def test_a_time_history_from_its_quiet_start_is_the_same_numbers():
     peak, final state, events and even the same integration steps as from sample 0."""
     model = RockingModel(WALL, "two-sided", CFRP)
     prm = model.params
-    acc = _quiet_start(7)
+    acc = kernel_record(_quiet_start(7))  # the array type the product passes
     c = 1.5 * model.a_rm / np.max(np.abs(acc))
     start = quiet_intervals(running_max_abs(acc), c, prm)
     assert start >= 150  # 2 s of weak motion at dt = 0.01 s are skipped
