@@ -16,7 +16,7 @@ from pydantic_core import PydanticUndefined
 from rich.text import Text
 from textual import events
 from textual.app import ComposeResult
-from textual.containers import Horizontal, Vertical
+from textual.widget import Widget
 from textual.widgets import Input, Label, Select, Static
 
 from frp_assess.config.messages import Loc
@@ -178,15 +178,24 @@ def choice_options(choices: Sequence[tuple[str, Any]]) -> list[tuple[Text, Any]]
     return [(literal(label), value) for label, value in choices]
 
 
-class FieldRow(Vertical):
-    """A label, an input or a select, a unit, and the validation message under them."""
+class FieldRow(Widget):
+    """A label, an input or a select, a unit, and the validation message under them.
+
+    Laid out as a grid of three cells (label, control, unit) over the message, which is
+    mounted only when the field first has one: a row is four widgets, not six (the editor
+    holds about ninety rows, and every widget costs its styling and layout at start-up).
+    """
 
     DEFAULT_CSS = """
-    FieldRow { height: auto; }
-    FieldRow > Horizontal { height: 1; }
+    FieldRow {
+        layout: grid;
+        grid-size: 3;
+        grid-rows: 1 auto;
+        height: auto;
+    }
     FieldRow .f-label { width: 18; color: $text-muted; }
     FieldRow .f-unit { width: 1fr; color: $text-muted; padding-left: 1; }
-    FieldRow .f-error { color: $error; padding-left: 18; display: none; }
+    FieldRow .f-error { color: $error; padding-left: 18; display: none; column-span: 3; }
     FieldRow.-error .f-error { display: block; }
     FieldRow.-error .f-label { color: $error; }
     """
@@ -197,35 +206,34 @@ class FieldRow(Vertical):
         self.error: str | None = None
         #: (text shown, text read) of a value whose control characters are shown visibly
         self.shown_text: tuple[str, str] | None = None
+        self.styles.grid_columns = f"18 {spec.width} 1fr"
 
     def compose(self) -> ComposeResult:
         s = self.spec
-        with Horizontal():
-            yield Label(s.label, classes="f-label")
-            if s.kind == "choice":
-                select: Select[Any] = Select(
-                    choice_options(s.choices),
-                    allow_blank=s.optional,
-                    compact=True,
-                    prompt="(none)",
-                    id=f"{s.dom_id}-control",
-                    tooltip=s.help or None,
-                )
-                select.styles.width = s.width
-                yield select
-            else:
-                inp = OrderedInput(
-                    compact=True,
-                    placeholder=s.placeholder,
-                    id=f"{s.dom_id}-control",
-                    tooltip=s.help or None,
-                    select_on_focus=False,
-                )
-                inp.styles.width = s.width
-                inp.help_key = s.kind != "text"
-                yield inp
-            yield Label(s.unit, classes="f-unit")
-        yield Static("", classes="f-error")
+        yield Label(s.label, classes="f-label")
+        if s.kind == "choice":
+            select: Select[Any] = Select(
+                choice_options(s.choices),
+                allow_blank=s.optional,
+                compact=True,
+                prompt="(none)",
+                id=f"{s.dom_id}-control",
+                tooltip=s.help or None,
+            )
+            select.styles.width = s.width
+            yield select
+        else:
+            inp = OrderedInput(
+                compact=True,
+                placeholder=s.placeholder,
+                id=f"{s.dom_id}-control",
+                tooltip=s.help or None,
+                select_on_focus=False,
+            )
+            inp.styles.width = s.width
+            inp.help_key = s.kind != "text"
+            yield inp
+        yield Label(s.unit, classes="f-unit")
 
     @property
     def control(self) -> Input | Select[Any]:
@@ -292,9 +300,12 @@ class FieldRow(Vertical):
             return
         self.error = message
         self.set_class(message is not None, "-error")
-        self.query_one(".f-error", Static).update(
-            "" if message is None else literal(f"✗ {message}")
-        )
+        text = "" if message is None else literal(f"✗ {message}")
+        lines = self.query(".f-error")
+        if lines:
+            lines.first(Static).update(text)
+        elif message is not None:
+            self.mount(Static(text, classes="f-error"))  # the first message of the field
 
 
 def section_error(section_id: str) -> Static:
