@@ -189,6 +189,9 @@ class FrpAssessApp(PaneLookupApp):
         self.revalidate()
         if message:
             self.notify(message, severity="warning", timeout=8)
+        tabs = self.query_one(MainTabs)
+        tabs.ready = True
+        tabs.realize(tabs.active or TABS[0][0])  # the other tabs' fields: when first shown
         self.query_one("#f-wall-thickness-control", Input).focus()
         if self.path is not None and self.project is not None and not self.problems:
             out_dir = default_out_dir(self.path)

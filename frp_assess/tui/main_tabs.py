@@ -7,6 +7,7 @@ from textual.containers import ScrollableContainer
 from textual.widgets import TabPane, Tabs
 
 from frp_assess.tui.core.tabs import TABS
+from frp_assess.tui.fields import FieldRow
 from frp_assess.tui.tabbed import Tabbed
 
 #: the widget that gets the focus when a tab is shown
@@ -29,7 +30,21 @@ class MainTabs(Tabbed):
     def show(self, tab_id: str) -> None:
         """Show a tab and put the focus on its first field (never on a hidden one)."""
         self.active = tab_id
+        self.realize(tab_id)
         self.call_after_refresh(self.focus_in, tab_id)
+
+    #: the fields hold the project opened (the app sets it): they may be made
+    ready = False
+
+    def realize(self, tab_id: str) -> None:
+        """Make the fields of tab ``tab_id``: a field's widgets are made the first time its
+        tab is shown (:meth:`FieldRow.realize <frp_assess.tui.fields.FieldRow.realize>`),
+        once the project is in the fields (made with their values, they cost less)."""
+        if not self.ready:
+            return
+        with self.app.batch_update():
+            for row in self.query_one(f"#{tab_id}", TabPane).query(FieldRow):
+                row.realize()
 
     def step(self, step: int) -> None:
         """Show the next (``step`` 1) or previous (-1) tab, cyclically."""
@@ -62,6 +77,7 @@ class MainTabs(Tabbed):
         """A tab chosen in the tab bar: the focus follows it (unless on the tab bar)."""
         if event.tabbed_content is not self:
             return
+        self.realize(str(event.pane.id))
         focused = self.screen.focused
         if focused is None or (
             not isinstance(focused, Tabs) and event.pane not in focused.ancestors
