@@ -274,17 +274,18 @@ class FieldRow(Widget):
     def go_live(self, built_options: list[tuple[Text, Any]]) -> None:
         """The control is mounted: apply what was set since it was made (its options were
         ``built_options``)."""
-        if not self.is_attached:
-            return
+        made = self.query(f"#{self.spec.dom_id}-control")
+        if not made:
+            return  # removed, or the app closing: the row keeps its value itself
         self.live = True
-        c = self.control
+        c = made.first()
         with self.app.prevent(Input.Changed, Select.Changed):
             if isinstance(c, Select):
                 if self.options is not built_options:
                     c.set_options(self.options)
                 if c.value != self.choice:
                     self.set_choice(self.choice)
-            else:
+            elif isinstance(c, Input):
                 if c.placeholder != self.placeholder:
                     c.placeholder = self.placeholder
                 if c.value != self.text:
