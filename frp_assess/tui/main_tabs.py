@@ -8,6 +8,7 @@ from textual.widgets import TabPane, Tabs
 
 from frp_assess.tui.core.tabs import TABS
 from frp_assess.tui.fields import FieldRow
+from frp_assess.tui.results_pane import ResultsPane
 from frp_assess.tui.tabbed import Tabbed
 
 #: the widget that gets the focus when a tab is shown
@@ -36,15 +37,25 @@ class MainTabs(Tabbed):
     #: the fields hold the project opened (the app sets it): they may be made
     ready = False
 
+    def start(self) -> None:
+        """The project is in the fields: make those of the tab shown."""
+        self.ready = True
+        self.realize(self.active or TABS[0][0])
+
     def realize(self, tab_id: str) -> None:
         """Make the fields of tab ``tab_id``: a field's widgets are made the first time its
         tab is shown (:meth:`FieldRow.realize <frp_assess.tui.fields.FieldRow.realize>`),
-        once the project is in the fields (made with their values, they cost less)."""
+        once the project is in the fields (made with their values, they cost less); and the
+        results' views (:meth:`ResultsPane.build
+        <frp_assess.tui.results_pane.ResultsPane.build>`)."""
         if not self.ready:
             return
+        pane = self.query_one(f"#{tab_id}", TabPane)
         with self.app.batch_update():
-            for row in self.query_one(f"#{tab_id}", TabPane).query(FieldRow):
+            for row in pane.query(FieldRow):
                 row.realize()
+            for results in pane.query(ResultsPane):
+                results.build()  # its views too
 
     def step(self, step: int) -> None:
         """Show the next (``step`` 1) or previous (-1) tab, cyclically."""
