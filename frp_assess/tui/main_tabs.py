@@ -28,14 +28,14 @@ FIRST_FOCUS = {
 class MainTabs(Tabbed):
     """The tabs of the app; :meth:`show` shows one and puts the focus in it."""
 
+    #: the fields hold the project opened (:meth:`start`): they may be made
+    ready = False
+
     def show(self, tab_id: str) -> None:
         """Show a tab and put the focus on its first field (never on a hidden one)."""
         self.active = tab_id
         self.realize(tab_id)
         self.call_after_refresh(self.focus_in, tab_id)
-
-    #: the fields hold the project opened (the app sets it): they may be made
-    ready = False
 
     def start(self) -> None:
         """The project is in the fields: make those of the tab shown."""

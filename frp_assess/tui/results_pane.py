@@ -67,9 +67,9 @@ class ResultsPane(Vertical):
     """The results of the last run.
 
     Its views (eight tabs of tables and plots) are made the first time they are needed: its
-    tab shown, a run started, results to show (:meth:`build`); results given before they
-    are mounted are shown once they are.  Most sessions never show results: an app that
-    does not make them opens faster.
+    tab shown, or results to show (:meth:`build`); results given before they are mounted
+    are shown once they are (:meth:`when_ready`).  Most sessions never show results: an
+    app that does not make them opens faster.
     """
 
     def compose(self) -> ComposeResult:
