@@ -189,6 +189,7 @@ class FrpAssessApp(PaneLookupApp):
         self.revalidate()
         if message:
             self.notify(message, severity="warning", timeout=8)
+        self.query_one(MainTabs).start()  # the fields of the other tabs: when first shown
         self.query_one("#f-wall-thickness-control", Input).focus()
         if self.path is not None and self.project is not None and not self.problems:
             out_dir = default_out_dir(self.path)
@@ -209,9 +210,8 @@ class FrpAssessApp(PaneLookupApp):
 
     @on(PreviousLoaded)
     def _previous_loaded(self, message: PreviousLoaded) -> None:
-        if self.running or self.outcome is not None or self.path is None:
-            return
-        if (panel := self.pane(RunPanel)) is None:
+        panel = self.pane(RunPanel)
+        if self.running or self.outcome is not None or self.path is None or panel is None:
             return
         out_dir = default_out_dir(self.path)
         o = message.outcome
@@ -229,10 +229,12 @@ class FrpAssessApp(PaneLookupApp):
         self.show_outcome(o)
 
     def show_outcome(self, outcome: RunOutcome) -> None:
-        """Show the results of a run in the Results and History tabs."""
+        """Show the results of a run in the Results and History tabs (once its views exist)."""
+        pane = self.query_one(ResultsPane)
+        if not pane.when_ready(partial(self.show_outcome, outcome)):
+            return
         self.outcome = outcome
         stale = self.project != outcome.project
-        pane = self.query_one(ResultsPane)
         pane.show(outcome.results, str(outcome.out_dir), stale, self.file_changed(outcome))
         self.query_one(HistoryPane).show_outcome(outcome)
         self.update_status()
@@ -336,9 +338,7 @@ class FrpAssessApp(PaneLookupApp):
 
     # -------------------------------------------------------------------------- run
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
-        if action == "cancel_run":
-            return self.running
-        return True
+        return self.running if action == "cancel_run" else True
 
     def action_run(self) -> None:
         panel = self.query_one(RunPanel)

@@ -15,8 +15,7 @@ from pydantic import BaseModel
 from pydantic_core import PydanticUndefined
 from rich.text import Text
 from textual import events
-from textual.app import ComposeResult
-from textual.containers import Horizontal, Vertical
+from textual.widget import Widget
 from textual.widgets import Input, Label, Select, Static
 
 from frp_assess.config.messages import Loc
@@ -178,15 +177,30 @@ def choice_options(choices: Sequence[tuple[str, Any]]) -> list[tuple[Text, Any]]
     return [(literal(label), value) for label, value in choices]
 
 
-class FieldRow(Vertical):
-    """A label, an input or a select, a unit, and the validation message under them."""
+class FieldRow(Widget):
+    """A label, an input or a select, a unit, and the validation message under them.
+
+    Laid out as a grid of three cells (label, control, unit) over the message, which is
+    mounted only when the field first has one.
+
+    The widgets of a row are made when it is first shown (:meth:`realize`: its tab is shown,
+    or its control is asked for): until then the row keeps what its control would hold (the
+    text of an input, the value and options of a choice) and its message, and answers
+    :meth:`data_value` from them exactly as the control would.  The editor holds about
+    ninety rows over nine tabs, and every widget costs its styling and layout: an app that
+    makes only the rows of the tab shown opens in about half the time.
+    """
 
     DEFAULT_CSS = """
-    FieldRow { height: auto; }
-    FieldRow > Horizontal { height: 1; }
+    FieldRow {
+        layout: grid;
+        grid-size: 3;
+        grid-rows: 1 auto;
+        height: auto;
+    }
     FieldRow .f-label { width: 18; color: $text-muted; }
     FieldRow .f-unit { width: 1fr; color: $text-muted; padding-left: 1; }
-    FieldRow .f-error { color: $error; padding-left: 18; display: none; }
+    FieldRow .f-error { color: $error; padding-left: 18; display: none; column-span: 3; }
     FieldRow.-error .f-error { display: block; }
     FieldRow.-error .f-label { color: $error; }
     """
@@ -197,47 +211,98 @@ class FieldRow(Vertical):
         self.error: str | None = None
         #: (text shown, text read) of a value whose control characters are shown visibly
         self.shown_text: tuple[str, str] | None = None
+        self.styles.grid_columns = f"18 {spec.width} 1fr"
+        self.realized = False  #: the widgets are made (:meth:`realize`)
+        self.live = False  #: the control is mounted: it holds the value from then on
+        # what the control holds until it is live (a Select without a value shows its first
+        # option unless it may be blank)
+        self.text = ""
+        self.placeholder = spec.placeholder
+        self.options = choice_options(spec.choices)
+        first = spec.choices[0][1] if spec.choices and not spec.optional else Select.NULL
+        self.choice: Any = first
 
-    def compose(self) -> ComposeResult:
+    def realize(self) -> None:
+        """Make the widgets of the row (once) with the value and message kept so far.
+
+        No change event is posted: the value shown is the one the row already had.  The
+        control is live once mounted; what is set meanwhile is kept and then applied.
+        """
+        if self.realized:
+            return
+        self.realized = True
+        # made and mounted with no change event (the widgets' own, at creation and mount)
+        with self.app.prevent(Input.Changed, Select.Changed):
+            self.mount(*self.make_widgets())
+        self.call_next(self.go_live, self.options)  # after the mount (queued before it)
+
+    def make_widgets(self) -> list[Widget]:
+        """The label, the control holding the value kept, the unit, and the message if any."""
         s = self.spec
-        with Horizontal():
-            yield Label(s.label, classes="f-label")
-            if s.kind == "choice":
-                select: Select[Any] = Select(
-                    choice_options(s.choices),
-                    allow_blank=s.optional,
-                    compact=True,
-                    prompt="(none)",
-                    id=f"{s.dom_id}-control",
-                    tooltip=s.help or None,
-                )
-                select.styles.width = s.width
-                yield select
-            else:
-                inp = OrderedInput(
-                    compact=True,
-                    placeholder=s.placeholder,
-                    id=f"{s.dom_id}-control",
-                    tooltip=s.help or None,
-                    select_on_focus=False,
-                )
-                inp.styles.width = s.width
-                inp.help_key = s.kind != "text"
-                yield inp
-            yield Label(s.unit, classes="f-unit")
-        yield Static("", classes="f-error")
+        control: Widget
+        if s.kind == "choice":
+            control = Select(
+                self.options,
+                allow_blank=s.optional,
+                value=self.choice,
+                compact=True,
+                prompt="(none)",
+                id=f"{s.dom_id}-control",
+                tooltip=s.help or None,
+            )
+        else:
+            inp = OrderedInput(
+                self.text,
+                compact=True,
+                placeholder=self.placeholder,
+                id=f"{s.dom_id}-control",
+                tooltip=s.help or None,
+                select_on_focus=False,
+            )
+            inp.help_key = s.kind != "text"
+            control = inp
+        control.styles.width = s.width
+        widgets: list[Widget] = [
+            Label(s.label, classes="f-label"),
+            control,
+            Label(s.unit, classes="f-unit"),
+        ]
+        if self.error is not None:
+            widgets.append(Static(literal(f"✗ {self.error}"), classes="f-error"))
+        return widgets
+
+    def go_live(self, built_options: list[tuple[Text, Any]]) -> None:
+        """The control is mounted: apply what was set since it was made (its options were
+        ``built_options``)."""
+        made = self.query(f"#{self.spec.dom_id}-control")
+        if not made:
+            return  # removed, or the app closing: the row keeps its value itself
+        self.live = True
+        c = made.first()
+        with self.app.prevent(Input.Changed, Select.Changed):
+            if isinstance(c, Select):
+                if self.options is not built_options:
+                    c.set_options(self.options)
+                if c.value != self.choice:
+                    self.set_choice(self.choice)
+            elif isinstance(c, Input):
+                if c.placeholder != self.placeholder:
+                    c.placeholder = self.placeholder
+                if c.value != self.text:
+                    c.value = self.text
 
     @property
     def control(self) -> Input | Select[Any]:
-        """The input or select of the row."""
+        """The input or select of the row (made now if it is not yet)."""
+        self.realize()
         return self.query_one(f"#{self.spec.dom_id}-control")  # type: ignore[return-value]
 
     def data_value(self) -> Any:
         """The value for the data: parsed as the YAML loader would, ``MISSING`` if empty."""
-        c = self.control
-        if isinstance(c, Select):
-            return MISSING if c.value is Select.NULL else c.value
-        text = c.value
+        if self.spec.kind == "choice":
+            value = self.control.value if self.live else self.choice
+            return MISSING if value is Select.NULL else value
+        text = str(self.control.value) if self.live else self.text
         if self.shown_text is not None and text == self.shown_text[0]:
             text = self.shown_text[1]  # unchanged: the value as read, with its control characters
         if self.spec.kind == "text":
@@ -248,43 +313,67 @@ class FieldRow(Vertical):
 
     def set_value(self, value: Any) -> None:
         """Show a data value (``MISSING``/None: empty)."""
-        c = self.control
-        if isinstance(c, Select):
-            if value is MISSING or value is None:
-                value = self.spec.default
+        if value is MISSING or value is None:
+            value = self.spec.default
+        if self.spec.kind == "choice":
             if value is MISSING or value is None:
                 if self.spec.optional:
-                    c.clear()
+                    self.set_choice(Select.NULL)
                 return
-            values = [v for _, v in self.spec.choices]
-            if value not in values:  # keep what the file says, so that its error shows
-                c.set_options(
-                    [*choice_options(self.spec.choices), (literal(f"{value} (?)"), value)]
-                )
-            c.value = value
+            if value not in [v for _, v in self.spec.choices]:
+                # keep what the file says, so that its error shows
+                unknown = (literal(f"{value} (?)"), value)
+                self.set_choice_options([*choice_options(self.spec.choices), unknown])
+            self.set_choice(value)
         else:
-            if value is MISSING or value is None:
-                value = self.spec.default
             text = format_value(value)
             shown = printable(text)
             self.shown_text = (shown, text) if shown != text else None
-            c.value = shown
+            if self.live:
+                self.control.value = shown
+            else:
+                self.text = shown
+
+    def set_choice(self, value: Any) -> None:
+        """Choose ``value`` (one of the options, or ``Select.NULL``)."""
+        if not self.live:
+            self.choice = value
+        elif value is Select.NULL:
+            self.control.clear()  # type: ignore[union-attr]
+        else:
+            self.control.value = value
+
+    def set_choice_options(self, options: list[tuple[Text, Any]]) -> None:
+        """Replace the options of the choice (as ``Select.set_options``: blank if it may be,
+        else the first option)."""
+        if self.live:
+            self.control.set_options(options)  # type: ignore[union-attr]
+        else:
+            self.options = options
+            self.choice = options[0][1] if options and not self.spec.optional else Select.NULL
+
+    def set_placeholder(self, text: str) -> None:
+        """What an empty input shows."""
+        self.placeholder = text
+        if self.live and isinstance(c := self.control, Input):
+            c.placeholder = text
 
     def set_choices(self, choices: Sequence[tuple[str, Any]]) -> None:
         """Replace the options of a choice, keeping the value (no change event is posted)."""
-        c = self.control
-        if not isinstance(c, Select) or tuple(choices) == self.spec.choices:
+        if self.spec.kind != "choice" or tuple(choices) == self.spec.choices:
             return
-        current = c.value
+        current = self.control.value if self.live else self.choice
         self.spec = replace(self.spec, choices=tuple(choices))
         values = [v for _, v in choices]
         with self.app.prevent(Select.Changed):
             if current is not Select.NULL and current not in values:
-                c.set_options([*choice_options(choices), (literal(f"{current} (?)"), current)])
+                self.set_choice_options(
+                    [*choice_options(choices), (literal(f"{current} (?)"), current)]
+                )
             else:
-                c.set_options(choice_options(choices))
+                self.set_choice_options(choice_options(choices))
             if current is not Select.NULL:
-                c.value = current
+                self.set_choice(current)
 
     def show_error(self, message: str | None) -> None:
         """Show (or clear) the validation message under the field."""
@@ -292,9 +381,14 @@ class FieldRow(Vertical):
             return
         self.error = message
         self.set_class(message is not None, "-error")
-        self.query_one(".f-error", Static).update(
-            "" if message is None else literal(f"✗ {message}")
-        )
+        if not self.realized:
+            return  # shown when the row is made
+        text = "" if message is None else literal(f"✗ {message}")
+        lines = self.query(".f-error")
+        if lines:
+            lines.first(Static).update(text)
+        elif message is not None:
+            self.mount(Static(text, classes="f-error"))  # the first message of the field
 
 
 def section_error(section_id: str) -> Static:

@@ -7,6 +7,8 @@ from textual.containers import ScrollableContainer
 from textual.widgets import TabPane, Tabs
 
 from frp_assess.tui.core.tabs import TABS
+from frp_assess.tui.fields import FieldRow
+from frp_assess.tui.results_pane import ResultsPane
 from frp_assess.tui.tabbed import Tabbed
 
 #: the widget that gets the focus when a tab is shown
@@ -26,10 +28,34 @@ FIRST_FOCUS = {
 class MainTabs(Tabbed):
     """The tabs of the app; :meth:`show` shows one and puts the focus in it."""
 
+    #: the fields hold the project opened (:meth:`start`): they may be made
+    ready = False
+
     def show(self, tab_id: str) -> None:
         """Show a tab and put the focus on its first field (never on a hidden one)."""
         self.active = tab_id
+        self.realize(tab_id)
         self.call_after_refresh(self.focus_in, tab_id)
+
+    def start(self) -> None:
+        """The project is in the fields: make those of the tab shown."""
+        self.ready = True
+        self.realize(self.active or TABS[0][0])
+
+    def realize(self, tab_id: str) -> None:
+        """Make the fields of tab ``tab_id``: a field's widgets are made the first time its
+        tab is shown (:meth:`FieldRow.realize <frp_assess.tui.fields.FieldRow.realize>`),
+        once the project is in the fields (made with their values, they cost less); and the
+        results' views (:meth:`ResultsPane.build
+        <frp_assess.tui.results_pane.ResultsPane.build>`)."""
+        if not self.ready:
+            return
+        pane = self.query_one(f"#{tab_id}", TabPane)
+        with self.app.batch_update():
+            for row in pane.query(FieldRow):
+                row.realize()
+            for results in pane.query(ResultsPane):
+                results.build()  # its views too
 
     def step(self, step: int) -> None:
         """Show the next (``step`` 1) or previous (-1) tab, cyclically."""
@@ -62,6 +88,7 @@ class MainTabs(Tabbed):
         """A tab chosen in the tab bar: the focus follows it (unless on the tab bar)."""
         if event.tabbed_content is not self:
             return
+        self.realize(str(event.pane.id))
         focused = self.screen.focused
         if focused is None or (
             not isinstance(focused, Tabs) and event.pane not in focused.ancestors

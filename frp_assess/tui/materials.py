@@ -140,10 +140,9 @@ class MaterialsEditor(ItemEditor):
     def form_filled(self, index: int) -> None:
         lib = FRP_MATERIALS.get(self.items[index])
         for row in self.form_rows("material"):
-            inp = row.control
-            if isinstance(inp, Input):
+            if row.spec.kind != "choice":
                 value = None if lib is None else getattr(lib, str(row.spec.path[0]))
-                inp.placeholder = (
+                row.set_placeholder(
                     row.spec.placeholder if value is None else f"{format_value(value)} (library)"
                 )
 

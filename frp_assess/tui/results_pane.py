@@ -8,6 +8,8 @@ case shown in "Per record" and in the History tab.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from functools import partial
 from typing import Any
 
 from rich import box
@@ -62,11 +64,44 @@ STALE_TITLE = "Results (stale: the project changed since this run)"
 
 
 class ResultsPane(Vertical):
-    """The results of the last run."""
+    """The results of the last run.
+
+    Its views (eight tabs of tables and plots) are made the first time they are needed: its
+    tab shown, or results to show (:meth:`build`); results given before they are mounted
+    are shown once they are (:meth:`when_ready`).  Most sessions never show results: an
+    app that does not make them opens faster.
+    """
 
     def compose(self) -> ComposeResult:
         yield Static("No results yet: press ctrl+r to run the assessment.", id="results-note")
-        with Tabbed(id="results-tabs"):
+
+    def on_mount(self) -> None:
+        self.results: AssessmentResult | None = None
+        self.built = False  #: the views are made (mounted once ``ready``)
+        self.ready = False
+        self.waiting: list[Callable[[], object]] = []  #: called once the views are mounted
+
+    def build(self) -> None:
+        """Make the views (once)."""
+        if self.built:
+            return
+        self.built = True
+        self.mount_compose(self.views())
+        self.call_next(self.views_made)  # after the mount (queued before it)
+
+    def when_ready(self, callback: Callable[[], object]) -> bool:
+        """True if the views are mounted; else ``callback`` is called once they are (they
+        are made now if they are not yet)."""
+        if not self.ready:
+            self.waiting.append(callback)
+            self.build()
+        return self.ready
+
+    def views(self) -> ComposeResult:
+        """The views of the results, under the note."""
+        tabs = Tabbed(id="results-tabs")
+        tabs.display = False  # until there are results (never focused while hidden)
+        with tabs:
             with TabPane("Ranking", id="res-ranking"):
                 yield Static("", id="results-summary")
                 yield RankingTable(id="ranking-table")
@@ -115,9 +150,12 @@ class ResultsPane(Vertical):
                     yield PlotView(id="compliance-plot")
                     yield PlotView(id="floor-plot")
 
-    def on_mount(self) -> None:
-        self.results: AssessmentResult | None = None
-        self.query_one("#records-table", DataTable).add_columns(
+    def views_made(self) -> None:
+        """The views are mounted: their columns, and the results given meanwhile."""
+        tables = self.query("#records-table")
+        if not tables:
+            return  # the app closing
+        tables.first(DataTable).add_columns(
             *map(
                 Text,
                 (
@@ -131,13 +169,18 @@ class ResultsPane(Vertical):
                 ),
             )
         )
-        self.query_one("#results-tabs").display = False
+        self.ready = True
+        for callback in self.waiting:
+            callback()
+        self.waiting.clear()
 
     # ------------------------------------------------------------------------- display
     def show(
         self, results: AssessmentResult, out_dir: str, stale: bool = False, changed: bool = False
     ) -> None:
         """Show a run's results (``changed``: the project file changed since the run)."""
+        if not self.when_ready(partial(self.show, results, out_dir, stale, changed)):
+            return
         self.results = results
         self._out_dir = out_dir
         self.mark_stale(stale, changed)
@@ -291,9 +334,9 @@ class ResultsPane(Vertical):
     def draw_plot(self) -> None:
         """Improvement or capacity/demand of every case against its FRP quantity."""
         r = self.results
-        plot = self.query_one("#frp-plot", PlotView)
         if r is None:
             return
+        plot = self.query_one("#frp-plot", PlotView)
         metric = self.query_one("#plot-metric", Select).value
         by_cost = metric == "capacity_demand_cost"
         field = "capacity_demand" if by_cost else str(metric)

@@ -78,3 +78,10 @@ async def after_workers(pilot: Any, condition: Callable[[], bool] = lambda: True
     app has handled what they posted and ``condition()`` holds."""
     await pilot.app.workers.wait_for_complete()
     await settle(pilot, condition)
+
+
+async def show_tab(pilot: Any, tab_id: str) -> None:
+    """Show a main tab as the user does (F2...F10) and let its fields be made and mounted
+    (a tab's fields are made the first time it is shown)."""
+    pilot.app.show_tab(tab_id)
+    await pilot.pause()

@@ -14,7 +14,7 @@ from frp_assess.tui.app import FrpAssessApp
 from frp_assess.tui.core.editor_state import without_paths
 from frp_assess.tui.interventions import InterventionsEditor
 from frp_assess.tui.materials import MaterialsEditor
-from tests.tui.conftest import SMALL, after_workers, run_async, settle
+from tests.tui.conftest import SMALL, after_workers, run_async, settle, show_tab
 from tests.tui.test_app import SIZE, type_into
 
 #: a bars block with every key away from its default, as an engineer writes it
@@ -90,6 +90,7 @@ def test_other_blocks_of_a_variant_go_when_the_variant_changes(tmp_path: Path):
         async with app.run_test(size=SIZE) as pilot:
             await pilot.pause()
             assert app.project is not None and app.project.design is not None
+            await show_tab(pilot, "tab-analysis")
             app.query_one("#f-design-mode-control", Select).value = "off"
             await settle(pilot, lambda: app.project is not None and app.project.design is None)
             await pilot.press("ctrl+s")
@@ -138,19 +139,22 @@ def test_fields_for_pivot_strength_fc_diameter_and_design_strain(tmp_path: Path)
             await pilot.pause()
             q = app.query_one
             assert q("#f-wall-compressive-strength-control", Input).value == "2.4"
+            await type_into(pilot, "#f-wall-compressive-strength-control", "3.5")
+            await show_tab(pilot, "tab-analysis")
             assert q("#f-analysis-pivot-control", Select).value == "edge"
             assert q("#f-code-check-fc-in-ida-control", Select).value is False
-            await type_into(pilot, "#f-wall-compressive-strength-control", "3.5")
             q("#f-analysis-pivot-control", Select).value = "crushing"
             q("#f-code-check-fc-in-ida-control", Select).value = True
             await settle(
                 pilot, lambda: app.project is not None and app.project.code_check.fc_in_ida
             )
             # the first option's bar diameter, typed in the Retrofits form
+            await show_tab(pilot, "tab-retrofits")
             editor = q(InterventionsEditor)
             diameter = next(r for r in editor.form_rows("option") if r.spec.path == ("diameter",))
             await type_into(pilot, f"#{diameter.control.id}", "12")
             # GFRP's characteristic strain and fibre, in the Materials form
+            await show_tab(pilot, "tab-materials")
             materials = q(MaterialsEditor)
             assert materials.items[0] == "GFRP" and materials.selected == 0
             rows = {r.spec.path: r for r in materials.form_rows("material")}

@@ -139,6 +139,39 @@ async def _show(pilot: Any, results: AssessmentResult) -> ResultsPane:
 
 
 @pytest.mark.slow
+def test_the_results_views_are_made_when_first_needed(run: Run, small_project: Path):
+    """Opening makes none of the Results tab's views (most sessions show no results); its
+    tab shown without results focuses none of them; results given before the views are
+    mounted are shown once they are."""
+
+    async def body() -> None:
+        app = FrpAssessApp(small_project)
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause()
+            pane = app.query_one(ResultsPane)
+            assert not pane.built and not app.query(RankingTable)
+            await pilot.press("f9")
+            await settle(pilot, lambda: pane.ready)
+            await pilot.pause()
+            assert not app.query_one("#results-tabs").display
+            assert not isinstance(app.focused, RankingTable)  # hidden: never focused
+            app.show_tab("tab-wall")
+            await pilot.pause()
+
+        app = FrpAssessApp(small_project)
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause()
+            pane = app.query_one(ResultsPane)
+            pane.show(run.full, "out")
+            assert pane.built and not pane.ready and pane.results is None
+            await settle(pilot, lambda: pane.results is run.full)
+            assert app.query_one("#results-tabs").display
+            assert app.query_one(RankingTable).row_count == len(run.full.cases)
+
+    run_async(body)
+
+
+@pytest.mark.slow
 def test_results_views_show_bars_pivot_checks_and_sensitivity(run: Run, small_project: Path):
     r = run.full
 
