@@ -28,7 +28,12 @@ from dataclasses import dataclass
 
 import numpy as np
 from scipy.optimize import minimize
-from scipy.stats import norm
+from scipy.special import log_ndtr, ndtr
+
+# The standard normal distribution from scipy.special, as scipy.stats.norm computes it
+# (cdf = ndtr, log survival = log_ndtr(-z), log density = -z²/2 - ln √(2π)): the same
+# numbers without importing scipy.stats, which costs ~0.4 s at every start of the tool.
+_LOG_SQRT_2PI = float(np.log(np.sqrt(2 * np.pi)))
 
 
 @dataclass(frozen=True)
@@ -115,15 +120,15 @@ def collapse_probability(fragility: LognormalFragility, demand: float) -> float:
     """Φ(ln(demand/θ)/β); 0 for a demand ≤ 0."""
     if demand <= 0:
         return 0.0
-    return float(norm.cdf(math.log(demand / fragility.median) / fragility.beta))
+    return float(ndtr(math.log(demand / fragility.median) / fragility.beta))
 
 
 def _negative_log_likelihood(params: np.ndarray, ln_x: np.ndarray, ln_c: np.ndarray) -> float:
     mu, log_beta = params
     beta = math.exp(log_beta)
     z = (ln_x - mu) / beta
-    exact = np.sum(norm.logpdf(z)) - ln_x.size * log_beta - np.sum(ln_x)
-    survived = np.sum(norm.logsf((ln_c - mu) / beta))
+    exact = np.sum(-(z**2) / 2.0 - _LOG_SQRT_2PI) - ln_x.size * log_beta - np.sum(ln_x)
+    survived = np.sum(log_ndtr(-((ln_c - mu) / beta)))
     return float(-(exact + survived))
 
 

@@ -112,3 +112,27 @@ def test_probability_is_the_lognormal_cdf():
     frag = LognormalFragility(median=0.4, beta=0.3, collapsed=7, censored=0, method="mle")
     for a in (0.1, 0.4, 0.9):
         assert frag.probability(a) == pytest.approx(stats.lognorm.cdf(a, 0.3, scale=0.4))
+
+
+def test_the_normal_distribution_is_scipy_stats_norm_to_the_last_bit():
+    """The module computes Φ, ln φ and ln(1 − Φ) with scipy.special instead of importing
+    scipy.stats (0.4 s at start-up); the likelihood the censored fit minimises and the
+    probability it reports must be scipy.stats.norm's, bit for bit."""
+    from frp_assess.assess.statistics import _negative_log_likelihood
+
+    rng = np.random.default_rng(8)
+    for _ in range(200):
+        ln_x = rng.normal(-0.7, 0.5, int(rng.integers(2, 12)))
+        ln_c = rng.normal(-0.2, 0.5, int(rng.integers(1, 5)))
+        mu, log_beta = float(rng.normal(-0.5, 0.3)), float(rng.normal(-1.0, 0.5))
+        beta = math.exp(log_beta)
+        z = (ln_x - mu) / beta
+        exact = np.sum(stats.norm.logpdf(z)) - ln_x.size * log_beta - np.sum(ln_x)
+        survived = np.sum(stats.norm.logsf((ln_c - mu) / beta))
+        expected = float(-(exact + survived))
+        assert _negative_log_likelihood(np.array([mu, log_beta]), ln_x, ln_c) == expected
+        frag = LognormalFragility(math.exp(mu), beta, 5, 0, "mle")
+        a = float(np.exp(rng.normal(mu, 1.0)))
+        assert collapse_probability(frag, a) == float(
+            stats.norm.cdf(math.log(a / frag.median) / beta)
+        )
