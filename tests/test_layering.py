@@ -48,14 +48,15 @@ INTERNAL: dict[str, set[str]] = {
     "results": {"errors"},  # the typed results (stdlib dataclasses): no numerics, no files
     "numbers": {"results"},
     "text_safety": set(),
+    "libm": set(),  # elementwise C-library functions of arrays (the same bits on every CPU)
     "io_utils": {"errors"},
     "output_set": {"errors", "io_utils"},
-    "dynamics": {"errors", "motions", "rules"},
-    "motions": {"errors", "io_utils"},
+    "dynamics": {"errors", "libm", "motions", "rules"},
+    "motions": {"errors", "io_utils", "libm"},
     "config": {"errors", "io_utils", "rules", "dynamics", "motions"},
     "assess": {
-        "", "errors", "io_utils", "numbers", "text_safety", "rules", "dynamics", "motions",
-        "config", "results",
+        "", "errors", "io_utils", "libm", "numbers", "text_safety", "rules", "dynamics",
+        "motions", "config", "results",
     },
     "report": {"errors", "io_utils", "numbers", "text_safety", "results"},
     "study": {

@@ -21,6 +21,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 from numpy.typing import ArrayLike
 
+from frp_assess import libm
 from frp_assess.assess.inputs import BuildingSettings
 from frp_assess.dynamics import IdaResult
 from frp_assess.motions import ElasticSpectrum, Record
@@ -96,7 +97,7 @@ def default_periods(building: BuildingSettings) -> np.ndarray:
     """A log grid over 0.02-4 s (at least 2.5·T1) with T1 and the plateau ends 0.8·T1, 1.1·T1
     of the code's floor spectrum [s]."""
     t1 = building.period
-    grid = np.geomspace(0.02, max(4.0, 2.5 * t1), 60)
+    grid = libm.geomspace(0.02, max(4.0, 2.5 * t1), 60)
     return np.unique(np.round(np.concatenate([grid, [0.8 * t1, t1, 1.1 * t1]]), 12))
 
 

@@ -16,6 +16,7 @@ from typing import overload
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from frp_assess import libm
 from frp_assess.dynamics import Rebars, Wall
 from frp_assess.motions import G
 
@@ -53,7 +54,7 @@ def static_multiplier(
         stiffness: K [-] of Eq. 10 (0: unreinforced, or the bar has broken).
     """
     if isinstance(theta, np.ndarray):
-        return (np.sin(alpha - theta) + stiffness * np.sin(theta)) / np.cos(alpha - theta)
+        return (libm.sin(alpha - theta) + stiffness * libm.sin(theta)) / libm.cos(alpha - theta)
     return (math.sin(alpha - theta) + stiffness * math.sin(theta)) / math.cos(alpha - theta)
 
 
@@ -74,7 +75,7 @@ def control_displacement(
     a, r = wall.alpha, wall.R
     if isinstance(theta, np.ndarray):
         th = np.where(np.isfinite(theta), theta, 0.0)
-        d = r * (math.sin(a) - np.sin(a - th))
+        d = r * (math.sin(a) - libm.sin(a - th))
         return np.where(np.isfinite(theta), d, np.inf)
     if not math.isfinite(theta):
         return math.inf

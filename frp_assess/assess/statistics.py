@@ -30,10 +30,12 @@ import numpy as np
 from scipy.optimize import minimize
 from scipy.special import log_ndtr, ndtr
 
+from frp_assess import libm
+
 # The standard normal distribution from scipy.special, as scipy.stats.norm computes it
 # (cdf = ndtr, log survival = log_ndtr(-z), log density = -z²/2 - ln √(2π)): the same
 # numbers without importing scipy.stats, which costs ~0.4 s at every start of the tool.
-_LOG_SQRT_2PI = float(np.log(np.sqrt(2 * np.pi)))
+_LOG_SQRT_2PI = math.log(math.sqrt(2 * math.pi))
 
 
 @dataclass(frozen=True)
@@ -144,14 +146,14 @@ def fit_lognormal_fragility(
     """
     x = _positive_array(collapse_intensities, "collapse_intensities")
     c = _positive_array(censored_at, "censored_at")
-    ln_x = np.log(x)
+    ln_x = libm.log(x)
     if x.size < 2 or np.ptp(ln_x) == 0.0:
         raise ValueError("a fragility needs at least two different collapse intensities")
     mu0 = float(ln_x.mean())
     beta0 = float(ln_x.std())  # divisor n: the maximum-likelihood estimate
     if c.size == 0:
         return LognormalFragility(math.exp(mu0), beta0, int(x.size), 0, "mle")
-    ln_c = np.log(c)
+    ln_c = libm.log(c)
     result = minimize(
         _negative_log_likelihood,
         np.array([mu0, math.log(beta0)]),

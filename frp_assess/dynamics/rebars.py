@@ -9,6 +9,7 @@ from typing import overload
 import numpy as np
 from numpy.typing import NDArray
 
+from frp_assess import libm
 from frp_assess.dynamics.wall import Wall
 from frp_assess.rules import bars as rule
 from frp_assess.rules.bars import DEFAULT_STRAIN_FACTOR as DEFAULT_STRAIN_FACTOR  # re-export
@@ -91,7 +92,7 @@ class Rebars:
     ) -> float | NDArray[np.float64]:
         """e [m] = 2·b_r·sin(|θ|/2) (Eq. 7); θ [rad], a number or an array."""
         if isinstance(theta, np.ndarray):
-            return 2.0 * self.lever_arm(wall) * np.sin(0.5 * np.abs(theta))
+            return 2.0 * self.lever_arm(wall) * libm.sin(0.5 * np.abs(theta))
         return 2.0 * self.lever_arm(wall) * math.sin(0.5 * abs(theta))
 
     @overload

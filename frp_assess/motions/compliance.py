@@ -30,6 +30,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
+from frp_assess import libm
 from frp_assess.motions.record import G, Record
 from frp_assess.motions.response import response_spectrum
 from frp_assess.motions.spectra import ElasticSpectrum
@@ -131,8 +132,8 @@ def check_periods(
     lo = min(ec8_range(t1)[0], ntc_range(t1)[0])
     hi = max(ec8_range(t1)[1], ntc_range(t1)[1])
     parts = [
-        np.geomspace(0.02, max(4.0, 2.5 * t1), count // 2),
-        np.geomspace(lo, hi, count),
+        libm.geomspace(0.02, max(4.0, 2.5 * t1), count // 2),
+        libm.geomspace(lo, hi, count),
         np.array([*ec8_range(t1), *ntc_range(t1)]),
         np.array([t for t in (spectrum.T_B, spectrum.T_C, spectrum.T_D) if t is not None]),
     ]
@@ -342,7 +343,7 @@ def ntc_band_factor(
     (f = √(0.9·1.3 / (min ratio · max ratio))), and whether the band is reachable at all
     (max/min ratio ≤ 1.3/0.9)."""
     lo, hi = ntc_range(t1)
-    per = np.geomspace(lo, hi, 60)
+    per = libm.geomspace(lo, hi, 60)
     ratio = record_spectra(records, per, damping).mean(axis=0) / spectrum.sa(per)
     rmin, rmax = float(ratio.min()), float(ratio.max())
     factor = math.sqrt(LOWER_BOUND * UPPER_BOUND_RECORDED / (rmin * rmax))

@@ -15,6 +15,8 @@ import math
 import numpy as np
 from numpy.typing import NDArray
 
+from frp_assess import libm
+
 ENVELOPES: tuple[str, ...] = ("trapezoidal", "compound", "exponential")
 
 
@@ -31,13 +33,13 @@ def compound(t: NDArray[np.float64], rise: float, stationary: float, total: floa
     t2 = rise + stationary
     c = -math.log(0.05) / max(total - t2, 1e-12)
     up = np.clip(t / rise, 0.0, 1.0) ** 2 if rise > 0 else np.ones_like(t)
-    return np.where(t <= t2, up, np.exp(-c * (t - t2)))
+    return np.where(t <= t2, up, libm.exp(-c * (t - t2)))
 
 
 def _gamma(t: NDArray[np.float64], tp: float, alpha: float) -> NDArray:
     x = np.maximum(t, 0.0) / tp
     with np.errstate(divide="ignore"):
-        return np.exp(alpha * (1.0 + np.log(np.maximum(x, 1e-300)) - x))
+        return libm.exp(alpha * (1.0 + libm.log(np.maximum(x, 1e-300)) - x))
 
 
 def exponential(t: NDArray[np.float64], rise: float, stationary: float, total: float) -> NDArray:

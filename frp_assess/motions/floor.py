@@ -26,6 +26,7 @@ import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike, NDArray
 
+from frp_assess import libm
 from frp_assess.motions.record import G
 from frp_assess.motions.response import _coefficients
 from frp_assess.motions.spectra import ElasticSpectrum, damping_correction, ec8_shape
@@ -271,8 +272,8 @@ def floor_spectrum(
     amp = floor_amplification(building_damping, damping)
     top = amp * a_z
     lo, hi = a * period, b * period
-    rising = top / (1.0 + (amp - 1.0) * np.clip(1.0 - T / lo, 0.0, None) ** 1.6)
-    falling = top / (1.0 + (amp - 1.0) * np.clip(T / hi - 1.0, 0.0, None) ** 1.2)
+    rising = top / (1.0 + (amp - 1.0) * libm.power(np.clip(1.0 - T / lo, 0.0, None), 1.6))
+    falling = top / (1.0 + (amp - 1.0) * libm.power(np.clip(T / hi - 1.0, 0.0, None), 1.2))
     sez = np.where(T < lo, rising, np.where(T < hi, top, falling))
     return np.where(T > period, np.maximum(sez, se), sez)
 

@@ -36,6 +36,7 @@ import numpy as np
 from numpy.typing import NDArray
 from scipy import fft
 
+from frp_assess import libm
 from frp_assess.errors import InputError
 from frp_assess.motions.compliance import DEFAULT_T1, check_periods, ec8_range, ntc_range
 from frp_assess.motions.envelopes import ENVELOPES, envelope
@@ -60,11 +61,11 @@ def vanmarcke_peak_factor(omega: NDArray, xi: NDArray, ts: float, p: float = 0.5
     xi = np.minimum(xi, 0.9)
     sq = np.sqrt(1.0 - xi * xi)
     delta = np.sqrt(
-        np.clip(1.0 - (1.0 - 2.0 / math.pi * np.arctan(xi / sq)) ** 2 / (1.0 - xi * xi), 0, 1)
+        np.clip(1.0 - (1.0 - 2.0 / math.pi * libm.arctan(xi / sq)) ** 2 / (1.0 - xi * xi), 0, 1)
     )
-    ln2n = np.log(2.0 * n)
-    inner = 2.0 * n * (1.0 - np.exp(-(delta**1.2) * np.sqrt(math.pi * ln2n)))
-    return np.sqrt(2.0 * np.log(np.maximum(inner, math.e)))
+    ln2n = libm.log(2.0 * n)
+    inner = 2.0 * n * (1.0 - libm.exp(-libm.power(delta, 1.2) * np.sqrt(math.pi * ln2n)))
+    return np.sqrt(2.0 * libm.log(np.maximum(inner, math.e)))
 
 
 def vanmarcke_psd(
@@ -74,7 +75,7 @@ def vanmarcke_psd(
     whose response spectrum is ``sa`` (Gasparini & Vanmarcke 1976, Eq. for SIMQKE)."""
     d_omega = float(omega[1] - omega[0])
     out = np.zeros_like(omega)
-    xi_s = damping / (1.0 - np.exp(-2.0 * damping * np.maximum(omega, 1e-12) * ts))
+    xi_s = damping / (1.0 - libm.exp(-2.0 * damping * np.maximum(omega, 1e-12) * ts))
     r = vanmarcke_peak_factor(omega, xi_s, ts)
     denom = omega * (math.pi / (4.0 * xi_s) - 1.0)
     cumulative = 0.0
@@ -89,7 +90,7 @@ def vanmarcke_psd(
 
 def control_periods(t1: float = DEFAULT_T1, dt: float = 0.005, count: int = 48) -> NDArray:
     """Log-spaced periods [s] the generator matches: from max(0.03, 4·dt) to max(4, 2.5·T1)."""
-    return np.geomspace(max(0.03, 4.0 * dt), max(4.0, 2.5 * t1), count)
+    return libm.geomspace(max(0.03, 4.0 * dt), max(4.0, 2.5 * t1), count)
 
 
 def _baseline(acc: NDArray, env: NDArray, dt: float) -> tuple[NDArray, float, float]:
@@ -102,9 +103,13 @@ def _baseline(acc: NDArray, env: NDArray, dt: float) -> tuple[NDArray, float, fl
         return float(v[-1]), float(d)
 
     b0, b1 = env, env * t
-    m = np.array([finals(b0), finals(b1)]).T  # columns: effect of c0, c1 on (v_end, d_end)
-    c = np.linalg.solve(m, np.array(finals(acc)))
-    out = acc - c[0] * b0 - c[1] * b1
+    # the effect of c0 and of c1 on (v_end, d_end), and the 2×2 system solved by Cramer's rule
+    # (plain arithmetic: a LAPACK solve may round by the processor's BLAS kernel)
+    (v0, d0), (v1, d1), (va, da) = finals(b0), finals(b1), finals(acc)
+    det = v0 * d1 - v1 * d0
+    c0 = (va * d1 - v1 * da) / det
+    c1 = (v0 * da - va * d0) / det
+    out = acc - c0 * b0 - c1 * b1
     v_end, d_end = finals(out)
     return out, v_end, d_end
 
@@ -153,7 +158,7 @@ def _setup(
         periods=periods,
         target=spectrum.sa(periods) * G,
         active=active,
-        log_w=np.log(np.where(active, t_of_omega, periods[-1])),
+        log_w=libm.log(np.where(active, t_of_omega, periods[-1])),
         amp=amp,
         damping=damping,
         iterations=iterations,
@@ -171,8 +176,9 @@ def _one_record(index: int, seed: int, su: _Setup) -> tuple[NDArray, dict[str, s
     )
     target_ctrl = su.target
     rng = np.random.default_rng([int(seed), int(index)])
-    phase = np.exp(1j * rng.uniform(0.0, 2.0 * math.pi, amp.size))
-    log_t = np.log(periods)
+    angle = rng.uniform(0.0, 2.0 * math.pi, amp.size)
+    phase = libm.cos(angle) + 1j * libm.sin(angle)  # e^{i·angle}
+    log_t = libm.log(periods)
 
     best_err, best_acc, best_it = math.inf, np.zeros(npts), 0
     for it in range(iterations + 1):

@@ -24,11 +24,13 @@ side of it (a cell holds its west and south edges, like the half-open square [i,
 from __future__ import annotations
 
 import functools
+import math
 from collections import deque
 from dataclasses import dataclass
 
 import numpy as np
 
+from frp_assess import libm
 from frp_assess.motions.site.grid import load_grid, unit_vectors
 
 #: two nodes closer than this [km] are lattice neighbours (the step is 5.53-5.56 km, the
@@ -82,7 +84,7 @@ def lattice() -> Lattice:
         for d, b in zip(dist[a, 1:], near[a, 1:], strict=True):
             if d > NEIGHBOUR_KM:
                 break
-            east = (g.lon[b] - g.lon[a]) * np.cos(np.radians(0.5 * (g.lat[a] + g.lat[b])))
+            east = (g.lon[b] - g.lon[a]) * libm.cos(np.radians(0.5 * (g.lat[a] + g.lat[b])))
             north = g.lat[b] - g.lat[a]
             if abs(east) > abs(north):
                 step = (1 if east > 0 else -1, 0)
@@ -110,11 +112,17 @@ def _tangent_plane(latitude: float, longitude: float, nodes: np.ndarray) -> np.n
     g = load_grid()
     site = unit_vectors(np.array(latitude), np.array(longitude))
     lam = np.radians(longitude)
-    east = np.array([-np.sin(lam), np.cos(lam), 0.0])
+    east = np.array([-math.sin(lam), math.cos(lam), 0.0])
     north = np.cross(site, east)
     v = unit_vectors(g.lat[nodes], g.lon[nodes])
-    scale = 6371.0 / (v @ site)
-    return np.stack([(v @ east) * scale, (v @ north) * scale], axis=-1)
+    scale = 6371.0 / _dot(v, site)
+    return np.stack([_dot(v, east) * scale, _dot(v, north) * scale], axis=-1)
+
+
+def _dot(v: np.ndarray, w: np.ndarray) -> np.ndarray:
+    """v·w of each row of ``v`` (shape (n, 3)) with the 3-vector ``w``, in plain arithmetic
+    (a BLAS product may round by the processor's kernel)."""
+    return v[:, 0] * w[0] + v[:, 1] * w[1] + v[:, 2] * w[2]
 
 
 def _holds(corners: np.ndarray) -> bool:

@@ -19,6 +19,7 @@ from importlib import resources
 
 import numpy as np
 
+from frp_assess import libm
 from frp_assess.errors import InputError
 from frp_assess.motions.site.formulas import EARTH_RADIUS_KM, GRID_RETURN_PERIODS
 
@@ -104,7 +105,9 @@ def load_grid() -> HazardGrid:
 def unit_vectors(lat: np.ndarray, lon: np.ndarray) -> np.ndarray:
     """Unit vectors (shape (..., 3)) of points given by latitude and longitude [°]."""
     phi, lam = np.radians(lat), np.radians(lon)
-    return np.stack([np.cos(phi) * np.cos(lam), np.cos(phi) * np.sin(lam), np.sin(phi)], axis=-1)
+    return np.stack(
+        [libm.cos(phi) * libm.cos(lam), libm.cos(phi) * libm.sin(lam), libm.sin(phi)], axis=-1
+    )
 
 
 @functools.cache
@@ -127,7 +130,7 @@ def near_nodes(latitude: float, longitude: float, indices: np.ndarray) -> tuple[
     g = load_grid()
     site = unit_vectors(np.array(latitude), np.array(longitude))
     chord = np.linalg.norm(_node_vectors()[indices] - site, axis=1)
-    dist = 2.0 * EARTH_RADIUS_KM * np.arcsin(np.minimum(chord / 2.0, 1.0))
+    dist = 2.0 * EARTH_RADIUS_KM * libm.arcsin(np.minimum(chord / 2.0, 1.0))
     return tuple(
         NearNode(int(i), float(g.lat[i]), float(g.lon[i]), float(d))
         for i, d in zip(indices, dist, strict=True)
