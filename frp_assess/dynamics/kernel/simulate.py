@@ -57,13 +57,8 @@ from frp_assess.dynamics.kernel.step_control import (
     step_length,
     step_size,
 )
+from frp_assess.dynamics.kernel.step_scan import CRUSH, IMPACT, NO_EVENT, RUPTURE, search_step
 from frp_assess.dynamics.kernel.steppers import acceleration, step
-
-_NO_EVENT = 0
-_IMPACT = 1
-_RUPTURE = 2
-_LIMIT = 3  #: the collapse level: π/2 (fell) or α_x (first exceedance)
-_CRUSH = 4  #: θ_cr of the intact acting bar: the toe crushes
 
 
 class Outcome(NamedTuple):
@@ -89,37 +84,6 @@ def history_length(n_input: int, dt: float, collapse_mode: int) -> int:
     if collapse_mode != COLLAPSE_OVERTURNING:
         return n_input
     return n_input + int(math.ceil(MAX_FREE_VIBRATION / dt)) + 1
-
-
-@njit(cache=True, nogil=True)
-def _turning_peak(
-    theta: float,
-    omega: float,
-    a1: float,
-    h: float,
-    u_end: float,
-    u0: float,
-    slope: float,
-    s: float,
-    k_s: float,
-    floor: float,
-    c: tuple[float, float, float, float],
-    r1: float,
-    r2: float,
-    prm: KernelParams,
-) -> float:
-    """Largest s·θ at a turning point inside u ∈ (0, u_end) of a step, or −inf.
-
-    Only a maximum that the dense output puts above ``floor`` is located on the integrator
-    (:func:`.events.turning_point`): the others cannot change a peak.
-    """
-    c0, c1, c2, c3 = c
-    best = -math.inf
-    for r in (r1, r2):
-        is_max = 2.0 * c2 + 6.0 * c3 * r < 0.0
-        if 0.0 < r < u_end and is_max and ev.cubic(c0, c1, c2, c3, r) > floor:
-            best = max(best, ev.turning_point(theta, omega, a1, h, r * h, u0, slope, s, k_s, prm))
-    return best
 
 
 @njit(cache=True, nogil=True)
@@ -153,96 +117,21 @@ def _record_sample(
 
 
 @njit(cache=True, nogil=True)
+def _up_crossing(y0: float, y1: float, t0: float, span: float, level: float, last: float) -> float:
+    """The time [s] at which s·θ rose through ``level`` on a piece from (t0, y0) to
+    (t0 + span, y1), by linear interpolation, if it did; else ``last``, the previous one."""
+    if y0 < level <= y1:
+        return t0 + span * (level - y0) / (y1 - y0)
+    return last
+
+
+@njit(cache=True, nogil=True)
 def _verdict_at_end(theta: float, last_alpha_up: float, prm: KernelParams) -> tuple[int, float]:
     """(fate, collapse time) of the α_x-based rules when the input ends without a decision:
     `end-of-record` collapses when |θ| ≥ α_x then (at the last upward crossing of α_x)."""
     if prm.collapse_mode == COLLAPSE_END_OF_RECORD and abs(theta) >= prm.alpha_x:
         return FATE_EXCEEDED, last_alpha_up
     return FATE_STANDING, math.nan
-
-
-@njit(cache=True, nogil=True)
-def _first_event(
-    y0: float,
-    y1: float,
-    c: tuple[float, float, float, float],
-    r1: float,
-    r2: float,
-    bar_on: bool,
-    limit: float,
-    prm: KernelParams,
-) -> tuple[int, float, float]:
-    """The earliest event on the step's dense output ``c`` (from y0 = s·θ to y1):
-    (kind, u ∈ (0, 1], level)."""
-    c0, c1, c2, c3 = c
-    ymin = min(y0, y1)
-    ymax = max(y0, y1)
-    for r in (r1, r2):
-        if r > 0.0:
-            yr = ev.cubic(c0, c1, c2, c3, r)
-            ymin = min(ymin, yr)
-            ymax = max(ymax, yr)
-    event = _NO_EVENT
-    u_event = 2.0
-    level = 0.0
-    if ymin <= 0.0:
-        u = ev.first_crossing(c0, c1, c2, c3, r1, r2, 0.0, False)
-        if u >= 0.0:
-            event, u_event, level = _IMPACT, u, 0.0
-    if bar_on and ymax >= prm.theta_max:
-        u = ev.first_crossing(c0, c1, c2, c3, r1, r2, prm.theta_max, True)
-        if 0.0 <= u < u_event:
-            event, u_event, level = _RUPTURE, u, prm.theta_max
-    if bar_on and ymax >= prm.theta_cr:
-        u = ev.first_crossing(c0, c1, c2, c3, r1, r2, prm.theta_cr, True)
-        if 0.0 <= u < u_event:
-            event, u_event, level = _CRUSH, u, prm.theta_cr
-    if ymax >= limit:
-        u = ev.first_crossing(c0, c1, c2, c3, r1, r2, limit, True)
-        if 0.0 <= u < u_event:
-            event, u_event, level = _LIMIT, u, limit
-    return event, u_event, level
-
-
-@njit(cache=True, nogil=True)
-def _scan_step(
-    theta: float,
-    omega: float,
-    th1: float,
-    om1: float,
-    a1: float,
-    hh: float,
-    u0: float,
-    slope: float,
-    s: float,
-    k_s: float,
-    bar_on: bool,
-    limit: float,
-    floor: float,
-    top: float,
-    prm: KernelParams,
-) -> tuple[int, float, float, float]:
-    """The first event of an accepted step and the largest s·θ up to it:
-    (kind, u ∈ (0, 1], level, largest s·θ).  ``top``: the lowest level that matters (the
-    peak so far, the rupture/crushing level of an intact acting bar, the collapse limit)."""
-    y0 = s * theta
-    y1 = s * th1
-    m0 = s * omega * hh
-    m1 = s * om1 * hh
-    if quiet(y0, y1, m0, m1, top):
-        # the dense output stays inside (0, top): no event, no new peak
-        return _NO_EVENT, 2.0, 0.0, max(y0, y1)
-    c = ev.hermite(y0, y1, m0, m1)
-    r1, r2 = ev.critical_points(c[1], c[2], c[3])
-    event, u_event, level = _first_event(y0, y1, c, r1, r2, bar_on, limit, prm)
-    # the largest s·θ of the step up to the event (or its end)
-    u_end = 1.0 if event == _NO_EVENT else u_event
-    step_max = max(
-        y0,
-        y1 if event == _NO_EVENT else level,
-        _turning_peak(theta, omega, a1, hh, u_end, u0, slope, s, k_s, floor, c, r1, r2, prm),
-    )
-    return event, u_event, level, step_max
 
 
 @njit(cache=True, nogil=True)
@@ -391,16 +280,36 @@ def simulate(
             y1 = s * th1
             floor = peak_bar if bar_on else peak
             top = min(floor, bar_level) if bar_on else min(floor, limit)
-            event, u_event, level, step_max = _scan_step(
-                theta, omega, th1, om1, a1, hh, u0, slope, s, k_s, bar_on, limit, floor, top, prm
-            )
+            m0 = s * omega * hh
+            m1 = s * om1 * hh
+            if quiet(y0, y1, m0, m1, top):
+                # the dense output stays inside (0, top): no event, no new peak
+                event, u_event, level, step_max = NO_EVENT, 2.0, 0.0, max(y0, y1)
+            else:
+                event, u_event, level, step_max = search_step(
+                    theta,
+                    omega,
+                    a1,
+                    hh,
+                    u0,
+                    slope,
+                    s,
+                    k_s,
+                    bar_on,
+                    limit,
+                    floor,
+                    prm,
+                    y0,
+                    y1,
+                    m0,
+                    m1,
+                )
             peak = max(peak, step_max)
             if bar_on:
                 peak_bar = max(peak_bar, step_max)
 
-            if event == _NO_EVENT:
-                if y0 < prm.alpha_x <= y1:
-                    last_alpha_up = t_i + x + hh * (prm.alpha_x - y0) / (y1 - y0)
+            if event == NO_EVENT:
+                last_alpha_up = _up_crossing(y0, y1, t_i + x, hh, prm.alpha_x, last_alpha_up)
                 if y1 < 0.0:
                     # s·θ left its regime without a located crossing: only possible at
                     # round-off level right after an uplift; the wall is at rest.
@@ -430,24 +339,23 @@ def simulate(
             tau, om_e, _resid = ev.locate_level(
                 theta, omega, a1, hh, u_event * hh, u0, slope, s, k_s, level, prm
             )
-            if y0 < prm.alpha_x <= level:
-                last_alpha_up = t_i + x + tau * (prm.alpha_x - y0) / (level - y0)
+            last_alpha_up = _up_crossing(y0, level, t_i + x, tau, prm.alpha_x, last_alpha_up)
             x = x + tau
             t_event = t_i + x
             theta = s * level
             omega = om_e
             need_a = True
-            if event == _IMPACT:
+            if event == IMPACT:
                 n_impacts += 1
                 theta = 0.0
                 omega, s, resting = impact(om_e, s, prm)
-            elif event == _RUPTURE:
+            elif event == RUPTURE:
                 if n_ruptures < rupture_time.shape[0]:
                     rupture_time[n_ruptures] = t_event
                     rupture_side[n_ruptures] = int(s)
                 n_ruptures += 1
                 omega, intact_pos, intact_neg = rupture(om_e, s, intact_pos, intact_neg, prm)
-            elif event == _CRUSH:
+            elif event == CRUSH:
                 fate = FATE_CRUSHED
                 collapse_time = t_event
                 decided_time = t_event

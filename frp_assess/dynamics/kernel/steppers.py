@@ -12,6 +12,7 @@ from fractions import Fraction
 
 from numba import njit
 
+from frp_assess.dynamics.kernel.inlining import into
 from frp_assess.dynamics.kernel.params import METHOD_BS3, METHOD_DOPRI5, KernelParams
 from frp_assess.dynamics.kernel.trig import sin_cos
 
@@ -26,26 +27,44 @@ def acceleration(theta: float, s: float, u: float, k_s: float, prm: KernelParams
 
     With the edge pivot (ξ = 0) the reaction term is skipped: the paper's Eq. 10 bit for bit.
     """
+    return _rhs(theta, s, u, k_s, prm.p2, prm.sin_a, prm.cos_a, prm.xi, prm.kappa_per_k)
+
+
+@njit(cache=True, nogil=True, inline=into("dopri5"))
+def _rhs(
+    theta: float,
+    s: float,
+    u: float,
+    k_s: float,
+    p2: float,
+    sin_a: float,
+    cos_a: float,
+    xi: float,
+    kappa_per_k: float,
+) -> float:
+    """:func:`acceleration` with the wall's constants as numbers: a call that passes nine
+    floats in registers, where the whole :class:`KernelParams` went through memory (the
+    integrator calls it seven times a step)."""
     # sin(α s − θ) = s sinα cosθ − cosα sinθ ;  cos(α s − θ) = cosα cosθ + s sinα sinθ, so
     # the bracket is A·cosθ + B·sinθ with A = s sinα + u cosα − s ξ n², B = K_s − cosα + u s sinα.
     # A and B do not depend on θ: they are formed while sin θ, cos θ are computed, and the
     # stage's chain of dependent operations from θ to θ'' is the shortest (docs/model.md §4.2).
-    ssa = s * prm.sin_a
-    a_coef = ssa + u * prm.cos_a
-    b_coef = k_s - prm.cos_a + u * ssa
-    if prm.xi != 0.0 and k_s != 0.0:
+    ssa = s * sin_a
+    a_coef = ssa + u * cos_a
+    b_coef = k_s - cos_a + u * ssa
+    if xi != 0.0 and k_s != 0.0:
         # the bar force needs sin(|θ|/2) = s·sin(θ/2) (smooth across θ = 0 inside a step that
         # overshoots an impact before it is located): one sin/cos pair of θ/2 gives it and
         # sin θ, cos θ by the double-angle formulas, where √ and a division were needed
         sh, ch = sin_cos(0.5 * theta)
         st = 2.0 * sh * ch
         ct = 1.0 - 2.0 * sh * sh
-        n = 1.0 + k_s * prm.kappa_per_k * s * sh
-        return -prm.p2 * ((a_coef - s * prm.xi * n * n) * ct + b_coef * st)
-    if prm.xi != 0.0:  # no bar force: n = 1
-        a_coef -= s * prm.xi
+        n = 1.0 + k_s * kappa_per_k * s * sh
+        return -p2 * ((a_coef - s * xi * n * n) * ct + b_coef * st)
+    if xi != 0.0:  # no bar force: n = 1
+        a_coef -= s * xi
     st, ct = sin_cos(theta)
-    return (-prm.p2 * a_coef) * ct + (-prm.p2 * b_coef) * st
+    return (-p2 * a_coef) * ct + (-p2 * b_coef) * st
 
 
 #: The error norm measures θ against ERROR_FLOOR·α + |θ| and θ' against ERROR_FLOOR·p·α + |θ'|:
@@ -54,7 +73,7 @@ def acceleration(theta: float, s: float, u: float, k_s: float, prm: KernelParams
 ERROR_FLOOR = 1e-3
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, nogil=True, inline="always")
 def error_norm(
     theta: float,
     omega: float,
@@ -135,7 +154,7 @@ _E1, _E3, _E4, _E5, _E6, _E7 = (float(_DP_E[k]) for k in (0, 2, 3, 4, 5, 6))
 _F1, _F3, _F4, _F5, _F6 = (_error_nystrom(k) for k in (1, 3, 4, 5, 6))
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, nogil=True, inline="always")
 def dopri5(
     theta: float,
     omega: float,
@@ -159,19 +178,20 @@ def dopri5(
     dependent operations from one evaluation of θ'' to the next is as short as it can be.
     """
     hh = h * h
+    p2, sin_a, cos_a, xi, kpk = prm.p2, prm.sin_a, prm.cos_a, prm.xi, prm.kappa_per_k
     t2 = theta + h * _C2 * omega
-    a2 = acceleration(t2, s, u0 + slope * _C2 * h, k_s, prm)
+    a2 = _rhs(t2, s, u0 + slope * _C2 * h, k_s, p2, sin_a, cos_a, xi, kpk)
     t3 = (theta + h * _C3 * omega) + hh * (_N31 * a1)
-    a3 = acceleration(t3, s, u0 + slope * _C3 * h, k_s, prm)
+    a3 = _rhs(t3, s, u0 + slope * _C3 * h, k_s, p2, sin_a, cos_a, xi, kpk)
     t4 = (theta + h * _C4 * omega + hh * (_N41 * a1)) + hh * (_N42 * a2)
-    a4 = acceleration(t4, s, u0 + slope * _C4 * h, k_s, prm)
+    a4 = _rhs(t4, s, u0 + slope * _C4 * h, k_s, p2, sin_a, cos_a, xi, kpk)
     t5 = (theta + h * _C5 * omega + hh * (_N51 * a1 + _N52 * a2)) + hh * (_N53 * a3)
-    a5 = acceleration(t5, s, u0 + slope * _C5 * h, k_s, prm)
+    a5 = _rhs(t5, s, u0 + slope * _C5 * h, k_s, p2, sin_a, cos_a, xi, kpk)
     t6 = (theta + h * omega + hh * (_N61 * a1 + _N62 * a2 + _N63 * a3)) + hh * (_N64 * a4)
-    a6 = acceleration(t6, s, u0 + slope * h, k_s, prm)
+    a6 = _rhs(t6, s, u0 + slope * h, k_s, p2, sin_a, cos_a, xi, kpk)
     theta1 = (theta + h * omega + hh * (_N71 * a1 + _N73 * a3 + _N74 * a4)) + hh * (_N75 * a5)
     omega1 = omega + h * (_B1 * a1 + _B3 * a3 + _B4 * a4 + _B5 * a5 + _B6 * a6)
-    a7 = acceleration(theta1, s, u0 + slope * h, k_s, prm)
+    a7 = _rhs(theta1, s, u0 + slope * h, k_s, p2, sin_a, cos_a, xi, kpk)
     err_t = hh * (_F1 * a1 + _F3 * a3 + _F4 * a4 + _F5 * a5 + _F6 * a6)
     err_w = h * (_E1 * a1 + _E3 * a3 + _E4 * a4 + _E5 * a5 + _E6 * a6 + _E7 * a7)
     return theta1, omega1, a7, error_norm(theta, omega, theta1, omega1, err_t, err_w, prm)
@@ -236,7 +256,7 @@ def rk4(
     return theta1, omega1, math.nan, 0.0
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, nogil=True, inline=into("simulate"))
 def step(
     theta: float,
     omega: float,

@@ -1,0 +1,134 @@
+"""The events and the peak of one accepted step of the driver (:mod:`.simulate`).
+
+A step's dense output of y = s·θ is the cubic Hermite through (0, y0), (1, y1) with slopes
+m0 = s·θ'·h, m1; the driver tests first whether the step is quiet (the cubic stays inside
+(0, top): :func:`.step_control.quiet`, most steps) and calls :func:`search_step` only for
+the others: the first event on the cubic (impact, rupture, toe crushing, the collapse level),
+located on the integrator by :mod:`.events`, and the largest s·θ before it.
+"""
+
+from __future__ import annotations
+
+import math
+
+from numba import njit
+
+from frp_assess.dynamics.kernel import events as ev
+from frp_assess.dynamics.kernel.params import KernelParams
+
+NO_EVENT = 0
+IMPACT = 1
+RUPTURE = 2
+LIMIT = 3  #: the collapse level: π/2 (fell) or α_x (first exceedance)
+CRUSH = 4  #: θ_cr of the intact acting bar: the toe crushes
+
+
+@njit(cache=True, nogil=True)
+def turning_peak(
+    theta: float,
+    omega: float,
+    a1: float,
+    h: float,
+    u_end: float,
+    u0: float,
+    slope: float,
+    s: float,
+    k_s: float,
+    floor: float,
+    c: tuple[float, float, float, float],
+    r1: float,
+    r2: float,
+    prm: KernelParams,
+) -> float:
+    """Largest s·θ at a turning point inside u ∈ (0, u_end) of a step, or −inf.
+
+    Only a maximum that the dense output puts above ``floor`` is located on the integrator
+    (:func:`.events.turning_point`): the others cannot change a peak.
+    """
+    c0, c1, c2, c3 = c
+    best = -math.inf
+    for r in (r1, r2):
+        is_max = 2.0 * c2 + 6.0 * c3 * r < 0.0
+        if 0.0 < r < u_end and is_max and ev.cubic(c0, c1, c2, c3, r) > floor:
+            best = max(best, ev.turning_point(theta, omega, a1, h, r * h, u0, slope, s, k_s, prm))
+    return best
+
+
+@njit(cache=True, nogil=True)
+def first_event(
+    y0: float,
+    y1: float,
+    c: tuple[float, float, float, float],
+    r1: float,
+    r2: float,
+    bar_on: bool,
+    limit: float,
+    prm: KernelParams,
+) -> tuple[int, float, float]:
+    """The earliest event on the step's dense output ``c`` (from y0 = s·θ to y1):
+    (kind, u ∈ (0, 1], level)."""
+    c0, c1, c2, c3 = c
+    ymin = min(y0, y1)
+    ymax = max(y0, y1)
+    for r in (r1, r2):
+        if r > 0.0:
+            yr = ev.cubic(c0, c1, c2, c3, r)
+            ymin = min(ymin, yr)
+            ymax = max(ymax, yr)
+    event = NO_EVENT
+    u_event = 2.0
+    level = 0.0
+    if ymin <= 0.0:
+        u = ev.first_crossing(c0, c1, c2, c3, r1, r2, 0.0, False)
+        if u >= 0.0:
+            event, u_event, level = IMPACT, u, 0.0
+    if bar_on and ymax >= prm.theta_max:
+        u = ev.first_crossing(c0, c1, c2, c3, r1, r2, prm.theta_max, True)
+        if 0.0 <= u < u_event:
+            event, u_event, level = RUPTURE, u, prm.theta_max
+    if bar_on and ymax >= prm.theta_cr:
+        u = ev.first_crossing(c0, c1, c2, c3, r1, r2, prm.theta_cr, True)
+        if 0.0 <= u < u_event:
+            event, u_event, level = CRUSH, u, prm.theta_cr
+    if ymax >= limit:
+        u = ev.first_crossing(c0, c1, c2, c3, r1, r2, limit, True)
+        if 0.0 <= u < u_event:
+            event, u_event, level = LIMIT, u, limit
+    return event, u_event, level
+
+
+@njit(cache=True, nogil=True)
+def search_step(
+    theta: float,
+    omega: float,
+    a1: float,
+    hh: float,
+    u0: float,
+    slope: float,
+    s: float,
+    k_s: float,
+    bar_on: bool,
+    limit: float,
+    floor: float,
+    prm: KernelParams,
+    y0: float,
+    y1: float,
+    m0: float,
+    m1: float,
+) -> tuple[int, float, float, float]:
+    """The first event of an accepted step that is not quiet (:func:`.step_control.quiet`,
+    tested by the driver first: most steps are, and need no call) and the largest s·θ up to
+    it: (kind, u ∈ (0, 1], level, largest s·θ).  The step's dense output is the cubic
+    through (0, y0 = s·θ) and (1, y1) with slopes m0 = s·θ'·h, m1; ``floor``: the peak so far,
+    below which a turning point cannot change a peak."""
+    c = ev.hermite(y0, y1, m0, m1)
+    r1, r2 = ev.critical_points(c[1], c[2], c[3])
+    event, u_event, level = first_event(y0, y1, c, r1, r2, bar_on, limit, prm)
+    # the largest s·θ of the step up to the event (or its end)
+    u_end = 1.0 if event == NO_EVENT else u_event
+    step_max = max(
+        y0,
+        y1 if event == NO_EVENT else level,
+        turning_peak(theta, omega, a1, hh, u_end, u0, slope, s, k_s, floor, c, r1, r2, prm),
+    )
+    return event, u_event, level, step_max
