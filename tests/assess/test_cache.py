@@ -11,9 +11,9 @@ from pathlib import Path
 import pytest
 
 from frp_assess.app.rerun import SIDECAR
-from frp_assess.assess.cache import FIELD_CHECKS, MAX_ENTRY_BYTES, IdaCache, cache_file
+from frp_assess.assess.cache import FIELD_CHECKS, MAX_ENTRY_BYTES, IdaCache, cache_file, entry_text
 from frp_assess.cli import main
-from frp_assess.dynamics import IdaResult
+from frp_assess.dynamics import IdaPoint, IdaResult
 from tests.cli.outputs_helpers import tiny_project
 
 GOOD = IdaResult(
@@ -136,3 +136,43 @@ def test_damaged_curve_point(tmp_path: Path, point: object) -> None:
     cache = IdaCache(tmp_path / ".cache", warn=warnings.append)
     cache_file(tmp_path / ".cache", KEY).write_text(_entry(curve=[point]), encoding="utf-8")
     assert cache.get(KEY) is None and len(warnings) == 1
+
+
+@pytest.mark.parametrize(
+    "result",
+    [
+        GOOD,
+        IdaResult(
+            pga=0.9,
+            c0=1.1,
+            collapse_multiplier=None,
+            a_dyn=None,
+            q=None,
+            runs=3,
+            survivor_multiplier=None,
+            curve=(IdaPoint(1.1, False, 0.25), IdaPoint(1.21, True, 1.0e300)),
+            failure_mode=None,
+        ),
+        IdaResult(
+            pga=2.0,
+            c0=0.5,
+            collapse_multiplier=0.55,
+            a_dyn=1.1,
+            q=1.1,
+            runs=2,
+            survivor_multiplier=0.5,
+            curve=(IdaPoint(0.5, False, 0.1 + 0.2), IdaPoint(0.55, True, 1.0)),
+            failure_mode="rupture then overturning",
+        ),
+    ],
+    ids=["no curve", "no collapse", "collapsed"],
+)
+def test_entry_text_is_the_json_of_asdict(result: IdaResult, tmp_path: Path) -> None:
+    """The fast writer gives the bytes ``json.dumps(dataclasses.asdict(...))`` gave (the
+    reference: the standard library), and the reader takes them back to the same result."""
+    text = entry_text(result)
+    assert text == json.dumps(asdict(result))
+    cache = IdaCache(tmp_path)
+    cache.put(KEY, result)
+    assert cache_file(tmp_path, KEY).read_text(encoding="utf-8") == text
+    assert cache.get(KEY) == result
