@@ -7,9 +7,10 @@ A newcomer's map:
 * At rest nothing is integrated: the instant when the linear ground acceleration exceeds
   g·tan α_x is solved for exactly (:func:`.jumps.uplift`) and rocking starts there.
 * Rocking: one step of the chosen method (:mod:`.steppers`), rejected and retried smaller
-  while its error estimate exceeds the tolerance.  An accepted step is scanned for events on
-  its dense output and each event is located on the integrator (:mod:`.events`); the jump is
-  applied there (:mod:`.jumps`) and the step restarts from that instant.
+  while its error estimate exceeds the tolerance (the step is inlined here:
+  :mod:`.inlining`).  An accepted step that is not quiet is scanned for events on its dense
+  output (:mod:`.step_scan`) and each event is located on the integrator (:mod:`.events`);
+  the jump is applied there (:mod:`.jumps`) and the step restarts from that instant.
   The toe crushing (|θ| reaches θ_cr with the acting bar intact) is a collapse, as is the fall.
 * Collapse ``overturning``: after the input the wall moves freely until it falls or can no
   longer fall (:mod:`.fate`).  ``end-of-record`` and ``first-exceedance`` judge |θ| against
