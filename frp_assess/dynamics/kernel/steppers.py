@@ -42,9 +42,9 @@ def _rhs(
     xi: float,
     kappa_per_k: float,
 ) -> float:
-    """:func:`acceleration` with the wall's constants as numbers: a call that passes nine
-    floats in registers, where the whole :class:`KernelParams` went through memory (the
-    integrator calls it seven times a step)."""
+    """:func:`acceleration` with the wall's constants as numbers.  numba inlines it into
+    :func:`dopri5`, which evaluates it seven times a step (:mod:`.inlining`); the other
+    callers, off the path of every step, go through :func:`acceleration`."""
     # sin(α s − θ) = s sinα cosθ − cosα sinθ ;  cos(α s − θ) = cosα cosθ + s sinα sinθ, so
     # the bracket is A·cosθ + B·sinθ with A = s sinα + u cosα − s ξ n², B = K_s − cosα + u s sinα.
     # A and B do not depend on θ: they are formed while sin θ, cos θ are computed, and the
