@@ -98,7 +98,7 @@ PACKAGE = Path(__file__).resolve().parents[1] / "frp_assess"
 def numba_cache_is_warm(package: Path = PACKAGE) -> bool:
     """Whether every module with cached kernels (``cache=True``) has a numba index in its
     ``__pycache__`` written after the module's last change: then the workers load the kernels
-    from the cache and warming it (:func:`warm_numba_cache`, before any worker starts: 26 s
+    from the cache and warming it (:func:`warm_numba_cache`, before any worker starts: 26–34 s
     of wall time from a cold cache, all of it added to the run's) is skipped.  An edited
     module, a new one or a fresh checkout has no such index: the cache is warmed.  (Numba
     itself decides whether an index is stale by the same module's stamp: a kernel inlined
@@ -120,7 +120,9 @@ def warm_numba_cache() -> None:
     (tests/golden/projects/building-crushing.yaml) through the CLI, quietly, for whatever
     else it calls; by then it all comes from the cache.  The two processes compile disjoint
     modules (numba writes one index file per function), so neither overwrites the other's.
-    Measured cold: 40.5 s wall for the gable alone, one core."""
+    Measured cold on this machine: 26–34 s wall (4 runs), against 40–47 s (3 runs) for the
+    gable alone on one core.  (Compiling the driver with its history in the second process
+    too was tried: both then compiled the driver's helpers, 31 s and 54 CPU-s.)"""
     from tests.golden.golden import run_project
 
     helper = subprocess.Popen(
