@@ -157,15 +157,11 @@ def warm_rocking_kernels() -> None:
 
 
 def warm_motion_kernels() -> None:
-    """The response spectra and the floor filter, compiled (frp_assess/motions), for a
-    writable and a read-only record (two types to numba)."""
+    """The response spectra and the floor filter, compiled (frp_assess/motions): one version
+    each, since every record reaches them read-only (``motions.record.kernel_record``)."""
     from frp_assess.motions.floor import floor_acceleration
     from frp_assess.motions.response import response_spectrum
 
-    writable = synthetic_record(2)
-    read_only = writable.copy()
-    read_only.flags.writeable = False
-    periods = np.geomspace(0.02, 4.0, 30)
-    for acc in (writable, read_only):
-        response_spectrum(acc, 0.01, periods)
-        floor_acceleration(acc, 0.01, height_building=9.0, storeys=3, wall_base=6.0, period=0.3)
+    acc = synthetic_record(2)
+    response_spectrum(acc, 0.01, np.geomspace(0.02, 4.0, 30))
+    floor_acceleration(acc, 0.01, height_building=9.0, storeys=3, wall_base=6.0, period=0.3)

@@ -27,7 +27,7 @@ from numba import njit
 from numpy.typing import ArrayLike, NDArray
 
 from frp_assess import libm
-from frp_assess.motions.record import G
+from frp_assess.motions.record import G, kernel_record
 from frp_assess.motions.response import _coefficients
 from frp_assess.motions.spectra import ElasticSpectrum, damping_correction, ec8_shape
 
@@ -149,7 +149,7 @@ def floor_acceleration(
     _check_oscillator(period, damping)
     if not (math.isfinite(dt) and dt > 0.0):
         raise ValueError(f"dt must be > 0 s, got {dt!r}")
-    ground = np.ascontiguousarray(np.ravel(acc), dtype=np.float64)
+    ground = kernel_record(np.ravel(acc))
     if psi == 0.0:
         return ground.copy()
     rel = _relative_acceleration(ground, float(dt), float(period), float(damping))

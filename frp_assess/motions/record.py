@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 #: Standard gravity [m/s²] (used for every g <-> m/s² conversion in the package).
 G = 9.80665
@@ -55,3 +55,18 @@ class Record:
     def pga_g(self) -> float:
         """Peak ground acceleration [g]."""
         return self.pga / G
+
+
+def kernel_record(acc: ArrayLike) -> NDArray[np.float64]:
+    """Samples as every compiled kernel takes them (the rocking driver and the IDA search,
+    the response spectra, the floor filter): float64, C-contiguous and read-only.
+
+    numba compiles one machine-code version per argument type, and a writable and a
+    read-only array are two types: the search (9 CPU-s to compile), the driver (3 CPU-s) and
+    the spectra (2 CPU-s) were compiled twice, once for the records of a project (read-only)
+    and once for arrays made in memory.  Every caller goes through here, so there is one
+    version of each.  The array passed in is not changed (a read-only view of it, or of a
+    converted copy)."""
+    view = np.ascontiguousarray(acc, dtype=np.float64).view()
+    view.flags.writeable = False
+    return view

@@ -22,6 +22,8 @@ import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike, NDArray
 
+from frp_assess.motions.record import kernel_record
+
 
 @njit(cache=True, nogil=True)
 def _coefficients(omega: float, xi: float, h: float) -> tuple[float, ...]:
@@ -208,7 +210,7 @@ def response_spectrum(
     per = np.ascontiguousarray(np.ravel(periods), dtype=np.float64)
     if np.any(per < 0) or not np.all(np.isfinite(per)):
         raise ValueError("periods must be finite and >= 0")
-    a = np.ascontiguousarray(np.ravel(acc), dtype=np.float64)
+    a = kernel_record(np.ravel(acc))
     out = np.empty_like(per)
     zero = per == 0.0
     out[zero] = np.max(np.abs(a)) if a.size else 0.0  # T = 0: the PGA

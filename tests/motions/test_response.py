@@ -152,3 +152,33 @@ def test_the_periods_side_by_side_equal_each_period_alone():
             raised += count
             assert value == expected, (dt, xi, T)
     assert raised > 0
+
+
+def test_the_kernels_get_a_read_only_record_whatever_the_caller_passes(monkeypatch):
+    """A writable and a read-only array are two argument types for numba, so the spectra's
+    kernel was compiled twice (2 CPU-s on a cold cache): response_spectrum and the floor
+    filter hand their kernels a read-only view of a writable input (which stays writable)."""
+    from frp_assess.motions import floor, response
+
+    seen = []
+
+    def spy(module, name):
+        kernel = getattr(module, name)
+
+        def call(acc, *args):
+            seen.append((name, acc.flags.writeable))
+            return kernel(acc, *args)
+
+        monkeypatch.setattr(module, name, call)
+
+    spy(response, "_psa")
+    spy(floor, "_relative_acceleration")
+    acc = np.sin(np.arange(400) * 0.1)
+    assert acc.flags.writeable
+    sa = response_spectrum(acc, 0.01, [0.2, 0.5])
+    a_floor = floor.floor_acceleration(
+        acc, 0.01, height_building=9.0, storeys=3, wall_base=6.0, period=0.3
+    )
+    assert seen == [("_psa", False), ("_relative_acceleration", False)]
+    assert acc.flags.writeable
+    assert sa.shape == (2,) and np.all(sa > 0.0) and a_floor.shape == acc.shape

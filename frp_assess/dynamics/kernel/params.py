@@ -10,8 +10,8 @@ from __future__ import annotations
 
 from typing import NamedTuple
 
-import numpy as np
-from numpy.typing import ArrayLike, NDArray
+# the records' form for every compiled kernel, the spectra's too (re-exported here)
+from frp_assess.motions.record import kernel_record as kernel_record
 
 BAR_NONE = 0  #: unreinforced
 BAR_SHARED = 1  #: centred bar: acts for both signs of θ, one rupture removes it for both
@@ -88,16 +88,3 @@ class KernelParams(NamedTuple):
     alpha_x: float  #: α_x = atan((B − x_W)/H) [rad]: the tipping limit of the rules and outputs
     tan_ax: float  #: tan α_x [-]: the uplift threshold in g
     tip_bar: float  #: θ*: where V stops rising with the acting bar intact [rad] (≤ π/2)
-
-
-def kernel_record(acc: ArrayLike) -> NDArray[np.float64]:
-    """A record as the compiled kernel takes it: float64, C-contiguous and read-only.
-
-    numba compiles one machine-code version per argument type, and a writable and a
-    read-only array are two types: the search (9 CPU-s to compile) and the driver (3 CPU-s)
-    were compiled twice, once for the records of a project (read-only) and once for arrays
-    made in memory.  Every caller goes through here, so there is one version of each.  The
-    array passed in is not changed (a read-only view of it, or of a converted copy)."""
-    view = np.ascontiguousarray(acc, dtype=np.float64).view()
-    view.flags.writeable = False
-    return view
