@@ -58,13 +58,20 @@ def run_once(
     load_before = os.getloadavg()[0]
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
-    code = subprocess.call(
-        [python, "-m", "pytest", "-q", "-p", "no:cacheprovider", *pytest_args],
-        cwd=root,
-        stdout=subprocess.DEVNULL,
-        env=env,
-    )
-    wall = time.perf_counter() - t0
+    with tempfile.TemporaryFile("w+", encoding="utf-8") as log:
+        code = subprocess.call(
+            [python, "-m", "pytest", "-q", "-p", "no:cacheprovider", *pytest_args],
+            cwd=root,
+            stdout=log,
+            stderr=subprocess.STDOUT,
+            env=env,
+        )
+        wall = time.perf_counter() - t0
+        if code != 0:  # a failed run is no measurement: say what failed
+            log.seek(0)
+            lines = log.read().splitlines()
+            failed = [ln for ln in lines if ln.startswith(("FAILED", "ERROR"))]
+            print("\n".join(failed or lines[-30:]), file=sys.stderr)
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     return {
