@@ -104,11 +104,6 @@ def search(
     """
     quiet = running_max_abs(acc)
     h = np.empty(1)  # the history arrays of the driver: not written (no history here)
-    # False, but a value of run time, not the constant: numba compiles a function once per
-    # argument type, and the constant False is a type of its own, so the driver was compiled
-    # twice, here and for RockingModel.run's histories (8 CPU-s more on a cold cache, for a
-    # kernel 1-2 % faster: tests/dynamics/test_ida_search.py checks there is one version)
-    record_history = h.shape[0] > 1
     r_time = np.zeros(2)
     r_side = np.zeros(2, dtype=np.int64)
     n = 0
@@ -121,9 +116,11 @@ def search(
         if n >= multiplier.shape[0]:
             return n, STATUS_TOO_MANY_RUNS
         start = quiet_intervals(quiet, c, prm)
-        out = simulate(
-            acc[start:], dt, c, n_tail, prm, 0.0, 0.0, record_history, h, h, h, r_time, r_side
-        )
+        # record_history as the constant False: numba compiles a version of the driver
+        # without the history for it (a version of its own, beside the one of
+        # RockingModel.run: 8 CPU-s more on a cold cache), 1.5-5 % faster per IDA than with
+        # a flag known only at run time (docs/model.md §4.2)
+        out = simulate(acc[start:], dt, c, n_tail, prm, 0.0, 0.0, False, h, h, h, r_time, r_side)
         multiplier[n] = c
         fate[n] = out.fate
         peak[n] = out.peak

@@ -104,28 +104,3 @@ def test_a_time_history_from_its_quiet_start_is_the_same_numbers():
     for name in ("final_theta", "final_omega", "steps", "rejected"):
         assert getattr(skipped, name) == getattr(full, name), name
     assert full.steps > 100  # it rocked
-
-
-def test_the_search_calls_the_driver_with_a_run_time_flag():
-    """One compiled driver for the search and for RockingModel.run's histories: numba
-    compiles a function once per argument type, and a constant ``False`` written in compiled
-    code is a type of its own (``Literal[bool]``), so a constant here had the driver compiled a
-    second time (8 CPU-s on a cold cache).  Checked on the source, because a warm cache loads
-    the search without compiling, and nothing at run time would show the second version."""
-    import ast
-    import inspect
-
-    from frp_assess.dynamics import ida_search
-
-    tree = ast.parse(inspect.getsource(ida_search))
-    calls = [
-        node
-        for node in ast.walk(tree)
-        if isinstance(node, ast.Call)
-        and isinstance(node.func, ast.Name)
-        and node.func.id == "simulate"
-    ]
-    assert len(calls) == 1
-    record_history = calls[0].args[7]  # simulate(acc, dt, scale, n_tail, prm, θ0, θ'0, record…
-    assert not isinstance(record_history, ast.Constant), ast.dump(record_history)
-    assert list(inspect.signature(simulate.py_func).parameters)[7] == "record_history"
