@@ -71,13 +71,18 @@ class MainTabs(Tabbed):
         focused = self.screen.focused
         if focused is not None and pane in focused.ancestors:
             return
-        chain = self.screen.focus_chain  # only widgets that are shown
         first = FIRST_FOCUS.get(tab_id)
-        if first is not None:
-            target = self.query_one(first)
-            if target in chain:
-                target.focus(scroll_visible=False)  # the pane starts at its top
-                return
+        targets = self.query(first) if first is not None else None
+        if targets is not None and not targets:
+            # not made yet: the results' views are mounted a moment after they are made
+            # (ResultsPane.build); come back once they are
+            for results in pane.query(ResultsPane):
+                if not results.when_ready(lambda: self.focus_in(tab_id)):
+                    return
+        chain = self.screen.focus_chain  # only widgets that are shown
+        if targets and targets.first() in chain:
+            targets.first().focus(scroll_visible=False)  # the pane starts at its top
+            return
         for widget in chain:
             if pane in widget.ancestors and not isinstance(widget, ScrollableContainer | Tabs):
                 widget.focus()

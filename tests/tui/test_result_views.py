@@ -28,6 +28,7 @@ from frp_assess.results.checks import CaseChecks, KinematicChecks
 from frp_assess.results.model import AssessmentResult, DesignRow
 from frp_assess.tui.app import FrpAssessApp
 from frp_assess.tui.core.fragility import lognormal_cdf, pga_axis
+from frp_assess.tui.main_tabs import MainTabs
 from frp_assess.tui.plots import PlotView, render_plot
 from frp_assess.tui.ranking_table import RANKING_COLUMNS, RankingTable
 from frp_assess.tui.result_views import (
@@ -246,6 +247,29 @@ def test_results_views_show_bars_pivot_checks_and_sensitivity(run: Run, small_pr
             c = r.cases[2]
             assert f"bars: {bars_text(c.as_built)}" in summary
             assert f"pivot: x/B = {c.pivot.depth_ratio:.3f}" in summary
+
+    run_async(body)
+
+
+@pytest.mark.slow
+def test_the_focus_waits_for_the_results_views_to_be_mounted(run: Run, small_project: Path):
+    """The Results tab's focus goes to the ranking table, which is mounted a moment after
+    the views are made (:meth:`ResultsPane.build`).  A focus asked for in between used to
+    look the table up before it existed and crash the app (NoMatches; seen in CI under
+    load, 2026-11-26): it now waits for the views, then focuses the table."""
+
+    async def body() -> None:
+        app = FrpAssessApp(small_project)
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause()
+            tabs = app.query_one("#tabs", MainTabs)
+            pane = app.query_one(ResultsPane)
+            pane.show(run.plain, "out")  # makes the views; they are not mounted yet
+            tabs.active = "tab-results"
+            assert not pane.ready and not app.query("#ranking-table")
+            tabs.focus_in("tab-results")  # the lookup that crashed
+            await settle(pilot, lambda: pane.ready and pane.results is run.plain)
+            await settle(pilot, lambda: isinstance(app.focused, RankingTable))
 
     run_async(body)
 
