@@ -118,7 +118,7 @@ def search(
         start = quiet_intervals(quiet, c, prm)
         # record_history as the constant False: numba compiles a version of the driver
         # without the history for it (a version of its own, beside the one of
-        # RockingModel.run: 8 CPU-s more on a cold cache), 1.5-5 % faster per IDA than with
+        # RockingModel.run: 8 CPU-s more on a cold cache), 1.3-9 % faster per IDA than with
         # a flag known only at run time (docs/model.md §4.2)
         out = simulate(acc[start:], dt, c, n_tail, prm, 0.0, 0.0, False, h, h, h, r_time, r_side)
         multiplier[n] = c
