@@ -5,7 +5,8 @@ Each shortcut must give what the longer way gives:
 * the step-size factor without the power, below the error where it is capped at 5;
 * the quiet-step test: a Hermite cubic whose Bernstein control points lie in (0, top) never
   leaves (0, top) (the convex-hull property of the Bernstein form; Farin, *Curves and Surfaces
-  for CAGD*, 5th ed., §5.3), checked by dense sampling;
+  for CAGD*, 5th ed., §5.3), checked by dense sampling; one that starts at θ = 0 after an
+  impact, only when the search on its cubic finds nothing;
 * the crossing on the cubic (Newton inside a bracket) against numpy's polynomial roots;
 * the event located with its last correction on the Taylor cubic against Newton run to the
   end on the integrator (the impacts of free rocking against Housner's closed form, with all
@@ -91,6 +92,31 @@ def test_quiet_steps_stay_inside() -> None:
             y = c0 + u * (c1 + u * (c2 + u * c3))
             assert y.min() > 0.0 and y.max() < top
     assert quiet_steps > 400
+
+
+def test_a_step_that_starts_at_an_impact_is_quiet_only_when_its_search_finds_nothing() -> None:
+    """y0 = 0 (the step right after an impact): when the test says quiet, the cubic stays in
+    (0, top) on (0, 1] (dense sampling) and the search it saves finds no event and no turning
+    point above ``top`` (the first crossing of 0 and of ``top`` on the cubic: none)."""
+    rng = np.random.default_rng(13)
+    u = np.linspace(0.0, 1.0, 2001)[1:]
+    quiet_steps = other = 0
+    for _ in range(4000):
+        y1 = float(rng.uniform(-0.2, 1.2))
+        m0 = float(abs(rng.normal(0.0, 0.8)))
+        m1 = float(rng.normal(0.0, 0.8))
+        top = 1.0
+        c = ev.hermite(0.0, y1, m0, m1)
+        r1, r2 = ev.critical_points(c[1], c[2], c[3])
+        if quiet(0.0, y1, m0, m1, top):
+            quiet_steps += 1
+            y = c[0] + u * (c[1] + u * (c[2] + u * c[3]))
+            assert y.min() > 0.0 and y.max() < top
+            assert ev.first_crossing(*c, r1, r2, 0.0, False) < 0.0
+            assert ev.first_crossing(*c, r1, r2, top, True) < 0.0
+        else:
+            other += 1
+    assert quiet_steps > 400 and other > 400
 
 
 def test_crossing_on_the_cubic_matches_the_polynomial_roots() -> None:

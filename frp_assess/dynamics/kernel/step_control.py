@@ -79,9 +79,14 @@ def grow_threshold(exponent: float) -> float:
 @njit(cache=True, nogil=True)
 def quiet(y0: float, y1: float, m0: float, m1: float, top: float) -> bool:
     """Whether the Hermite cubic through (0, y0), (1, y1) with slopes m0, m1 stays inside
-    (0, top): its Bernstein control points y0, y0 + m0/3, y1 − m1/3, y1 do (the cubic lies in
-    their convex hull).  Then the step holds no event and no turning point above ``top``, and
-    the critical points and crossings need not be computed (most steps)."""
+    (0, top) for u in (0, 1]: its Bernstein control points y0, y0 + m0/3, y1 − m1/3, y1 do (the
+    cubic lies in their convex hull).  Then the step holds no event and no turning point above
+    ``top``, and the critical points and crossings need not be computed (most steps).
+
+    y0 = 0 is allowed when the other three are positive: the step that starts at an impact
+    (about a tenth of all steps) leaves θ = 0 at once and stays away from it, and its search
+    would find nothing (a crossing needs the cubic above 0 at the start of its piece).
+    """
     b1 = y0 + m0 / 3.0
     b2 = y1 - m1 / 3.0
-    return min(min(y0, y1), min(b1, b2)) > 0.0 and max(max(y0, y1), max(b1, b2)) < top
+    return y0 >= 0.0 and min(min(y1, b1), b2) > 0.0 and max(max(y0, y1), max(b1, b2)) < top
