@@ -203,6 +203,7 @@ class FrpAssessApp(PaneLookupApp):
                     out_dir,
                     self.previous_cancel,
                     self.jobs,
+                    self.path,  # the project is the file's content: it was just read
                 )
                 self.run_worker(
                     job, thread=True, exclusive=True, group="previous", exit_on_error=False
@@ -223,8 +224,8 @@ class FrpAssessApp(PaneLookupApp):
             )
             return
         panel.log_line(
-            f"results of the run of {o.results.created} shown (rebuilt from the cache in "
-            f"{out_dir}/); recommended: {recommendation_text(o.results)}"
+            f"results of the run of {o.results.created} shown ({out_dir}/); "
+            f"recommended: {recommendation_text(o.results)}"
         )
         self.show_outcome(o)
 

@@ -81,11 +81,22 @@ def previous_results_job(
     out_dir: Path,
     cancel: threading.Event,
     jobs: int | None,
+    project_file: Path | None = None,
 ) -> None:
-    """Rebuild the last run's results from the cache; posts PreviousLoaded (not if
+    """The last run's results, as stored when ``project_file`` (the file ``project`` was
+    read from, unedited) gives the inputs they carry, else rebuilt from the cache
+    (:func:`frp_assess.app.assessment.load_previous`); posts PreviousLoaded (not if
     cancelled)."""
     try:
-        outcome = load_previous(project, base_dir, input_file, out_dir, cancel=cancel, jobs=jobs)
+        outcome = load_previous(
+            project,
+            base_dir,
+            input_file,
+            out_dir,
+            cancel=cancel,
+            jobs=jobs,
+            project_file=project_file,
+        )
     except Cancelled:
         return
     except Exception as exc:  # noqa: BLE001 - a note in the run log, never a crash

@@ -26,7 +26,8 @@ class RunDone(Message):
 
 
 class PreviousLoaded(Message):
-    """The results of the last run, rebuilt from the cache at start (None: none match)."""
+    """The results of the last run at start: as stored when the project file is unchanged
+    since, else rebuilt from the cache (None: none match)."""
 
     def __init__(self, outcome: RunOutcome | None, error: str = "") -> None:
         super().__init__()

@@ -243,6 +243,36 @@ def test_load_previous_rebuilds_the_last_run_only_when_it_matches(tmp_path):
     assert load_previous(changed, tmp_path, "small.yaml", tmp_path, cancel=stop) is None
 
 
+@pytest.mark.slow
+def test_load_previous_reads_the_stored_run_when_the_file_is_unchanged(tmp_path):
+    """Opening a project file whose last run carries the digest of the file as it is shows
+    that run as stored: nothing is recomputed, so it is shown even with the IDA cache gone
+    (rebuilding would need it).  Once the file changes, the stored run is not believed: it is
+    rebuilt from the cache, here gone, so nothing is shown."""
+    import shutil
+    import threading
+
+    from frp_assess.app.assessment import prepare_run, run_prepared
+    from frp_assess.tui.core.session import load_previous
+
+    path = tmp_path / "small.yaml"
+    path.write_text(SMALL, encoding="utf-8")
+    project = load_project_text(SMALL, "small.yaml").project
+    out = tmp_path / "small-results"
+    stop = threading.Event()
+    stored = run_prepared(
+        prepare_run(project, tmp_path, "small.yaml"), out, cancel=stop, jobs=2, project_file=path
+    ).results
+    assert stored.inputs_digest
+    shutil.rmtree(out / ".cache")
+    args = (project, tmp_path, "small.yaml", out)
+    assert load_previous(*args, cancel=stop) is None  # rebuilding needs the cache
+    got = load_previous(*args, cancel=stop, project_file=path)
+    assert got is not None and got.results == stored and got.stats.computed == 0
+    path.write_text(SMALL + "\n# edited\n", encoding="utf-8")
+    assert load_previous(*args, cancel=stop, project_file=path) is None
+
+
 def test_save_project_refuses_bad_paths_and_says_whether_comments_were_kept(tmp_path):
     """A bad file name is refused with the same message the save dialog shows; a new file
     gets the whole project, an opened one keeps its text (here, its comment)."""
