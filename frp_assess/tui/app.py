@@ -199,11 +199,10 @@ class FrpAssessApp(PaneLookupApp):
                     self.post_message,
                     self.project,
                     self.base_dir,
-                    self.path.name,
+                    self.path,  # the project is this file's content: it was just read
                     out_dir,
                     self.previous_cancel,
                     self.jobs,
-                    self.path,  # the project is the file's content: it was just read
                 )
                 self.run_worker(
                     job, thread=True, exclusive=True, group="previous", exit_on_error=False

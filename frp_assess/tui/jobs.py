@@ -77,21 +77,20 @@ def previous_results_job(
     post: Post,
     project: Project,
     base_dir: Path,
-    input_file: str,
+    project_file: Path,
     out_dir: Path,
     cancel: threading.Event,
     jobs: int | None,
-    project_file: Path | None = None,
 ) -> None:
-    """The last run's results, as stored when ``project_file`` (the file ``project`` was
-    read from, unedited) gives the inputs they carry, else rebuilt from the cache
+    """The last run's results of ``project``, read from ``project_file`` and not edited
+    since: as stored when the file gives the inputs they carry, else rebuilt from the cache
     (:func:`frp_assess.app.assessment.load_previous`); posts PreviousLoaded (not if
     cancelled)."""
     try:
         outcome = load_previous(
             project,
             base_dir,
-            input_file,
+            project_file.name,
             out_dir,
             cancel=cancel,
             jobs=jobs,
