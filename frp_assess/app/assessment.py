@@ -19,12 +19,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from frp_assess.app.report import write_outputs
-from frp_assess.app.rerun import (
-    project_changed,
-    project_digest,
-    referenced_paths,
-    write_sidecar,
-)
+from frp_assess.app.rerun import project_digest, referenced_paths, unchanged_run, write_sidecar
 from frp_assess.assess.cache import IdaCache, cache_file, record_digest, task_key
 from frp_assess.assess.floor_input import floor_record, floor_spectra
 from frp_assess.assess.from_project import inputs_from_project, load_inputs
@@ -395,9 +390,10 @@ def load_previous(
     """The last run into ``out_dir`` again, for the project as it is.
 
     ``project_file``: the file ``project`` was read from, when ``project`` is that file's
-    content.  When the stored results carry the digest of that file's inputs as they are now
-    (:func:`frp_assess.app.rerun.project_changed`: the same rule that makes an unchanged
-    ``frp-assess run`` recompute nothing), they are those results: they are shown as read.
+    content.  When the stored run is that of the file's inputs as they are now
+    (:func:`frp_assess.app.rerun.unchanged_run`, the rule that makes an unchanged
+    ``frp-assess run`` recompute nothing: the digest of the inputs, the output set complete,
+    results.json the one the run wrote), its results are shown as read.
     Otherwise they are rebuilt from the cache, and no result file is written (a design-mode
     search may add IDAs to the cache).  None when there was no run (no ``results.json``) or
     when some (case, record) IDA of the project is not in the cache (the project changed
@@ -410,11 +406,7 @@ def load_previous(
         return None
     inputs = inputs_from_project(project, base_dir, input_file)
     seismic = prepare_records(inputs)
-    if (
-        project_file is not None
-        and previous.inputs_digest
-        and not project_changed(project_file, project, previous.inputs_digest)
-    ):
+    if project_file is not None and unchanged_run(project_file, out_dir, pdf=False):
         stats = RunStats(0, 0, Path(out_dir))  # no IDA computed, none read from the cache
         return RunOutcome(previous, seismic, inputs, Path(out_dir), stats, project)
     if missing_idas(inputs, seismic, out_dir):

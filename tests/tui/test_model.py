@@ -245,10 +245,11 @@ def test_load_previous_rebuilds_the_last_run_only_when_it_matches(tmp_path):
 
 @pytest.mark.slow
 def test_load_previous_reads_the_stored_run_when_the_file_is_unchanged(tmp_path):
-    """Opening a project file whose last run carries the digest of the file as it is shows
-    that run as stored: nothing is recomputed, so it is shown even with the IDA cache gone
-    (rebuilding would need it).  Once the file changes, the stored run is not believed: it is
-    rebuilt from the cache, here gone, so nothing is shown."""
+    """Opening a project file whose last run is that of the file as it is (the rule of an
+    unchanged ``run``) shows that run as stored: nothing is recomputed, so it is shown even
+    with the IDA cache gone (rebuilding would need it).  A results.json replaced since, or
+    a changed file, is not believed: the run is rebuilt from the cache, here gone, so
+    nothing is shown."""
     import shutil
     import threading
 
@@ -269,6 +270,12 @@ def test_load_previous_reads_the_stored_run_when_the_file_is_unchanged(tmp_path)
     assert load_previous(*args, cancel=stop) is None  # rebuilding needs the cache
     got = load_previous(*args, cancel=stop, project_file=path)
     assert got is not None and got.results == stored and got.stats.computed == 0
+    results = out / "results.json"
+    text = results.read_text(encoding="utf-8")
+    results.write_text(text.replace('"created"', ' "created"', 1), encoding="utf-8")
+    assert load_previous(*args, cancel=stop, project_file=path) is None  # not the run's file
+    results.write_text(text, encoding="utf-8")
+    assert load_previous(*args, cancel=stop, project_file=path) is not None
     path.write_text(SMALL + "\n# edited\n", encoding="utf-8")
     assert load_previous(*args, cancel=stop, project_file=path) is None
 
