@@ -23,8 +23,11 @@ from numba import njit
 
 from frp_assess.dynamics.kernel import KernelParams, simulate
 from frp_assess.dynamics.kernel import params as kp
-from frp_assess.dynamics.kernel.jumps import QUIET_MARGIN
 
+#: Relative margin of the quiet-start test [-]: an interval is skipped only when both its
+#: samples are below the uplift threshold by more than this, so rounding in the kernel's own
+#: test (ü at the interval's end is rebuilt from its slope) can never matter.
+QUIET_MARGIN = 1e-9
 #: Status of a search that ran out of room for its time histories (a tolerance so small
 #: that the bisection cannot end); never a kernel status.
 STATUS_TOO_MANY_RUNS = -1

@@ -22,7 +22,6 @@ import pytest
 
 from frp_assess.dynamics import RockingModel, Wall
 from frp_assess.dynamics.kernel import events as ev
-from frp_assess.dynamics.kernel.jumps import QUIET_MARGIN, rest_until, uplift
 from frp_assess.dynamics.kernel.params import (
     STEP_GROWTH_MAX,
     STEP_SAFETY,
@@ -118,41 +117,6 @@ def test_a_step_that_starts_at_an_impact_is_quiet_only_when_its_search_finds_not
         else:
             other += 1
     assert quiet_steps > 400 and other > 400
-
-
-def test_the_intervals_passed_at_rest_are_those_where_the_uplift_test_finds_nothing() -> None:
-    """A wall at rest passes the sample intervals of :func:`rest_until` without looking at
-    them: in each of them the driver's own test (:func:`uplift`, with the input in g as the
-    driver forms it, the slope rebuilt from the two samples) must find no uplift, and the
-    interval where the passing stops must hold a sample at the bound or be the last one.
-    Random records around the threshold, one- and two-sided walls, the zero input after the
-    record included."""
-    rng = np.random.default_rng(17)
-    dt = 0.005
-    passed = stopped = 0
-    for mechanism in ("one-sided", "two-sided"):
-        prm = RockingModel(WALL, mechanism).params
-        for _ in range(300):
-            n_rec = int(rng.integers(2, 60))
-            acc = rng.normal(0.0, 1.0, n_rec) * float(rng.choice([0.2, 1.0, 3.0]))
-            scale = float(rng.uniform(0.5, 2.0))
-            inv_g = scale / prm.g
-            bound = (1.0 - QUIET_MARGIN) * prm.tan_ax * prm.g / scale
-            last = n_rec + int(rng.integers(0, 5)) - 1  # n_input − 1, the tail included
-            i = int(rng.integers(0, last + 1))
-            j = rest_until(acc, i, last, bound)
-            assert i <= j <= last
-            for k in range(i, j):
-                ua = acc[k] * inv_g if k < n_rec else 0.0
-                ub = acc[k + 1] * inv_g if k + 1 < n_rec else 0.0
-                x, side = uplift(ua, (ub - ua) / dt, 0.0, dt, prm)
-                assert side == 0.0 and x == dt
-                passed += 1
-            if j < last:
-                stopped += 1
-                sample = [abs(acc[m]) if m < n_rec else 0.0 for m in (j, j + 1)]
-                assert max(sample) >= bound
-    assert passed > 500 and stopped > 200
 
 
 def test_crossing_on_the_cubic_matches_the_polynomial_roots() -> None:

@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 from numba import njit
 
 from frp_assess.dynamics.kernel.params import (
@@ -14,29 +13,6 @@ from frp_assess.dynamics.kernel.params import (
     RUPTURE_ENERGY_TRANSFER,
     KernelParams,
 )
-
-#: Relative margin of the tests that a wall at rest cannot uplift in a sample interval: the
-#: interval is taken as quiet only when both its samples are below the threshold by more
-#: than this, so rounding in :func:`uplift` (ü at the interval's end is rebuilt from its
-#: slope) can never matter.
-QUIET_MARGIN = 1e-9
-
-
-@njit(cache=True, nogil=True)
-def rest_until(acc: np.ndarray, i: int, last: int, bound: float) -> int:
-    """The first sample interval k in [i, last] that may uplift a wall at rest: every
-    interval before it has both its samples below ``bound`` [m/s²] in absolute value (the
-    record ``acc`` [m/s²], zero beyond its end), so :func:`uplift` would find nothing in it.
-    ``bound`` = (1 − QUIET_MARGIN)·g·tan α_x / C for the multiplier C."""
-    n_rec = acc.shape[0]
-    k = i
-    while k < last:
-        a0 = abs(acc[k]) if k < n_rec else 0.0
-        a1 = abs(acc[k + 1]) if k + 1 < n_rec else 0.0
-        if a0 >= bound or a1 >= bound:
-            break
-        k += 1
-    return k
 
 
 @njit(cache=True, nogil=True)

@@ -4,10 +4,8 @@ A newcomer's map:
 
 * The input is the record (plus ``n_tail`` zero samples).  Between two samples the ground
   acceleration is linear; steps never cross a sample, so every step sees a smooth input.
-* At rest nothing is integrated: the intervals that cannot uplift the wall are passed in one
-  scan (:func:`.jumps.rest_until`), and in the first that may, the instant when the linear
-  ground acceleration exceeds g·tan α_x is solved for exactly (:func:`.jumps.uplift`);
-  rocking starts there.
+* At rest nothing is integrated: the instant when the linear ground acceleration exceeds
+  g·tan α_x is solved for exactly (:func:`.jumps.uplift`) and rocking starts there.
 * Rocking: one step of the chosen method (:mod:`.steppers`), rejected and retried smaller
   while its error estimate exceeds the tolerance (the step is inlined here:
   :mod:`.inlining`).  An accepted step that is not quiet is scanned for events on its dense
@@ -31,7 +29,7 @@ from numba import njit
 
 from frp_assess.dynamics.kernel import events as ev
 from frp_assess.dynamics.kernel.fate import cannot_fall, remaining_peak
-from frp_assess.dynamics.kernel.jumps import QUIET_MARGIN, impact, rest_until, rupture, uplift
+from frp_assess.dynamics.kernel.jumps import impact, rupture, uplift
 from frp_assess.dynamics.kernel.params import (
     BAR_NONE,
     COLLAPSE_END_OF_RECORD,
@@ -120,33 +118,6 @@ def _record_sample(
 
 
 @njit(cache=True, nogil=True)
-def _rest_through(
-    acc: np.ndarray,
-    i: int,
-    n_input: int,
-    bound: float,
-    theta: float,
-    omega: float,
-    samples: int,
-    record_history: bool,
-    hist_theta: np.ndarray,
-    hist_omega: np.ndarray,
-    hist_bar: np.ndarray,
-) -> tuple[int, int]:
-    """A wall at rest at the start of interval i: the first interval that may uplift it
-    (:func:`.jumps.rest_until`; ``bound`` [m/s²]) and the samples of history written, the
-    rest stored for every interval passed.  Nothing happens in those intervals but the
-    uplift test finding nothing (29 % of the samples of the paper's grid are at rest), so
-    the numbers are those of taking them one by one."""
-    j = rest_until(acc, i, n_input - 1, bound)
-    if record_history:
-        for k in range(i + 1, min(j + 1, hist_theta.shape[0])):
-            _record_sample(hist_theta, hist_omega, hist_bar, k, theta, omega, False)
-            samples = k + 1
-    return j, samples
-
-
-@njit(cache=True, nogil=True)
 def _up_crossing(y0: float, y1: float, t0: float, span: float, level: float, last: float) -> float:
     """The time [s] at which s·θ rose through ``level`` on a piece from (t0, y0) to
     (t0 + span, y1), by linear interpolation, if it did; else ``last``, the previous one."""
@@ -212,7 +183,6 @@ def simulate(
     overturning = prm.collapse_mode == COLLAPSE_OVERTURNING
     limit = prm.alpha_x if prm.collapse_mode == COLLAPSE_FIRST_EXCEEDANCE else 0.5 * math.pi
     inv_g = scale / prm.g
-    rest_bound = (1.0 - QUIET_MARGIN) * prm.tan_ax * prm.g / scale  # [m/s²], see rest_until
     adaptive = prm.method != METHOD_RK4
     # step-size exponent: 1/(q + 1), q the order of the embedded error estimate
     order = 5 if prm.method == METHOD_DOPRI5 else 3
@@ -251,11 +221,6 @@ def simulate(
 
     i = 0
     while fate < 0 and status == STATUS_OK:
-        if resting and i < n_input - 1:
-            i, samples = _rest_through(
-                acc, i, n_input, rest_bound, theta, omega, samples,
-                record_history, hist_theta, hist_omega, hist_bar,
-            )  # fmt: skip
         free = i >= n_input - 1  # zero ground motion from here on
         if free:
             if not overturning:
