@@ -210,7 +210,10 @@ def simulate(
     decided_time = math.nan
     collapse_time = math.nan
     last_alpha_up = math.nan
-    h = h_fixed if not adaptive else min(dt, 0.05 / prm.p)
+    # the first proposal of a rocking phase: at the start and again at every uplift from rest,
+    # so that a phase does not depend on how the one before it came to rest
+    h_start = h_fixed if not adaptive else min(dt, 0.05 / prm.p)
+    h = h_start
     a1 = math.nan
     need_a = True
     samples = 1
@@ -250,6 +253,7 @@ def simulate(
                     theta = 0.0
                     omega = 0.0
                     need_a = True
+                    h = h_start
                     if prm.theta_cr <= 0.0 and (intact_pos if s > 0.0 else intact_neg):
                         # x_W already reaches the bar: the toe crushes as the wall uplifts
                         fate = FATE_CRUSHED
