@@ -173,7 +173,7 @@ class RockingResult:
     max_rotation_ratio: float  #: peak |θ| / α_x [-]
     peak_strain: float  #: peak strain of an intact acting bar [-] (0 when unreinforced)
     rupture_strain: float | None  #: ε_max = c·ε_u of the bars [-]; None when unreinforced
-    impacts: int
+    impacts: int  #: impacts followed (not the bounces that surely die out: docs/model.md §3.3)
     ruptures: tuple[Rupture, ...]
     final_theta: float  #: [rad]
     final_omega: float  #: [rad/s]

@@ -1,10 +1,11 @@
 """The jumps of the state at the events of Eq. 10 (docs/model.md §3.2–3.4): uplift from rest,
-impact at θ = 0, rupture of a bar at θ_max."""
+impact at θ = 0 (and when the bounces after it surely die out), rupture of a bar at θ_max."""
 
 from __future__ import annotations
 
 import math
 
+import numpy as np
 from numba import njit
 
 from frp_assess.dynamics.kernel.params import (
@@ -67,3 +68,104 @@ def rupture(
     if prm.rupture_mode == RUPTURE_ENERGY_TRANSFER:  # Eq. 12
         omega = math.copysign(math.sqrt(omega * omega + 2.0 * prm.rupture_energy), omega)
     return omega, intact_pos, intact_neg
+
+
+#: The bounces after an impact are taken as dying out only when their whole sequence, bounded
+#: from above, fits in this fraction of the time the input surely cannot uplift the wall.
+CHATTER_SAFETY = 0.5
+#: The longest stretch of record [samples] scanned for that time.
+CHATTER_SAMPLES = 200
+
+
+@njit(cache=True, nogil=True)
+def _input(acc: np.ndarray, j: int, n_rec: int, inv_g: float) -> float:
+    """u = ü_g/g (scaled) at sample j; 0 past the record (the tail)."""
+    return acc[j] * inv_g if j < n_rec else 0.0
+
+
+@njit(cache=True, nogil=True)
+def restoring_at_rest(u: float, side: float, prm: KernelParams) -> float:
+    """−side·θ'' of Eq. 10 at θ = 0 on ``side`` under u = ü_g/g [rad/s²]: what pulls a wall that
+    leans to that side back to θ = 0 (≤ 0: the input tips it).  Linear in u:
+    p²·(sin α − ξ + side·u·cos α)."""
+    return prm.p2 * (prm.sin_a - prm.xi + side * u * prm.cos_a)
+
+
+@njit(cache=True, nogil=True)
+def chatter_ends(
+    omega: float,
+    s: float,
+    acc: np.ndarray,
+    i: int,
+    x: float,
+    dt: float,
+    inv_g: float,
+    n_rec: int,
+    last: int,
+    top: float,
+    k_top: float,
+    prm: KernelParams,
+) -> bool:
+    """After an impact at x [s] into the interval from sample i (θ = 0, θ' = ``omega``, leaning
+    to s next): whether the bounces that follow surely die out before sample ``last``, so
+    that the wall may be put at rest now (docs/model.md §3.3).
+
+    Near θ = 0 a bounce is a flight under the restoring acceleration g of Eq. 10 at θ = 0
+    (:func:`restoring_at_rest`): up and back within 2v/g_min when g ≥ g_min > 0 throughout,
+    the next starting at e·v.  The input is linear between samples, so over a stretch of
+    record g_min is that of its samples (g ≤ 0 anywhere means the input can uplift the wall:
+    no).  A flight of length T returns with its speed changed by at most ġ·T²/2 (ġ the
+    largest rate of change of g), so every bounce's speed shrinks at least by
+    e' = e·(1 + 2·ġ·v/g_min²) < 1 and the whole sequence lasts less than 2v/(g_min·(1 − e')).
+    The stretch is extended sample by sample (to ``last`` and CHATTER_SAMPLES at most) until
+    that bound fits in CHATTER_SAFETY of it.  The first and highest bounce, v²/(2·g_min),
+    must stay below half of ``top`` (the peak so far and the level of every event: no new
+    peak, no other event) and so low that θ's share of the acceleration, ∂θ''/∂θ·height
+    (bounded with ``k_top``, the largest K of a side), is a tenth of g_min at most.  The
+    wall is then at rest before the stretch ends, whatever is integrated, and every later
+    instant is the same: no input before its end can uplift it.
+    """
+    v = abs(omega)
+    if not (v > 0.0 and prm.e_impact < 1.0):  # elastic impacts: the bounces never die out
+        return False
+    two_sided = not prm.one_sided
+    u_a = _input(acc, i, n_rec, inv_g)
+    u_b = _input(acc, i + 1, n_rec, inv_g)
+    u_x = u_a + (u_b - u_a) * (x / dt)
+    # the least restoring acceleration over the stretch, from its worst side and sample
+    worst = min(-abs(u_x), -abs(u_b)) if two_sided else min(s * u_x, s * u_b)
+    u_big = max(abs(u_x), abs(u_b))
+    slope = abs(u_b - u_a) / dt
+    rest = dt - x
+    # the flights' bound with the first interval's g (it can only grow as the stretch does)
+    g_first = restoring_at_rest(worst, 1.0, prm)  # worst: the least side·u
+    if not g_first > 0.0:
+        return False
+    if 2.0 * v / (g_first * (1.0 - prm.e_impact)) > CHATTER_SAFETY * (rest + CHATTER_SAMPLES * dt):
+        return False  # not within the longest stretch scanned, whatever the input does
+    j = i + 1
+    while True:
+        g_min = restoring_at_rest(worst, 1.0, prm)
+        if not g_min > 0.0:
+            return False
+        g_dot = prm.p2 * prm.cos_a * slope
+        e = prm.e_impact * (1.0 + 2.0 * g_dot * v / (g_min * g_min))
+        if not e < 1.0:
+            return False
+        height = v * v / (2.0 * g_min)
+        stiff = prm.p2 * (
+            k_top + 1.0 + u_big * prm.sin_a + prm.xi * (2.0 + k_top * prm.kappa_per_k)
+        )
+        if not (2.0 * height < top and stiff * height <= 0.1 * g_min):
+            return False
+        if 2.0 * v / (g_min * (1.0 - e)) <= CHATTER_SAFETY * rest:
+            return True
+        if j >= last or j - i >= CHATTER_SAMPLES:
+            return False
+        u_c = _input(acc, j + 1, n_rec, inv_g)
+        worst = min(worst, -abs(u_c)) if two_sided else min(worst, s * u_c)
+        u_big = max(u_big, abs(u_c))
+        slope = max(slope, abs(u_c - u_b) / dt)
+        u_b = u_c
+        rest += dt
+        j += 1

@@ -5,7 +5,8 @@ A newcomer's map:
 * The input is the record (plus ``n_tail`` zero samples).  Between two samples the ground
   acceleration is linear; steps never cross a sample, so every step sees a smooth input.
 * At rest nothing is integrated: the instant when the linear ground acceleration exceeds
-  g·tan α_x is solved for exactly (:func:`.jumps.uplift`) and rocking starts there.
+  g·tan α_x is solved for exactly (:func:`.jumps.uplift`) and rocking starts there, with the
+  same first step proposal every time.
 * Rocking: one step of the chosen method (:mod:`.steppers`), rejected and retried smaller
   while its error estimate exceeds the tolerance (the step is inlined here:
   :mod:`.inlining`).  An accepted step that is not quiet is scanned for events on its dense
@@ -29,7 +30,7 @@ from numba import njit
 
 from frp_assess.dynamics.kernel import events as ev
 from frp_assess.dynamics.kernel.fate import cannot_fall, remaining_peak
-from frp_assess.dynamics.kernel.jumps import impact, rupture, uplift
+from frp_assess.dynamics.kernel.jumps import chatter_ends, impact, rupture, uplift
 from frp_assess.dynamics.kernel.params import (
     BAR_NONE,
     COLLAPSE_END_OF_RECORD,
@@ -71,7 +72,7 @@ class Outcome(NamedTuple):
     collapse_time: float  #: when the wall fell / met the rule's limit [s]; NaN otherwise
     peak: float  #: peak |θ| [rad], the free vibration included
     peak_with_bar: float  #: peak |θ| while the acting bar was intact [rad]
-    impacts: int
+    impacts: int  #: impacts followed (docs/model.md §3.3)
     ruptures: int
     final_theta: float  #: [rad]
     final_omega: float  #: [rad/s]
@@ -354,6 +355,31 @@ def simulate(
                 n_impacts += 1
                 theta = 0.0
                 omega, s, resting = impact(om_e, s, prm)
+                # bounces that surely die out where the input cannot uplift the wall are not
+                # followed: at rest now, every later instant the same (docs/model.md §3.3)
+                if (
+                    prm.settle_chatter
+                    and not resting
+                    and not free
+                    and chatter_ends(
+                        omega,
+                        s,
+                        acc,
+                        i,
+                        x,
+                        dt,
+                        inv_g,
+                        n_rec,
+                        # with a history the bounces must end in this interval: its samples
+                        # are written; without one, before the input ends
+                        i + 1 if record_history else n_input - 1,
+                        min(peak, bar_level) if intact_pos or intact_neg else min(peak, limit),
+                        prm.k_bar if intact_pos or intact_neg else 0.0,
+                        prm,
+                    )
+                ):
+                    omega = 0.0
+                    resting = True
             elif event == RUPTURE:
                 if n_ruptures < rupture_time.shape[0]:
                     rupture_time[n_ruptures] = t_event
