@@ -111,19 +111,21 @@ def chatter_ends(
     that the wall may be put at rest now (docs/model.md §3.3).
 
     Near θ = 0 a bounce is a flight under the restoring acceleration g of Eq. 10 at θ = 0
-    (:func:`restoring_at_rest`): up and back within 2v/g_min when g ≥ g_min > 0 throughout,
-    the next starting at e·v.  The input is linear between samples, so over a stretch of
-    record g_min is that of its samples (g ≤ 0 anywhere means the input can uplift the wall:
-    no).  A flight of length T returns with its speed changed by at most ġ·T²/2 (ġ the
-    largest rate of change of g), so every bounce's speed shrinks at least by
-    e' = e·(1 + 2·ġ·v/g_min²) < 1 and the whole sequence lasts less than 2v/(g_min·(1 − e')).
-    The stretch is extended sample by sample (to ``last`` and CHATTER_SAMPLES at most) until
-    that bound fits in CHATTER_SAFETY of it.  The first and highest bounce, v²/(2·g_min),
-    must stay below half of ``top`` (the peak so far and the level of every event: no new
-    peak, no other event) and so low that θ's share of the acceleration, ∂θ''/∂θ·height
-    (bounded with ``k_top``, the largest K of a side), is a tenth of g_min at most.  The
-    wall is then at rest before the stretch ends, whatever is integrated, and every later
-    instant is the same: no input before its end can uplift it.
+    (:func:`restoring_at_rest`), the next starting at e·v.  The input is linear between
+    samples, so over a stretch of record g_min, the least g, is that of its samples (g ≤ 0
+    anywhere means the input can uplift the wall: no).  The first and highest bounce,
+    v²/(2·g_min), must stay below half of ``top`` (the peak so far and the level of every
+    event: no new peak, no other event) and so low that θ's share of the acceleration,
+    ∂θ''/∂θ·height (bounded with ``k_top``, the largest K of a side), is a tenth of g_min at
+    most: the wall is pulled back by g_low = 0.9·g_min at least, and a flight lasts at most
+    T = 2v/g_low.  That share depends on θ alone and gives the speed back on the way down;
+    the change of the input does not: with δ(t) = g(t) − g(0), |δ'| ≤ ġ (ġ the largest rate
+    of change of g), the flight returns with its speed changed by ∫₀ᵀ δ(t)·(2t/T − 1) dt,
+    at most ġ·T²/4, so every bounce's speed shrinks at least by e' = e·(1 + ġ·v/g_low²) < 1
+    and the whole sequence lasts less than 2v/(g_low·(1 − e')).  The stretch is extended
+    sample by sample (to ``last`` and CHATTER_SAMPLES at most) until that bound fits in
+    CHATTER_SAFETY of it.  The wall is then at rest before the stretch ends, whatever is
+    integrated, and every later instant is the same: no input before its end can uplift it.
     """
     v = abs(omega)
     if not (v > 0.0 and prm.e_impact < 1.0):  # elastic impacts: the bounces never die out
@@ -148,17 +150,18 @@ def chatter_ends(
         g_min = restoring_at_rest(worst, 1.0, prm)
         if not g_min > 0.0:
             return False
-        g_dot = prm.p2 * prm.cos_a * slope
-        e = prm.e_impact * (1.0 + 2.0 * g_dot * v / (g_min * g_min))
-        if not e < 1.0:
-            return False
         height = v * v / (2.0 * g_min)
         stiff = prm.p2 * (
             k_top + 1.0 + u_big * prm.sin_a + prm.xi * (2.0 + k_top * prm.kappa_per_k)
         )
         if not (2.0 * height < top and stiff * height <= 0.1 * g_min):
             return False
-        if 2.0 * v / (g_min * (1.0 - e)) <= CHATTER_SAFETY * rest:
+        g_low = 0.9 * g_min  # θ's share of the acceleration taken off
+        g_dot = prm.p2 * prm.cos_a * slope
+        e = prm.e_impact * (1.0 + g_dot * v / (g_low * g_low))
+        if not e < 1.0:
+            return False
+        if 2.0 * v / (g_low * (1.0 - e)) <= CHATTER_SAFETY * rest:
             return True
         if j >= last or j - i >= CHATTER_SAMPLES:
             return False
