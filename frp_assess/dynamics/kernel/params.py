@@ -88,7 +88,7 @@ class KernelParams(NamedTuple):
     alpha_x: float  #: α_x = atan((B − x_W)/H) [rad]: the tipping limit of the rules and outputs
     tan_ax: float  #: tan α_x [-]: the uplift threshold in g
     tip_bar: float  #: θ*: where V stops rising with the acting bar intact [rad] (≤ π/2)
-    #: the bounces after an impact are ended at once when they surely die out before the next
-    #: sample (:func:`.jumps.chatter_ends`; the same results, fewer impacts to follow); False
-    #: only to show that
+    #: the bounces after an impact are ended at once when they surely die out where the input
+    #: cannot uplift the wall (:func:`.jumps.chatter_ends`; the same results, fewer impacts to
+    #: follow); False only to show that
     settle_chatter: bool = True
