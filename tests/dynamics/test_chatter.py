@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 import pytest
 
-from frp_assess.dynamics import IdaSettings, Rebars, RockingModel, Wall, ida
+from frp_assess.dynamics import IdaSettings, Rebars, RockingModel, ida
 from frp_assess.dynamics.kernel import history_length, simulate
 from frp_assess.dynamics.kernel.jumps import (
     CHATTER_SAFETY,
@@ -29,10 +29,8 @@ from frp_assess.dynamics.kernel.jumps import (
 from frp_assess.dynamics.kernel.params import REST_VELOCITY, KernelParams, kernel_record
 from frp_assess.dynamics.kernel.steppers import acceleration
 from tests.conftest import synthetic_record
+from tests.dynamics.walls import CFRP, SIX_WALLS, WALL
 
-WALL = Wall(thickness=0.4, height=3.0, unit_weight=18e3, compressive_strength=2.0e6)
-CFRP = Rebars(150e9, 0.013, "external", 1.0, strain_factor=0.5)
-GFRP_CENTRED = Rebars(46e9, 0.015, "centred", 2.0, strain_factor=0.5)
 DT = 0.005  #: [s]
 
 
@@ -139,17 +137,7 @@ def test_no_end_when_a_bounce_could_reach_the_peak() -> None:
     assert not chatter_ends(v, 1.0, *args, 1.5 * height, 0.0, prm)
 
 
-WALLS = [
-    ("one-sided", None, {"pivot": "edge", "collapse": "end-of-record"}),
-    ("two-sided", None, {}),
-    ("one-sided", CFRP, {"pivot": "edge", "collapse": "end-of-record"}),
-    ("two-sided", CFRP, {"collapse": "overturning"}),
-    ("two-sided", GFRP_CENTRED, {"collapse": "first-exceedance"}),
-    ("one-sided", GFRP_CENTRED, {"rupture": "velocity-continuous"}),
-]
-
-
-@pytest.mark.parametrize("mechanism, bars, options", WALLS)
+@pytest.mark.parametrize("mechanism, bars, options", SIX_WALLS)
 def test_the_rule_changes_no_result(mechanism: str, bars: Rebars | None, options: dict) -> None:
     """Every time history of the IDA of each wall under two records, with and without a
     history: the same outcome (fate, peaks, final state, collapse and decision instants,

@@ -10,15 +10,12 @@ from typing import Any
 import numpy as np
 import pytest
 
-from frp_assess.dynamics import IdaSettings, Rebars, RockingModel, Wall, ida
+from frp_assess.dynamics import IdaSettings, RockingModel, ida
 from frp_assess.dynamics.ida_search import next_multiplier, quiet_intervals, running_max_abs
 from frp_assess.dynamics.kernel import simulate
 from frp_assess.dynamics.kernel.params import kernel_record
 from tests.conftest import G, synthetic_record
-
-WALL = Wall(thickness=0.4, height=3.0, unit_weight=18e3, compressive_strength=2.0e6)
-CFRP = Rebars(150e9, 0.013, "external", 1.0, strain_factor=0.5)
-GFRP_CENTRED = Rebars(46e9, 0.015, "centred", 2.0, strain_factor=0.5)
+from tests.dynamics.walls import CFRP, SIX_WALLS, WALL
 
 
 def _quiet_start(seed: int, quiet_s: float = 2.0, dt: float = 0.01) -> np.ndarray:
@@ -56,17 +53,7 @@ def test_next_multiplier_is_the_rule_of_the_model():
     assert math.isnan(next_multiplier(hunt, 0.005, 6, 1.2, 1.205))
 
 
-@pytest.mark.parametrize(
-    "mechanism, bars, options",
-    [
-        ("one-sided", None, {"pivot": "edge", "collapse": "end-of-record"}),
-        ("two-sided", None, {}),
-        ("one-sided", CFRP, {"pivot": "edge", "collapse": "end-of-record"}),
-        ("two-sided", CFRP, {"collapse": "overturning"}),
-        ("two-sided", GFRP_CENTRED, {"collapse": "first-exceedance"}),
-        ("one-sided", GFRP_CENTRED, {"rupture": "velocity-continuous"}),
-    ],
-)
+@pytest.mark.parametrize("mechanism, bars, options", SIX_WALLS)
 def test_compiled_search_equals_one_run_per_time_history(mechanism, bars, options):
     """The same IdaResult, bit for bit (floats compared with ==), from the compiled search
     (quiet start skipped) and from one ``run`` per time history over the whole record."""
