@@ -8,6 +8,7 @@ import math
 import numpy as np
 from numba import njit
 
+from frp_assess.dynamics.kernel.inlining import into
 from frp_assess.dynamics.kernel.params import (
     BAR_SHARED,
     REST_VELOCITY,
@@ -77,9 +78,11 @@ CHATTER_SAFETY = 0.5
 CHATTER_SAMPLES = 200
 
 
-@njit(cache=True, nogil=True)
-def _input(acc: np.ndarray, j: int, n_rec: int, inv_g: float) -> float:
-    """u = ü_g/g (scaled) at sample j; 0 past the record (the tail)."""
+@njit(cache=True, nogil=True, inline=into("simulate"))
+def ground_input(acc: np.ndarray, j: int, n_rec: int, inv_g: float) -> float:
+    """u = ü_g/g at sample j of the record ``acc`` [m/s²] scaled by inv_g = C/g; 0 past the
+    record (the tail of zero samples).  The driver's input (:mod:`.simulate`) and the bounces'
+    bound read the record through it."""
     return acc[j] * inv_g if j < n_rec else 0.0
 
 
@@ -131,8 +134,8 @@ def chatter_ends(
     if not (v > 0.0 and prm.e_impact < 1.0):  # elastic impacts: the bounces never die out
         return False
     two_sided = not prm.one_sided
-    u_a = _input(acc, i, n_rec, inv_g)
-    u_b = _input(acc, i + 1, n_rec, inv_g)
+    u_a = ground_input(acc, i, n_rec, inv_g)
+    u_b = ground_input(acc, i + 1, n_rec, inv_g)
     u_x = u_a + (u_b - u_a) * (x / dt)
     # the least restoring acceleration over the stretch, from its worst side and sample
     worst = min(-abs(u_x), -abs(u_b)) if two_sided else min(s * u_x, s * u_b)
@@ -165,7 +168,7 @@ def chatter_ends(
             return True
         if j >= last or j - i >= CHATTER_SAMPLES:
             return False
-        u_c = _input(acc, j + 1, n_rec, inv_g)
+        u_c = ground_input(acc, j + 1, n_rec, inv_g)
         worst = min(worst, -abs(u_c)) if two_sided else min(worst, s * u_c)
         u_big = max(u_big, abs(u_c))
         slope = max(slope, abs(u_c - u_b) / dt)

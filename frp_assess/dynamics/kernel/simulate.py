@@ -30,7 +30,13 @@ from numba import njit
 
 from frp_assess.dynamics.kernel import events as ev
 from frp_assess.dynamics.kernel.fate import cannot_fall, remaining_peak
-from frp_assess.dynamics.kernel.jumps import chatter_ends, impact, rupture, uplift
+from frp_assess.dynamics.kernel.jumps import (
+    chatter_ends,
+    ground_input,
+    impact,
+    rupture,
+    uplift,
+)
 from frp_assess.dynamics.kernel.params import (
     BAR_NONE,
     COLLAPSE_END_OF_RECORD,
@@ -240,8 +246,8 @@ def simulate(
                 )
                 break
         t_i = i * dt
-        ua = acc[i] * inv_g if i < n_rec else 0.0
-        ub = acc[i + 1] * inv_g if i + 1 < n_rec else 0.0
+        ua = ground_input(acc, i, n_rec, inv_g)
+        ub = ground_input(acc, i + 1, n_rec, inv_g)
         slope = (ub - ua) / dt  # [g/s]
         x = 0.0
         events = 0
