@@ -138,8 +138,11 @@ def print_table(
         return
     con.print(user(title), soft_wrap=False)
     width = max(len(plain_line(c.header)) for c in columns)
+    labels = [user(plain_line(c.header).ljust(width)) for c in columns]
+    # one print for all the records (a print per line cost ~0.4 ms each): the same lines
+    lines: list[str] = []
     for r in rows:
-        con.print("")
-        for col, cell in zip(columns, r, strict=True):
-            label = user(plain_line(col.header).ljust(width))
-            con.print(f"  {label}  {user(cell)}", overflow="fold")
+        lines.append("")
+        lines.extend(f"  {label}  {user(cell)}" for label, cell in zip(labels, r, strict=True))
+    if lines:
+        con.print("\n".join(lines), overflow="fold")

@@ -66,6 +66,24 @@ def test_stacked_layout_when_too_narrow() -> None:
         assert cell in out.split()
 
 
+def test_stacked_records_print_as_one_line_per_cell() -> None:
+    """The stacked records come out of one print: the same text as one print per line (an
+    empty line before each record, a cell longer than the console folded, markup shown)."""
+    cols = [Column("name", text=True), Column("value [kN]"), Column("other quantity [m]")]
+    rows = [["a" * 50, "123456.789", "0.000123"], ["[b]x[/b]", "1.5", "2.25"]]
+    out = printed(30, lambda con: print_table(con, "t", cols, rows))
+    buf = io.StringIO()
+    con = make_console(file=buf, width=30)
+    con.print("t", soft_wrap=False)
+    for r in rows:
+        con.print("")
+        labels = ("name", "value [kN]", "other quantity [m]")
+        for label, cell in zip((user(x.ljust(18)) for x in labels), r, strict=True):
+            con.print(f"  {label}  {user(cell)}", overflow="fold")
+    assert out == buf.getvalue()
+    assert "[b]x[/b]" in out and max(len(line) for line in out.splitlines()) <= 30
+
+
 def test_user_and_plain_remove_every_control() -> None:
     every = "".join(chr(c) for c in [*range(0x20), *range(0x7F, 0xA0)])
     assert plain(every) == PLACEHOLDER * len(every)
