@@ -17,6 +17,7 @@ else unchanged, interleaved on one thread, and prints against s:
 * the same for the grid s·(1 + 4·10⁻¹⁶), a few units in the last place away: the nested grids
   share their points only up to rounding, and this control shows how much of the change is
   the ill-conditioned time histories (docs/model.md §4.5) rather than the step;
+* with ``--tolerance TOL``: the same for the grid of s with that integration tolerance;
 * how many IDAs found no collapse up to C_max (their a_dyn: C_max·PGA, as in the means);
 * the CPU time per IDA (``time.process_time``) and the time histories per IDA.
 
@@ -27,6 +28,7 @@ file only; nothing is written.
 from __future__ import annotations
 
 import argparse
+import copy
 import dataclasses
 import sys
 import time
@@ -45,8 +47,16 @@ def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--study", default=str(ROOT / "projects" / "paper-study.yaml"))
     ap.add_argument("--stride", type=int, default=10, help="every N-th case (default 10)")
+    ap.add_argument(
+        "--tolerance",
+        type=float,
+        action="append",
+        default=[],
+        help="also run the study's step with this integration tolerance (repeatable)",
+    )
     args = ap.parse_args()
-    plan = StudyPlan(load_study(Path(args.study)))
+    study = load_study(Path(args.study))
+    plan = StudyPlan(study)
     records = study_records(plan)
     s = plan.ida_settings.step_ratio
     grids = {
@@ -57,24 +67,30 @@ def main() -> int:
         # are nested only up to rounding); what moves here is ill-conditioning, not the step
         "s·(1 + 4e-16)": s * (1.0 + 4e-16),
     }
-    settings = {
-        name: dataclasses.replace(plan.ida_settings, step_ratio=r) for name, r in grids.items()
+    # name -> (the IDA's settings, the plan that builds the models)
+    variants = {
+        name: (dataclasses.replace(plan.ida_settings, step_ratio=r), plan)
+        for name, r in grids.items()
     }
-    a_dyn: dict[str, list[float]] = {name: [] for name in grids}
-    cpu = dict.fromkeys(grids, 0.0)
-    runs = dict.fromkeys(grids, 0)
-    no_collapse = dict.fromkeys(grids, 0)
+    for tol in args.tolerance:
+        other = copy.copy(plan)
+        other.options = study.model.model_options(tol)
+        variants[f"s, tolerance {tol:g}"] = (plan.ida_settings, other)
+    a_dyn: dict[str, list[float]] = {name: [] for name in variants}
+    cpu = dict.fromkeys(variants, 0.0)
+    runs = dict.fromkeys(variants, 0)
+    no_collapse = dict.fromkeys(variants, 0)
     case_of: list[int] = []
     cases = list(plan.cases(0, len(plan)))[:: args.stride]
     first = records[cases[0].spectrum][0]
-    for st in settings.values():  # compile before timing
-        ida(plan.model(cases[0]), first.acc, first.dt, st)
+    for st, pl in variants.values():  # compile before timing
+        ida(pl.model(cases[0]), first.acc, first.dt, st)
     for n_case, case in enumerate(cases):
-        model = plan.model(case)
+        models = {name: pl.model(case) for name, (_, pl) in variants.items()}
         for rec in records[case.spectrum]:
-            for name, st in settings.items():
+            for name, (st, _) in variants.items():
                 t0 = time.process_time()
-                res = ida(model, rec.acc, rec.dt, st)
+                res = ida(models[name], rec.acc, rec.dt, st)
                 cpu[name] += time.process_time() - t0
                 runs[name] += res.runs
                 c = res.collapse_multiplier
@@ -83,14 +99,14 @@ def main() -> int:
                 no_collapse[name] += c is None
             case_of.append(n_case)
     owner = np.array(case_of)
-    base = np.array(a_dyn[next(iter(grids))])
+    base = np.array(a_dyn[next(iter(variants))])
     n_ida = base.size
     print(
         f"{Path(args.study).name}, every {args.stride}th case: {len(cases)} cases, {n_ida} IDAs; "
         f"a_dyn of the first collapse against s = {s:g} (C_max·PGA where none up to C_max)"
     )
     base_mean = np.array([base[owner == k].mean() for k in range(len(cases))])
-    for name in grids:
+    for name in variants:
         val = np.array(a_dyn[name])
         rel = val / base - 1.0
         mean = np.array([val[owner == k].mean() for k in range(len(cases))])
