@@ -1,6 +1,6 @@
 """How much the first-collapse multiplier depends on the hunt's step ratio (docs/model.md §5.1).
 
-    python3 scripts/hunt_resolution.py [--stride N] [--study projects/paper-study.yaml]
+    python3 scripts/hunt_resolution.py [--stride N] [--study FILE] [--tolerance TOL ...]
 
 The IDA's result is the *first* collapse that the search meets: the hunt tries C₀·s^k and
 bisects below the first k that collapses.  A rocking wall often collapses in a narrow window
@@ -21,7 +21,8 @@ else unchanged, interleaved on one thread, and prints against s:
 * how many IDAs found no collapse up to C_max (their a_dyn: C_max·PGA, as in the means);
 * the CPU time per IDA (``time.process_time``) and the time histories per IDA.
 
-Not part of the tests (about a minute and a half at the default stride).  It reads the study
+Not part of the tests (about two minutes at the default stride, half a minute more per
+``--tolerance``).  It reads the study
 file only; nothing is written.
 """
 
@@ -112,7 +113,7 @@ def main() -> int:
         mean = np.array([val[owner == k].mean() for k in range(len(cases))])
         mrel = mean / base_mean - 1.0
         print(
-            f"  {name:<16} {1e3 * cpu[name] / n_ida:6.2f} ms/IDA, {runs[name] / n_ida:5.1f} time "
+            f"  {name:<20} {1e3 * cpu[name] / n_ida:6.2f} ms/IDA, {runs[name] / n_ida:5.1f} time "
             f"histories/IDA | IDAs lower by > 1 %: {int(np.sum(rel < -0.01))}, higher by > 1 %: "
             f"{int(np.sum(rel > 0.01))}, median |change| {np.median(np.abs(rel)):.2g}, "
             f"extremes {rel.min():+.3f} / {rel.max():+.3f}; no collapse up to C_max: "
