@@ -127,13 +127,16 @@ class IdaRunner:
         models: Sequence[RockingModel],
         progress: Callable[[int, int], None] | None = None,
         on_pair: Callable[[int, int], None] | None = None,
+        settings: IdaSettings | None = None,
     ) -> list[list[IdaResult]]:
         """IDA of every (model, record) pair, from the cache where possible.
 
         ``progress(done, total)`` counts finished pairs; ``on_pair(model_index, record_index)``
         is called once per pair as it finishes (cache hits first, then fresh results from the
-        worker threads, each before the matching ``progress`` call).
+        worker threads, each before the matching ``progress`` call).  ``settings``: the IDA
+        search of these pairs, when not the runner's (the sensitivity's hunt step).
         """
+        settings = self.settings if settings is None else settings
         n_rec = len(self.records)
         total = len(models) * n_rec
         out: list[IdaResult | None] = [None] * total
@@ -142,14 +145,14 @@ class IdaRunner:
         slots: list[int] = []
         for m_i, model in enumerate(models):
             for r_i in range(n_rec):
-                key = task_key(model, self._hashes[r_i], self.settings, self.building)
+                key = task_key(model, self._hashes[r_i], settings, self.building)
                 hit = self.cache.get(key)
                 if hit is not None:
                     out[m_i * n_rec + r_i] = hit
                 else:
                     motion = self.motions[r_i]
                     keys.append(key)
-                    tasks.append(IdaTask(model, motion.acc, motion.dt, self.settings))
+                    tasks.append(IdaTask(model, motion.acc, motion.dt, settings))
                     slots.append(m_i * n_rec + r_i)
         hits = total - len(tasks)
         self.reused += hits

@@ -39,7 +39,7 @@ from frp_assess.assess.results import case_result
 from frp_assess.assess.runner import CaseSummary, DesignResult, IdaRunner, design_search, summarise
 from frp_assess.assess.statistics import fit_lognormal_fragility
 from frp_assess.config.schema import format_ratio
-from frp_assess.dynamics import IdaResult, RockingModel
+from frp_assess.dynamics import IdaResult, IdaSettings, RockingModel
 from frp_assess.motions import Record
 from frp_assess.results.checks import CaseChecks, KinematicChecks, TimeHistoryResult
 from frp_assess.results.model import CaseResult, Sensitivity, SensitivityRowResult
@@ -303,9 +303,11 @@ def _variant_verdict(
     model: RockingModel,
     demand: float,
     max_multiplier: float,
+    settings: IdaSettings | None = None,
 ) -> tuple[Verdict, CaseSummary]:
-    """The verdict of ``model`` (a convention variant of ``base``'s case)."""
-    s = summarise(runner.run([model])[0], max_multiplier, model.a_rm_g)
+    """The verdict of ``model`` (a convention variant of ``base``'s case; ``settings``: its
+    IDA search when not the run's)."""
+    s = summarise(runner.run([model], settings=settings)[0], max_multiplier, model.a_rm_g)
     c = ctx.checks(base.name, model)
     ev = replace(
         base,
@@ -339,20 +341,22 @@ def conventions(
         SensitivityRowResult(**asdict(r))
         for r in sensitivity(runner, models[focus], demand, max_multiplier)
     )
-    variants = convention_variants(models[focus])
+    variants = convention_variants(models[focus], runner.settings)
     candidates = [i for i in decision.order if decision.verdicts[i].passes and i != focus][
         :TAKE_OVER_CANDIDATES
     ]
     out = []
-    for j, (label, variant) in enumerate(variants):
-        v, _ = _variant_verdict(runner, ctx, ev[focus], variant, demand, max_multiplier)
+    for j, (label, variant, settings) in enumerate(variants):
+        v, _ = _variant_verdict(runner, ctx, ev[focus], variant, demand, max_multiplier, settings)
         takes_over = None
         if decision.recommended == focus and not v.passes:
             for i in candidates:
-                their = convention_variants(models[i])
+                their = convention_variants(models[i], runner.settings)
                 if j >= len(their):
                     continue
-                vi, _ = _variant_verdict(runner, ctx, ev[i], their[j][1], demand, max_multiplier)
+                vi, _ = _variant_verdict(
+                    runner, ctx, ev[i], their[j].model, demand, max_multiplier, their[j].settings
+                )
                 if vi.passes:
                     takes_over = ev[i].name
                     break

@@ -21,6 +21,7 @@ Results = AssessmentResult
 _CONVENTION = re.compile(r"^(restitution|collapse|rupture): ([a-z-]+)$")
 _STRAIN = re.compile(r"^strain factor c = ([0-9.]+)$")
 _MODULUS = re.compile(r"^E ([+-][0-9.]+)% \(([0-9.]+) GPa\)$")
+_HUNT_STEP = re.compile(r"^IDA step ratio s = ([0-9.]+)$")
 
 
 def variant_words(variant: str, lang: Lang) -> str:
@@ -40,6 +41,9 @@ def variant_words(variant: str, lang: Lang) -> str:
         return lang.t(
             "sens.modulus", change=lang.numbers_in(m.group(1)), e=lang.gnum(float(m.group(2)))
         )
+    m = _HUNT_STEP.match(variant)
+    if m:
+        return lang.t("sens.hunt_step", s=lang.gnum(float(m.group(1))))
     return lang.numbers_in(variant)
 
 

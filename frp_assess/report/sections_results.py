@@ -178,8 +178,10 @@ def options(results: Results) -> list[Block]:
         out.append(
             para(
                 f"{results.sensitivity.case} under the conventions the paper leaves open, "
-                "one at a time (docs/model.md §3), and a ±10 % change of the bars' elastic "
-                "modulus; the same records, the design value of a_dyn.",
+                "one at a time (docs/model.md §3), the IDA's hunt at the square root of its "
+                "step ratio (a finer hunt can meet a lower collapse window, docs/model.md "
+                "§5.1), and a ±10 % change of the bars' elastic modulus; the same records, "
+                "the design value of a_dyn.",
                 "caption",
             )
         )

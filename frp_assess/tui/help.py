@@ -59,7 +59,8 @@ a_g·S marked. *Bars & pivot*: per option the bars as built (count × diameter, 
 ratio installed / asked, anchorage) and per case the compressed zone at the pivot (x/B,
 dropped and why). *Checks*: the code's kinematic checks (ζ_E of the linear, SLV, SLC,
 time-history and IDA checks) and the sensitivity of the best option to the model
-conventions. *Design*: the smallest ratio per material and position (design mode).
+conventions and to the IDA's hunt step (√s). *Design*: the smallest ratio per material
+and position (design mode).
 *Compliance*: the code checks of the records and their mean spectrum.
 
 *History*: pick a case and a record; `c` at collapse, `b` just below, `1` for C = 1, or

@@ -3,19 +3,32 @@ changes exactly one convention, the first row is the case itself, and a rerun re
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import pytest
 
 from frp_assess.api import run_assessment
+from frp_assess.assess.cache import IdaCache
 from frp_assess.assess.convention_sensitivity import convention_variants
+from frp_assess.assess.runner import IdaRunner
+from frp_assess.dynamics import ida
+from tests.assess.test_floor_input import RECORDS
 from tests.assess.test_run import small_inputs
 
 
 def test_variants_change_one_convention_each():
     inputs = small_inputs()
     model = inputs.case_models()[1]  # GFRP external 1 ‰
-    variants = dict(convention_variants(model))
+    every = convention_variants(model, inputs.ida)
+    variants = {v.label: v.model for v in every}
     base = variants.pop("as assessed")
     assert base is model
+    # the hunt at √s: the same model, the run's search with one more multiplier between each
+    # pair of its steps; every other variant runs the run's search
+    step = next(v for v in every if v.settings is not None)
+    assert step.model is model and step.label == f"IDA step ratio s = {1.1**0.5:.4g}"
+    assert step.settings == replace(inputs.ida, step_ratio=inputs.ida.step_ratio**0.5)
+    assert sum(v.settings is not None for v in every) == 1
     o = model.options
     assert variants["restitution: velocity"].options == o.__class__(
         **{**o.__dict__, "restitution": "velocity"}
@@ -31,6 +44,15 @@ def test_variants_change_one_convention_each():
         assert m.wall == model.wall and m.mechanism == model.mechanism
 
 
+def test_variants_every_case_has_come_first_in_the_same_order():
+    """The recommendation's i-th variant is matched with another option's i-th (the option
+    that takes over under a convention): the unreinforced wall's variants are a prefix."""
+    inputs = small_inputs()
+    urm, gfrp = inputs.case_models()[0], inputs.case_models()[1]
+    bare = [v.label for v in convention_variants(urm, inputs.ida)]
+    assert [v.label for v in convention_variants(gfrp, inputs.ida)][: len(bare)] == bare
+
+
 def test_sensitivity_in_results_and_cached(tmp_path):
     inputs = small_inputs()
     results, first = run_assessment(inputs, tmp_path, jobs=2, pdf=False, write=False)
@@ -41,6 +63,23 @@ def test_sensitivity_in_results_and_cached(tmp_path):
     assert row0.variant == "as assessed"
     assert row0.design_a_dyn == case.design_a_dyn
     assert row0.capacity_demand == case.capacity_demand
-    assert len(sens.rows) == len(convention_variants(inputs.case_models()[1]))
+    assert len(sens.rows) == len(convention_variants(inputs.case_models()[1], inputs.ida))
+    step = next(r for r in sens.rows if r.variant.startswith("IDA step ratio"))
+    assert step.design_a_dyn > 0.0
     _, again = run_assessment(inputs, tmp_path, jobs=2, pdf=False, write=False)
     assert again.computed == 0
+
+
+def test_runner_runs_a_search_of_its_own_when_given_one(tmp_path):
+    """``IdaRunner.run(settings=...)`` searches with those settings, as ``ida`` itself does with
+    them (more time histories at √s), and keys them apart from the run's in the cache."""
+    inputs = small_inputs()
+    model = inputs.case_models()[1]
+    runner = IdaRunner(RECORDS[:1], inputs, IdaCache(tmp_path), jobs=1)
+    finer = replace(inputs.ida, step_ratio=inputs.ida.step_ratio**0.5)
+    [[coarse]] = runner.run([model])
+    [[fine]] = runner.run([model], settings=finer)
+    assert (runner.computed, runner.reused) == (2, 0)  # not the first one from the cache
+    assert fine == ida(model, RECORDS[0].acc, RECORDS[0].dt, finer)
+    assert coarse == ida(model, RECORDS[0].acc, RECORDS[0].dt, inputs.ida)
+    assert fine.runs > coarse.runs
