@@ -7,7 +7,9 @@ One generic pair driven by the dataclasses' type hints: a new dataclass or field
 ``float``/``int``/``str``/``bool`` and ``object`` (any JSON value, kept as read).  A field
 with a default may be missing from the file (one whose metadata has ``omit_if_none`` is not
 written when None); an unknown key or a value of the wrong type is
-an :class:`~frp_assess.errors.InputError` naming the file and the key path.
+an :class:`~frp_assess.errors.InputError` naming the file and the key path.  Reading builds
+one converter per annotation, once (:func:`_converter`), so a value costs no look-up of its
+annotation's origin, arguments or fields.
 """
 
 from __future__ import annotations
@@ -18,6 +20,7 @@ import itertools
 import json
 import types
 import typing
+from collections.abc import Callable
 from typing import Any
 
 from frp_assess.errors import InputError
@@ -74,7 +77,11 @@ def from_json(text: str, *, file: str | None = None) -> AssessmentResult:
 
 def from_data(tp: Any, value: Any, *, file: str | None = None, key: str = "") -> Any:
     """``value`` (plain JSON) as the type ``tp``; raises InputError at ``key``."""
-    return _convert(tp, value, file, key)
+    return _converter(tp)(value, file, key)
+
+
+#: converts a plain JSON value to one annotation: (value, file, key path) -> value
+Converter = Callable[[Any, "str | None", str], Any]
 
 
 @functools.cache
@@ -86,43 +93,123 @@ def _fail(file: str | None, key: str, message: str) -> InputError:
     return InputError(message, file=file, key=key or None)
 
 
-def _convert(tp: Any, value: Any, file: str | None, key: str) -> Any:
+def _identity(value: Any, file: str | None, key: str) -> Any:
+    return value
+
+
+@functools.cache
+def _converter(tp: Any) -> Converter:
+    """The converter of the annotation ``tp``, built once per annotation: what the
+    annotation asks (its origin, arguments, fields) is read here, not at every value."""
     origin = typing.get_origin(tp)
     args = typing.get_args(tp)
     if tp is object or tp is Any:
-        return value
+        return _identity
     if origin in (types.UnionType, typing.Union):
-        if value is None and type(None) in args:
+        return _union(args)
+    if dataclasses.is_dataclass(tp):
+        return _dataclass(tp)
+    if origin is tuple or origin is list:
+        if origin is tuple and not (len(args) == 2 and args[1] is Ellipsis):
+            return _fixed_tuple(args)
+        return _array(args[0], as_tuple=origin is tuple)
+    if origin is dict:
+        return _mapping(args[1])
+    return functools.partial(_scalar, tp)
+
+
+def _union(args: tuple[Any, ...]) -> Converter:
+    """``X | Y | None``: None where allowed, else the first alternative that fits."""
+    none_ok = type(None) in args
+    inner = [a for a in args if a is not type(None)]
+
+    def convert(value: Any, file: str | None, key: str) -> Any:
+        if value is None and none_ok:
             return None
-        inner = [a for a in args if a is not type(None)]
         for alternative in inner[:-1]:
             try:
-                return _convert(alternative, value, file, key)
+                return _converter(alternative)(value, file, key)
             except InputError:
                 continue
-        return _convert(inner[-1], value, file, key)
-    if dataclasses.is_dataclass(tp):
-        return _dataclass(tp, value, file, key)
-    if origin is tuple or origin is list:
+        return _converter(inner[-1])(value, file, key)
+
+    return convert
+
+
+def _fixed_tuple(args: tuple[Any, ...]) -> Converter:
+    def convert(value: Any, file: str | None, key: str) -> Any:
         if not isinstance(value, list):
             raise _fail(file, key, f"expected an array, found {_kind(value)}")
-        if origin is tuple and not (len(args) == 2 and args[1] is Ellipsis):
-            if len(value) != len(args):
-                raise _fail(file, key, f"expected {len(args)} items, found {len(value)}")
-            return tuple(
-                _convert(a, v, file, f"{key}[{i}]")
-                for i, (a, v) in enumerate(zip(args, value, strict=True))
-            )
-        fast = _plain_items(args[0], value)
+        if len(value) != len(args):
+            raise _fail(file, key, f"expected {len(args)} items, found {len(value)}")
+        return tuple(
+            _converter(a)(v, file, f"{key}[{i}]")
+            for i, (a, v) in enumerate(zip(args, value, strict=True))
+        )
+
+    return convert
+
+
+def _array(item: Any, *, as_tuple: bool) -> Converter:
+    """``list[X]`` or ``tuple[X, ...]``."""
+
+    def convert(value: Any, file: str | None, key: str) -> Any:
+        if not isinstance(value, list):
+            raise _fail(file, key, f"expected an array, found {_kind(value)}")
+        fast = _plain_items(item, value)
         if fast is not None:
-            return tuple(fast) if origin is tuple else fast
-        items = [_convert(args[0], v, file, f"{key}[{i}]") for i, v in enumerate(value)]
-        return tuple(items) if origin is tuple else items
-    if origin is dict:
+            return tuple(fast) if as_tuple else fast
+        each = _converter(item)
+        items = [each(v, file, f"{key}[{i}]") for i, v in enumerate(value)]
+        return tuple(items) if as_tuple else items
+
+    return convert
+
+
+def _mapping(item: Any) -> Converter:
+    """``dict[str, X]``."""
+
+    def convert(value: Any, file: str | None, key: str) -> Any:
         if not isinstance(value, dict):
             raise _fail(file, key, f"expected an object, found {_kind(value)}")
-        return {k: _convert(args[1], v, file, _join(key, k)) for k, v in value.items()}
-    return _scalar(tp, value, file, key)
+        each = _converter(item)
+        return {k: each(v, file, _join(key, k)) for k, v in value.items()}
+
+    return convert
+
+
+def _dataclass(cls: Any) -> Converter:
+    """A results dataclass from its JSON object: every key known, every field without a
+    default present.  Its fields' converters are looked up when first needed (a dataclass
+    may name itself)."""
+    names = [f.name for f in dataclasses.fields(cls)]
+    known = frozenset(names)
+    required = frozenset(
+        f.name
+        for f in dataclasses.fields(cls)
+        if f.default is dataclasses.MISSING and f.default_factory is dataclasses.MISSING
+    )
+
+    fields: list[tuple[str, Converter]] = []
+
+    def convert(value: Any, file: str | None, key: str) -> Any:
+        if not isinstance(value, dict):
+            raise _fail(file, key, f"expected an object, found {_kind(value)}")
+        unknown = [k for k in value if k not in known]
+        if unknown:
+            raise _fail(file, _join(key, unknown[0]), "unknown key")
+        if not fields:
+            hints = _hints(cls)
+            fields.extend((name, _converter(hints[name])) for name in names)
+        kwargs = {}
+        for name, field_converter in fields:
+            if name in value:
+                kwargs[name] = field_converter(value[name], file, _join(key, name))
+            elif name in required:
+                raise _fail(file, _join(key, name), "missing")
+        return cls(**kwargs)
+
+    return convert
 
 
 #: The exact JSON types each scalar annotation accepts (bool is not a number here)
@@ -156,23 +243,6 @@ def _plain_items(tp: Any, value: list[Any]) -> list[Any] | None:
     if len(items) != len(value) or not {tuple(map(type, v)) for v in items} <= allowed:
         return None
     return items
-
-
-def _dataclass(cls: Any, value: Any, file: str | None, key: str) -> Any:
-    if not isinstance(value, dict):
-        raise _fail(file, key, f"expected an object, found {_kind(value)}")
-    hints = _hints(cls)
-    fields = {f.name: f for f in dataclasses.fields(cls)}
-    unknown = [k for k in value if k not in fields]
-    if unknown:
-        raise _fail(file, _join(key, unknown[0]), "unknown key")
-    kwargs = {}
-    for name, f in fields.items():
-        if name in value:
-            kwargs[name] = _convert(hints[name], value[name], file, _join(key, name))
-        elif f.default is dataclasses.MISSING and f.default_factory is dataclasses.MISSING:
-            raise _fail(file, _join(key, name), "missing")
-    return cls(**kwargs)
 
 
 def _scalar(tp: Any, value: Any, file: str | None, key: str) -> Any:
