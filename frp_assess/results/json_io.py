@@ -178,19 +178,23 @@ def _mapping(item: Any) -> Converter:
     return convert
 
 
+@functools.cache
+def _field_converters(cls: Any) -> tuple[tuple[str, Converter], ...]:
+    """(name, converter) of every field of the dataclass ``cls``, in field order."""
+    hints = _hints(cls)
+    return tuple((f.name, _converter(hints[f.name])) for f in dataclasses.fields(cls))
+
+
 def _dataclass(cls: Any) -> Converter:
     """A results dataclass from its JSON object: every key known, every field without a
     default present.  Its fields' converters are looked up when first needed (a dataclass
     may name itself)."""
-    names = [f.name for f in dataclasses.fields(cls)]
-    known = frozenset(names)
+    known = frozenset(f.name for f in dataclasses.fields(cls))
     required = frozenset(
         f.name
         for f in dataclasses.fields(cls)
         if f.default is dataclasses.MISSING and f.default_factory is dataclasses.MISSING
     )
-
-    fields: list[tuple[str, Converter]] = []
 
     def convert(value: Any, file: str | None, key: str) -> Any:
         if not isinstance(value, dict):
@@ -198,11 +202,8 @@ def _dataclass(cls: Any) -> Converter:
         unknown = [k for k in value if k not in known]
         if unknown:
             raise _fail(file, _join(key, unknown[0]), "unknown key")
-        if not fields:
-            hints = _hints(cls)
-            fields.extend((name, _converter(hints[name])) for name in names)
         kwargs = {}
-        for name, field_converter in fields:
+        for name, field_converter in _field_converters(cls):
             if name in value:
                 kwargs[name] = field_converter(value[name], file, _join(key, name))
             elif name in required:
