@@ -33,6 +33,8 @@ INTERFACE_LEAVES: dict[str, str] = {
     "output_set": "checking an output folder or file before anything runs",
     "config.schema": "form metadata: the project file's blocks, fields, bounds and help",
     "dynamics.options": "option metadata: default, range, unit and help of each model option",
+    "rules": "the code's clauses and constants (pure functions of numbers), which every layer "
+    "may call so that each is written once (docs/architecture.md)",
     # justified beyond the brief's list:
     "config.library": "the FRP and masonry catalogues (pure data) the forms offer by name",
     "config.messages": "Loc, a field's key path, and the loader's wording of a problem, so "
@@ -44,28 +46,31 @@ INTERFACE_LEAVES: dict[str, str] = {
 # fmt: off
 INTERNAL: dict[str, set[str]] = {
     "errors": set(),
-    "rules": set(),  # pure engineering formulas: nothing of frp_assess below them
-    "results": {"errors"},  # the typed results (stdlib dataclasses): no numerics, no files
-    "numbers": {"results"},
+    # the code's clauses and material rules: a leaf, nothing of frp_assess below them, and
+    # every layer may import it (each rule written once)
+    "rules": set(),
+    "results": {"errors", "rules"},  # the typed results (stdlib dataclasses): no numerics
+    "numbers": {"results", "rules"},
     "text_safety": set(),
     "libm": set(),  # elementwise C-library functions of arrays (the same bits on every CPU)
     "io_utils": {"errors"},
     "output_set": {"errors", "io_utils"},
     "dynamics": {"errors", "libm", "motions", "rules"},
-    "motions": {"errors", "io_utils", "libm"},
+    "motions": {"errors", "io_utils", "libm", "rules"},
     "config": {"errors", "io_utils", "rules", "dynamics", "motions"},
     "assess": {
         "", "errors", "io_utils", "libm", "numbers", "text_safety", "rules", "dynamics",
         "motions", "config", "results",
     },
-    "report": {"errors", "io_utils", "numbers", "text_safety", "results"},
+    "report": {"errors", "io_utils", "numbers", "text_safety", "results", "rules"},
     "study": {
         "", "errors", "io_utils", "dynamics", "motions", "config", "assess", "report", "results",
+        "rules",
     },
     # the application service: everything below it, and nothing imports it but the interfaces
     "app": {
         "", "errors", "io_utils", "output_set", "text_safety", "dynamics", "motions", "config",
-        "assess", "report", "study", "results",
+        "assess", "report", "study", "results", "rules",
     },
     "api": {"app"},  # the former application API: a re-export of app, kept for old imports
     # the interfaces: the one door (app) and the leaves above, nothing else
