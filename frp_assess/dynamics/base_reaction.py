@@ -30,7 +30,7 @@ from numpy.typing import NDArray
 
 from frp_assess.dynamics.rebars import Rebars
 from frp_assess.dynamics.wall import Wall
-from frp_assess.motions.record import G
+from frp_assess.rules.constants import G
 from frp_assess.rules.masonry import (
     base_carries_weight,
     compressed_zone_depth,
