@@ -29,6 +29,7 @@ from frp_assess.assess.wall_model import (
 from frp_assess.config.library import FRP_MATERIALS, did_you_mean
 from frp_assess.dynamics import RockingModel
 from frp_assess.errors import InputError
+from frp_assess.rules.geometry import slenderness, thickness_of
 from frp_assess.study.schema import StudyFile, spectrum_label, spectrum_text
 
 
@@ -197,8 +198,8 @@ class StudyPlan:
         """B [m] and α [°] of the wall of height H [m] and the geometry axis' value (α [°]
         when the study gives ``alpha_deg``, else B [m])."""
         if self.by_alpha:
-            return height * math.tan(math.radians(geometry)), geometry
-        return geometry, math.degrees(math.atan2(geometry, height))
+            return thickness_of(height, math.radians(geometry)), geometry
+        return geometry, math.degrees(slenderness(geometry, height))
 
     def building(self, case: Case) -> BuildingSettings | None:
         """Where the wall of ``case`` stands (None: at ground level, docs/model.md §9)."""
