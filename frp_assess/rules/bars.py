@@ -23,6 +23,14 @@ MAX_RATIO = 20.0
 FRP_RUPTURE_PARTIAL_FACTOR = 1.10
 #: k of the 5 % fractile of a normal distribution (a large number of tests) [-].
 FRACTILE_5_PERCENT = 1.645
+#: The exposures of CNR-DT 200 R1/2013 Table 3.2, in the table's order.
+EXPOSURES: tuple[str, ...] = ("internal", "external", "aggressive")
+#: η_a by fibre and exposure (CNR-DT 200 R1/2013 Table 3.2) [-].
+ENVIRONMENTAL_FACTORS: dict[str, dict[str, float]] = {
+    "glass": {"internal": 0.75, "external": 0.65, "aggressive": 0.50},
+    "carbon": {"internal": 0.95, "external": 0.85, "aggressive": 0.85},
+    "aramid": {"internal": 0.85, "external": 0.75, "aggressive": 0.70},
+}
 
 
 def _check_position(position: str) -> None:
@@ -62,6 +70,16 @@ def rupture_strain(strain: float, cyclic_factor: float) -> float:
     """ε_max = c·ε [-]: the cyclic reduction c of the bar's strain at rupture ε, the producer's
     mean ε_u (the paper) or the design ε_fd of :func:`fd_strain` (docs/model.md §2.1)."""
     return cyclic_factor * strain
+
+
+def eta_a(fibre: str, exposure: str) -> float:
+    """η_a [-], the environmental conversion factor of an FRP of ``fibre`` (glass, carbon,
+    aramid) under ``exposure`` (internal, external, aggressive), CNR-DT 200 R1/2013 Table 3.2.
+
+    Raises:
+        KeyError: a fibre or exposure not in the table (the caller names the key of its input).
+    """
+    return ENVIRONMENTAL_FACTORS[fibre][exposure]
 
 
 def fd_strain(

@@ -23,12 +23,7 @@ from frp_assess.assess.bar_catalogue import (
 from frp_assess.assess.bar_strain import design_rupture_strain, environmental_factor
 from frp_assess.errors import InputError
 from frp_assess.rules.bars import characteristic_strain
-
-TABLE_3_2 = {
-    "glass": (0.75, 0.65, 0.50),
-    "carbon": (0.95, 0.85, 0.85),
-    "aramid": (0.85, 0.75, 0.70),
-}
+from tests.rules.test_bars import TABLE_3_2  # η_a of CNR-DT 200 Table 3.2, typed once
 
 
 @pytest.mark.parametrize(
