@@ -75,11 +75,6 @@ def environmental_factor(material: str, exposure: str, *, fibre: str | None = No
     return eta_a(fibre, exposure)
 
 
-#: CoV of the rupture strain assumed when the producer gives no characteristic value
-#: (an assumption of this tool, on the safe side of the scatter of tension tests on FRP bars)
-DEFAULT_STRAIN_COV = 0.10
-
-
 @dataclass(frozen=True)
 class DesignStrain:
     """ε_d = c·η_a·ε_fk/γ_f and its factors.

@@ -20,6 +20,7 @@ from frp_assess import libm
 from frp_assess.dynamics import Rebars, Wall
 from frp_assess.rules.constants import G
 from frp_assess.rules.kinematic import a_star
+from frp_assess.rules.masonry import CONFIDENCE_FACTORS
 
 #: A rupture that leaves less than this fraction of the largest capacity limits d_SLV
 #: ("riduzione della capacità ... superiore al 50 % del valore massimo", §C8.7.1.2.1.6) [-].
@@ -240,7 +241,7 @@ def capacity_curve(
     wall: Wall,
     rebars: Rebars | None = None,
     *,
-    fc: float = 1.35,
+    fc: float = CONFIDENCE_FACTORS["LC1"],
     points: int = 401,
     slenderness: float | None = None,
     stiffness: float | None = None,

@@ -124,7 +124,7 @@ def fc_basis(settings: CodeCheckSettings) -> str:
     fc = confidence_factor(settings.knowledge_level)
     rule = (
         "Circolare 2019 §C8.7.1.2.1.3: a rigid block whose masonry has infinite compressive "
-        "strength uses the FC of LC1, 1.35"
+        f"strength uses the FC of LC1, {confidence_factor('LC1'):g}"
     )
     if settings.knowledge_level == "LC1":
         text = f"FC = {fc:g} (knowledge level LC1; {rule})."

@@ -302,7 +302,7 @@ class PivotCheck:
         verdict = "holds" if self.rigid_block_holds else "fails"
         return (
             f"pivot: N = {self.force:.0f} kN/m needs x = {self.depth * 1e3:.0f} mm of masonry "
-            f"at 0.85*f_d = {STRESS_BLOCK_FACTOR * self.f_d:.2f} MPa, x/B = "
+            f"at {STRESS_BLOCK_FACTOR:g}*f_d = {STRESS_BLOCK_FACTOR * self.f_d:.2f} MPa, x/B = "
             f"{self.depth_ratio:.3f} (limit {self.limit:.2f}): rigid-block premise {verdict}"
         )
 

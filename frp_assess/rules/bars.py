@@ -23,6 +23,9 @@ MAX_RATIO = 20.0
 FRP_RUPTURE_PARTIAL_FACTOR = 1.10
 #: k of the 5 % fractile of a normal distribution (a large number of tests) [-].
 FRACTILE_5_PERCENT = 1.645
+#: CoV of the rupture strain assumed when the producer gives no characteristic value (an
+#: assumption of this tool, on the safe side of the scatter of tension tests on FRP bars) [-].
+DEFAULT_STRAIN_COV = 0.10
 #: The exposures of CNR-DT 200 R1/2013 Table 3.2, in the table's order.
 EXPOSURES: tuple[str, ...] = ("internal", "external", "aggressive")
 #: η_a by fibre and exposure (CNR-DT 200 R1/2013 Table 3.2) [-].
