@@ -309,3 +309,24 @@ def test_modules_are_small(path: Path) -> None:
     limit = MAX_SCHEMA_MODULE_LINES if relative.startswith("config/schema/") else MAX_MODULE_LINES
     lines = len(path.read_text(encoding="utf-8").splitlines())
     assert lines <= limit, f"{relative} has {lines} lines, more than {limit}: split it by role"
+
+
+#: what the service's run (app/assessment.py) takes from assess/: the inputs and records it is
+#: given, the cache it places, the runner it hands over and the one function that does the
+#: engineering (issue 37: the service orchestrates, assess/ decides)
+SERVICE_RUN_IMPORTS = {
+    "frp_assess.assess.assessment_run",
+    "frp_assess.assess.cache",
+    "frp_assess.assess.from_project",
+    "frp_assess.assess.inputs",
+    "frp_assess.assess.runner",
+    "frp_assess.assess.seismic",
+}
+
+
+def test_the_service_run_takes_no_engineering_from_assess() -> None:
+    """app/assessment.py decides nothing (no FC, check, spectrum or material of its own):
+    what it imports of assess/ is the table above, and nothing of rules/."""
+    names = imported_modules(PACKAGE / "app" / "assessment.py")
+    engineering = {n for n in names if n.startswith(("frp_assess.assess.", "frp_assess.rules"))}
+    assert engineering <= SERVICE_RUN_IMPORTS, engineering - SERVICE_RUN_IMPORTS
