@@ -11,6 +11,9 @@ few leaves (:data:`INTERFACE_LEAVES`), nothing else of the package.
 from __future__ import annotations
 
 import ast
+import os
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -330,3 +333,55 @@ def test_the_service_run_takes_no_engineering_from_assess() -> None:
     names = imported_modules(PACKAGE / "app" / "assessment.py")
     engineering = {n for n in names if n.startswith(("frp_assess.assess.", "frp_assess.rules"))}
     assert engineering <= SERVICE_RUN_IMPORTS, engineering - SERVICE_RUN_IMPORTS
+
+
+# --- the core loads no UI library (issue 37) ---------------------------------------------------
+
+#: the packages of the core: what a program that assesses a wall without a screen or a report
+#: imports (the leaves included)
+CORE = (
+    "app", "assess", "config", "dynamics", "motions", "results", "rules", "study",
+    "errors", "io_utils", "libm", "numbers", "output_set", "text_safety",
+)  # fmt: skip
+#: modules of the core that draw an output themselves, each with why
+CORE_OUTPUT_MODULES: dict[str, str] = {
+    "frp_assess.study.figures": "the study's figures, drawn with reportlab (RESTRICTED allows "
+    "study); the study runner imports it only when it draws them",
+}
+UI_LIBRARIES = ("textual", "rich", "reportlab", "docx")
+
+
+def core_modules() -> list[str]:
+    """Every module of :data:`CORE` but :data:`CORE_OUTPUT_MODULES`, by dotted name."""
+    names = []
+    for path in MODULES:
+        name = module_name(path)
+        parts = name.split(".")
+        if len(parts) > 1 and parts[1] in CORE and name not in CORE_OUTPUT_MODULES:
+            names.append(name)
+    return sorted(names)
+
+
+def test_the_core_loads_no_ui_library() -> None:
+    """Importing every module of the core (frp_assess.app, assess, dynamics, rules, ...) in a
+    fresh interpreter loads none of textual, rich, reportlab, python-docx: the engineering
+    runs without a screen or a document (docs/architecture.md)."""
+    script = (
+        "import importlib, sys\n"
+        f"for name in {core_modules()!r}:\n"
+        "    importlib.import_module(name)\n"
+        f"print(sorted({{m.split('.')[0] for m in sys.modules}} & set({UI_LIBRARIES!r})))\n"
+    )
+    env = {**os.environ, "PYTHONPATH": str(PACKAGE.parent)}
+    done = subprocess.run(
+        [sys.executable, "-c", script], capture_output=True, text=True, env=env, check=False
+    )
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "[]", f"the core loads {done.stdout.strip()}"
+
+
+def test_the_ui_check_bites() -> None:
+    """The same probe sees a UI library that a module loads (rich here)."""
+    script = "import sys, rich.markup\nprint('rich' in sys.modules)\n"
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True)
+    assert done.stdout.strip() == "True"
