@@ -19,13 +19,8 @@ from numpy.typing import ArrayLike, NDArray
 from frp_assess import libm
 from frp_assess.dynamics import Rebars, Wall
 from frp_assess.rules.constants import G
-from frp_assess.rules.kinematic import a_star
+from frp_assess.rules.kinematic import RUPTURE_DROP, a_star
 from frp_assess.rules.masonry import CONFIDENCE_FACTORS
-
-#: A rupture that leaves less than this fraction of the largest capacity limits d_SLV
-#: ("riduzione della capacità ... superiore al 50 % del valore massimo", §C8.7.1.2.1.6) [-].
-RUPTURE_DROP = 0.50
-
 
 # --- the kinematics of the rigid wall --------------------------------------------------------
 
