@@ -98,7 +98,7 @@ class DesignStrain:
         return rule.fd_strain(self.characteristic, self.eta_a, self.partial_factor)
 
 
-def design_rupture_strain(
+def bar_design_strain(
     characteristic: float,
     material: str,
     exposure: str,

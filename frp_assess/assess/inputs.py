@@ -16,7 +16,7 @@ from frp_assess.assess.bar_catalogue import (
 )
 from frp_assess.assess.bar_strain import (
     DesignStrain,
-    design_rupture_strain,
+    bar_design_strain,
     fibre_of,
 )
 from frp_assess.assess.masonry_strength import masonry_strength
@@ -243,7 +243,7 @@ class AssessmentInputs:
         §2.1), or None when the design values are off."""
         if not self.bars.design_values:
             return None
-        return design_rupture_strain(
+        return bar_design_strain(
             material.characteristic,
             material.name,
             self.bars.exposure,

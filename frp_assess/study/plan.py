@@ -23,7 +23,7 @@ from frp_assess.assess.wall_model import (
     BarsInput,
     WallInput,
     base_problem,
-    design_strength,
+    case_design_strength,
     rocking_model,
 )
 from frp_assess.config.library import FRP_MATERIALS, did_you_mean
@@ -142,7 +142,7 @@ class StudyPlan:
         self.options = study.model.model_options(study.model.integration_tolerance)
         self.ida_settings = study.ida.settings()
         #: f_d = f_m/FC [MPa] of every wall of the study (the crushing pivot's masonry)
-        self.design_strength = design_strength(
+        self.design_strength = case_design_strength(
             study.masonry, study.knowledge_level, study.compressive_strength
         )
         for h in self.heights:  # the one refusal of the masonry at the base, before any case

@@ -34,6 +34,9 @@ TEXTS: dict[str, str] = {
     "1.645": NUMBERS[1.645],
     "9.80665": NUMBERS[9.80665],
     "1.35": "rules.masonry.CONFIDENCE_FACTORS (Circolare 2019 Tab. C8.5.IV)",
+    "fewer than 7": "rules.record_sets.MEAN_OF_RECORDS_FROM (NTC 2018 §7.3.5)",
+    "≥ 7": "rules.record_sets.MEAN_OF_RECORDS_FROM (NTC 2018 §7.3.5)",
+    ">= 7": "rules.record_sets.MEAN_OF_RECORDS_FROM (NTC 2018 §7.3.5)",
 }
 #: the keys of a table of the codes -> where the table lives
 TABLES: dict[frozenset[str], str] = {
@@ -168,6 +171,7 @@ def test_every_allowed_exception_is_still_there() -> None:
         ('help = "x = N/(0.85*f_d)"\n', NUMBERS[0.85]),
         ('line = f"the stress block 0.85*f_d = {f:g}"\n', NUMBERS[0.85]),
         ('text = "FC = 1.35 (LC1)"\n', TEXTS["1.35"]),
+        ('text = "the least favourable, as there are fewer than 7"\n', TEXTS["fewer than 7"]),
         ('rule = "mean" if len(a) >= 7 else "least"\n', RECORDS_RULE),
         ("mean = n >= MEAN_OF_RECORDS_FROM\n", RECORDS_RULE),
         ("MEAN_OF_RECORDS_FROM = 7\n", RECORDS_RULE),
