@@ -116,7 +116,8 @@ def a_g_limit(
 
 
 def zeta_e(capacity: float, demand: float) -> float:
-    """ζ_E = capacity / demand [-], in PGA terms (a_g,SLV / a_g, or a_dyn/(FC·a_g·S))."""
+    """ζ_E = capacity / demand [-], in PGA terms (a_g,SLV / a_g, or a_dyn/(FC·a_g·S)), both in
+    one unit (Circolare 2019 §C8.7.1.2.1.8)."""
     if not (capacity >= 0.0 and demand > 0.0):
         raise ValueError(f"need capacity >= 0 and demand > 0, got {capacity!r}, {demand!r}")
     return capacity / demand
