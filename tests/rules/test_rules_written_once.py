@@ -6,7 +6,8 @@ texts, report lines, results.json wording, f-strings included) and the shapes of
 rules' expressions are.  A hit names the rule's one home.  The literals are typed here from
 the code's clauses (NTC 2018 §7.8.2.2.1: 0.85; the 5 % fractile of a normal law: 1.645;
 g = 9.80665 m/s², ISO 80000-3; NTC 2018 §7.3.5: 7 records; Circolare 2019 Tab. C8.5.IV;
-CNR-DT 200 R1/2013 Table 3.2; Housner 1963's 1 − 1.5·sin²α), not read back from rules/.
+CNR-DT 200 R1/2013 Table 3.1: γ_f = 1.10, Table 3.2: η_a; Housner 1963's 1 − 1.5·sin²α),
+not read back from rules/.
 """
 
 from __future__ import annotations
@@ -37,6 +38,8 @@ TEXTS: dict[str, str] = {
     "fewer than 7": "rules.record_sets.MEAN_OF_RECORDS_FROM (NTC 2018 §7.3.5)",
     "≥ 7": "rules.record_sets.MEAN_OF_RECORDS_FROM (NTC 2018 §7.3.5)",
     ">= 7": "rules.record_sets.MEAN_OF_RECORDS_FROM (NTC 2018 §7.3.5)",
+    "gamma_f = 1.1": "rules.bars.FRP_RUPTURE_PARTIAL_FACTOR (CNR-DT 200 R1/2013 Table 3.1)",
+    "γ_f = 1.1": "rules.bars.FRP_RUPTURE_PARTIAL_FACTOR (CNR-DT 200 R1/2013 Table 3.1)",
 }
 #: the keys of a table of the codes -> where the table lives
 TABLES: dict[frozenset[str], str] = {
@@ -171,6 +174,7 @@ def test_every_allowed_exception_is_still_there() -> None:
         ('help = "x = N/(0.85*f_d)"\n', NUMBERS[0.85]),
         ('line = f"the stress block 0.85*f_d = {f:g}"\n', NUMBERS[0.85]),
         ('text = "FC = 1.35 (LC1)"\n', TEXTS["1.35"]),
+        ('rule = "c*eta_a*eps_fk/gamma_f (gamma_f = 1.10 Table 3.1)"\n', TEXTS["γ_f = 1.1"]),
         ('text = "the least favourable, as there are fewer than 7"\n', TEXTS["fewer than 7"]),
         ('rule = "mean" if len(a) >= 7 else "least"\n', RECORDS_RULE),
         ("mean = n >= MEAN_OF_RECORDS_FROM\n", RECORDS_RULE),
