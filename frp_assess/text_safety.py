@@ -20,8 +20,6 @@ from __future__ import annotations
 
 import re
 
-from rich.markup import escape as _rich_escape
-
 #: shown in place of a control character (ESC, NUL, BEL, newline in a name, C1 controls, DEL)
 PLACEHOLDER = "\N{REPLACEMENT CHARACTER}"
 
@@ -59,8 +57,14 @@ def plain(text: object, *, keep_newlines: bool = False) -> str:
 
 
 def console(text: object) -> str:
-    """User text for a rich console or table cell: no control characters, markup literal."""
-    return _rich_escape(plain(text))
+    """User text for a rich console or table cell: no control characters, markup literal.
+
+    rich is imported here, when a console needs it, so that the core (assess, app, ...),
+    which imports this module for :func:`plain`, loads no UI library
+    (tests/test_layering.py)."""
+    from rich.markup import escape
+
+    return escape(plain(text))
 
 
 def cap(text: str, limit: int = PDF_MAX_CHARS) -> str:

@@ -22,7 +22,7 @@ from frp_assess.app.project import (
     load_project_text,
 )
 from frp_assess.app.report import export_folder_problem, export_run
-from frp_assess.assess.wall_model import design_strength
+from frp_assess.assess.wall_model import case_design_strength
 from frp_assess.config.library import FRP_MATERIALS
 from frp_assess.config.schema import WallSpec
 from frp_assess.errors import Cancelled, InputError
@@ -94,7 +94,7 @@ def test_previews_are_the_closed_forms() -> None:
     assert edge.alpha == pytest.approx(math.atan(0.1))
     assert edge.R == pytest.approx(0.5 * math.hypot(0.3, 3.0))
     assert edge.a_rm == pytest.approx(0.1) and edge.depth == 0.0
-    f_d = design_strength("solid-brick-lime-mortar", "LC1") * 1e6  # [Pa]
+    f_d = case_design_strength("solid-brick-lime-mortar", "LC1") * 1e6  # [Pa]
     x_w = 18e3 * 0.3 * 3.0 / (0.85 * f_d)  # [m]
     crushing = wall_derived(spec, pivot="crushing", level="LC1")
     assert crushing.depth == pytest.approx(x_w)

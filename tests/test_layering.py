@@ -11,6 +11,9 @@ few leaves (:data:`INTERFACE_LEAVES`), nothing else of the package.
 from __future__ import annotations
 
 import ast
+import os
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -33,6 +36,8 @@ INTERFACE_LEAVES: dict[str, str] = {
     "output_set": "checking an output folder or file before anything runs",
     "config.schema": "form metadata: the project file's blocks, fields, bounds and help",
     "dynamics.options": "option metadata: default, range, unit and help of each model option",
+    "rules": "the code's clauses and constants (pure functions of numbers), which every layer "
+    "may call so that each is written once (docs/architecture.md)",
     # justified beyond the brief's list:
     "config.library": "the FRP and masonry catalogues (pure data) the forms offer by name",
     "config.messages": "Loc, a field's key path, and the loader's wording of a problem, so "
@@ -44,28 +49,31 @@ INTERFACE_LEAVES: dict[str, str] = {
 # fmt: off
 INTERNAL: dict[str, set[str]] = {
     "errors": set(),
-    "rules": set(),  # pure engineering formulas: nothing of frp_assess below them
-    "results": {"errors"},  # the typed results (stdlib dataclasses): no numerics, no files
-    "numbers": {"results"},
+    # the code's clauses and material rules: a leaf, nothing of frp_assess below them, and
+    # every layer may import it (each rule written once)
+    "rules": set(),
+    "results": {"errors", "rules"},  # the typed results (stdlib dataclasses): no numerics
+    "numbers": {"results", "rules"},
     "text_safety": set(),
     "libm": set(),  # elementwise C-library functions of arrays (the same bits on every CPU)
     "io_utils": {"errors"},
     "output_set": {"errors", "io_utils"},
     "dynamics": {"errors", "libm", "motions", "rules"},
-    "motions": {"errors", "io_utils", "libm"},
+    "motions": {"errors", "io_utils", "libm", "rules"},
     "config": {"errors", "io_utils", "rules", "dynamics", "motions"},
     "assess": {
         "", "errors", "io_utils", "libm", "numbers", "text_safety", "rules", "dynamics",
         "motions", "config", "results",
     },
-    "report": {"errors", "io_utils", "numbers", "text_safety", "results"},
+    "report": {"errors", "io_utils", "numbers", "text_safety", "results", "rules"},
     "study": {
         "", "errors", "io_utils", "dynamics", "motions", "config", "assess", "report", "results",
+        "rules",
     },
     # the application service: everything below it, and nothing imports it but the interfaces
     "app": {
         "", "errors", "io_utils", "output_set", "text_safety", "dynamics", "motions", "config",
-        "assess", "report", "study", "results",
+        "assess", "report", "study", "results", "rules",
     },
     "api": {"app"},  # the former application API: a re-export of app, kept for old imports
     # the interfaces: the one door (app) and the leaves above, nothing else
@@ -304,3 +312,76 @@ def test_modules_are_small(path: Path) -> None:
     limit = MAX_SCHEMA_MODULE_LINES if relative.startswith("config/schema/") else MAX_MODULE_LINES
     lines = len(path.read_text(encoding="utf-8").splitlines())
     assert lines <= limit, f"{relative} has {lines} lines, more than {limit}: split it by role"
+
+
+#: what the service's run (app/assessment.py) takes from assess/: the inputs and records it is
+#: given, the cache it places, the runner it hands over and the one function that does the
+#: engineering (issue 37: the service orchestrates, assess/ decides)
+SERVICE_RUN_IMPORTS = {
+    "frp_assess.assess.assessment_run",
+    "frp_assess.assess.cache",
+    "frp_assess.assess.from_project",
+    "frp_assess.assess.inputs",
+    "frp_assess.assess.runner",
+    "frp_assess.assess.seismic",
+}
+
+
+def test_the_service_run_takes_no_engineering_from_assess() -> None:
+    """app/assessment.py decides nothing (no FC, check, spectrum or material of its own):
+    what it imports of assess/ is the table above, and nothing of rules/."""
+    names = imported_modules(PACKAGE / "app" / "assessment.py")
+    engineering = {n for n in names if n.startswith(("frp_assess.assess.", "frp_assess.rules"))}
+    assert engineering <= SERVICE_RUN_IMPORTS, engineering - SERVICE_RUN_IMPORTS
+
+
+# --- the core loads no UI library (issue 37) ---------------------------------------------------
+
+#: the packages of the core: what a program that assesses a wall without a screen or a report
+#: imports (the leaves included)
+CORE = (
+    "app", "assess", "config", "dynamics", "motions", "results", "rules", "study",
+    "errors", "io_utils", "libm", "numbers", "output_set", "text_safety",
+)  # fmt: skip
+#: modules of the core that draw an output themselves, each with why
+CORE_OUTPUT_MODULES: dict[str, str] = {
+    "frp_assess.study.figures": "the study's figures, drawn with reportlab (RESTRICTED allows "
+    "study); the study runner imports it only when it draws them",
+}
+UI_LIBRARIES = ("textual", "rich", "reportlab", "docx")
+
+
+def core_modules() -> list[str]:
+    """Every module of :data:`CORE` but :data:`CORE_OUTPUT_MODULES`, by dotted name."""
+    names = []
+    for path in MODULES:
+        name = module_name(path)
+        parts = name.split(".")
+        if len(parts) > 1 and parts[1] in CORE and name not in CORE_OUTPUT_MODULES:
+            names.append(name)
+    return sorted(names)
+
+
+def test_the_core_loads_no_ui_library() -> None:
+    """Importing every module of the core (frp_assess.app, assess, dynamics, rules, ...) in a
+    fresh interpreter loads none of textual, rich, reportlab, python-docx: the engineering
+    runs without a screen or a document (docs/architecture.md)."""
+    script = (
+        "import importlib, sys\n"
+        f"for name in {core_modules()!r}:\n"
+        "    importlib.import_module(name)\n"
+        f"print(sorted({{m.split('.')[0] for m in sys.modules}} & set({UI_LIBRARIES!r})))\n"
+    )
+    env = {**os.environ, "PYTHONPATH": str(PACKAGE.parent)}
+    done = subprocess.run(
+        [sys.executable, "-c", script], capture_output=True, text=True, env=env, check=False
+    )
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "[]", f"the core loads {done.stdout.strip()}"
+
+
+def test_the_ui_check_bites() -> None:
+    """The same probe sees a UI library that a module loads (rich here)."""
+    script = "import sys, rich.markup\nprint('rich' in sys.modules)\n"
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True)
+    assert done.stdout.strip() == "True"

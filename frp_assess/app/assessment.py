@@ -1,12 +1,14 @@
 """Prepare and run an assessment; show the last run again.
 
 :func:`run_assessment` takes validated :class:`~frp_assess.assess.inputs.AssessmentInputs`,
-runs everything (records, cached parallel IDAs, ranking, sensitivity, design search, the
-code's checks), writes the results directory as one set (:func:`frp_assess.app.report.
-write_outputs`) and returns the typed results (:class:`~frp_assess.results.model.
-AssessmentResult`, docs/results-json.md).  :func:`prepare_run`, :func:`run_prepared` and
-:func:`load_previous` do the same from a project being edited (the TUI).  Progress and
-cancellation are plain callables and :class:`threading.Event`, never UI objects.
+orchestrates a run (the records, the IDA cache in the results folder, progress and
+cancellation) around the engineering, which is :func:`frp_assess.assess.assessment_run.assess`
+(cached parallel IDAs, ranking, sensitivity, design search, the code's checks), writes the
+results directory as one set (:func:`frp_assess.app.report.write_outputs`) and returns the
+typed results (:class:`~frp_assess.results.model.AssessmentResult`, docs/results-json.md).
+:func:`prepare_run`, :func:`run_prepared` and :func:`load_previous` do the same from a
+project being edited (the TUI).  Progress and cancellation are plain callables and
+:class:`threading.Event`, never UI objects.
 """
 
 from __future__ import annotations
@@ -14,38 +16,24 @@ from __future__ import annotations
 import datetime as _dt
 import os
 import threading
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from dataclasses import dataclass, replace
 from pathlib import Path
 
 from frp_assess.app.report import write_outputs
 from frp_assess.app.rerun import project_digest, referenced_paths, unchanged_run, write_sidecar
+from frp_assess.assess.assessment_run import assess
+from frp_assess.assess.assessment_run import governing_histories as governing_histories
 from frp_assess.assess.cache import IdaCache, cache_file, record_digest, task_key
-from frp_assess.assess.floor_input import floor_record, floor_spectra
 from frp_assess.assess.from_project import inputs_from_project, load_inputs
-from frp_assess.assess.inputs import UNREINFORCED, AssessmentInputs, Material
-from frp_assess.assess.kinematic_checks import floor_ratio, ida_confidence_factor, linear_check
-from frp_assess.assess.limit_states import limit_state_spectrum
-from frp_assess.assess.results import (
-    below_collapse,
-    build_results,
-    history_run,
-)
-from frp_assess.assess.runner import (
-    IdaRunner,
-)
+from frp_assess.assess.inputs import UNREINFORCED, AssessmentInputs
+from frp_assess.assess.runner import IdaRunner
 from frp_assess.assess.seismic import SeismicInput, build_records
-from frp_assess.assess.verdict_pipeline import assess_and_decide
-from frp_assess.assess.verification import verify
 from frp_assess.config import Project
 from frp_assess.errors import Cancelled, InputError
 from frp_assess.motions import ComplianceReport
 from frp_assess.results.json_io import from_json
-from frp_assess.results.model import (
-    AssessmentResult,
-    CaseResult,
-    Governing,
-)
+from frp_assess.results.model import AssessmentResult
 
 __all__ = [
     "CACHE_DIR",
@@ -154,81 +142,10 @@ def run_assessment(
         report("records", 0, 1)
         seismic = build_records(inputs)
         report("records", 1, 1)
-    records = seismic.records
-    runner = IdaRunner(records, inputs, IdaCache(out_dir / CACHE_DIR), jobs=jobs, cancel=cancel)
-
-    models = inputs.case_models()
-    all_results = runner.run(
-        models, progress=lambda d, n: report("ida", d, n), on_pair=case_progress
-    )
-    numerical_check = None
-    if inputs.verify:
-        numerical_check = verify(
-            runner,
-            models,
-            all_results,
-            inputs.ida.tolerance,
-            progress=lambda d, n: report("verify", d, n),
-        )
-    # FC divides the IDA capacity (code_check.fc_in_ida): capacity/demand = a_dyn/(FC·a_g·S)
-    fc = ida_confidence_factor(inputs.code_check)
-    # the floor spectra at the wall's base, once (a wall above ground only)
-    spectra = (
-        None
-        if inputs.building is None
-        else floor_spectra(records, inputs.spectrum, inputs.building, floors=runner.motions)
-    )
-    floor_pga = None if spectra is None else spectra.floor_pga
-    # design mode, the code checks, the one decision rule and how firm it is
-    # (frp_assess.assess.verdict_pipeline); the design answers join the cases
-    decided = assess_and_decide(
-        inputs,
-        runner,
-        # the same cache, its own counts: RunStats reports the assessment's IDAs
-        IdaRunner(records, inputs, runner.cache, jobs=jobs, cancel=cancel),
-        records,
-        models,
-        all_results,
-        fc=fc,
-        floor_pga=floor_pga,
-        report=report,
-        state_records=seismic.state_records,
-    )
-    inputs, cases, recommended = decided.inputs, decided.cases, decided.recommended
-    all_results = decided.results
-    governing = governing_histories(inputs, cases, records, all_results, recommended)
-    materials: dict[str, Material] = {}
-    for o in inputs.options:
-        materials.setdefault(o.material.name, o.material)
-    if inputs.design is not None:
-        for mat in inputs.design.materials:
-            materials.setdefault(mat.name, mat)
-    slv = limit_state_spectrum(inputs, "SLV")
-    results = build_results(
-        inputs=inputs,
-        seismic=seismic,
-        cases=cases,
-        recommended=recommended,
-        # the linear check is an SLV check (eq. C8.7.1.9), at the SLV spectrum; above ground
-        # its demand is a_Z, the floor's peak acceleration at Z
-        check=linear_check(
-            models[0],
-            slv.pga_g * floor_ratio(slv, inputs.building),
-            inputs.code_check.knowledge_level,
-            inputs.code_check.behaviour_factor,
-        ),
-        design=decided.design,
-        governing=governing,
-        materials=materials,
-        created=created,
-        numerical_check=numerical_check,
-        sensitivity=decided.sensitivity,
-        floor_spectra=spectra,
-        kinematic_checks=decided.checks,
-        design_cases=decided.design_cases,
-        decision_rule=decided.decision_rule,
-        closest=decided.closest,
-        robustness=decided.robustness,
+    cache = IdaCache(out_dir / CACHE_DIR)
+    runner = IdaRunner(seismic.records, inputs, cache, jobs=jobs, cancel=cancel)
+    results = assess(
+        inputs, seismic, runner, created=created, report=report, case_progress=case_progress
     )
     if inputs_digest:
         results = replace(results, inputs_digest=inputs_digest)
@@ -237,38 +154,6 @@ def run_assessment(
         write_outputs(results, seismic, out_dir, pdf=pdf)
         report("writing", 1, 1)
     return results, RunStats(runner.computed, runner.reused, out_dir)
-
-
-def governing_histories(
-    inputs: AssessmentInputs,
-    cases: Sequence[CaseResult],
-    records: list,
-    all_results: list,
-    recommended: str | None,
-) -> Governing | None:
-    """θ/α(t) and bar strain of the recommended option (else the unreinforced wall) under the
-    record that fails first, at the collapse multiplier and just below it."""
-    idx = next((i for i, c in enumerate(cases) if c.name == recommended), 0)
-    res = all_results[idx]
-    failing = [(r.collapse_multiplier, k) for k, r in enumerate(res) if r.collapse_multiplier]
-    if not failing:
-        return None
-    c, k = min(failing)
-    model = inputs.model_for(None if idx == 0 else inputs.options[idx - 1])
-    rec = floor_record(records[k], inputs.building)  # the motion the IDA ran
-    below = below_collapse(c, res[k].survivor_multiplier, inputs.ida.tolerance)
-    alpha = model.alpha  # θ/α_x: α_x = atan((B − x_W)/H), the edge's α with pivot: edge
-    runs = (
-        history_run("collapse", c, model.run(rec.acc, rec.dt, c, history=True), alpha),
-        history_run("just below", below, model.run(rec.acc, rec.dt, below, history=True), alpha),
-    )
-    bars = model.rebars
-    return Governing(
-        case=cases[idx].name,
-        record=rec.name,
-        runs=runs,
-        rupture_strain=None if bars is None else bars.rupture_strain,
-    )
 
 
 def missing_idas(inputs: AssessmentInputs, seismic: SeismicInput, out_dir: Path) -> int:

@@ -17,7 +17,12 @@ from frp_assess.assess.from_project import material_of, spectrum_of
 from frp_assess.assess.inputs import CostSettings
 from frp_assess.assess.quantities import frp_quantity
 from frp_assess.assess.runner import design_value_rule
-from frp_assess.assess.wall_model import WallInput, design_strength, rocking_model, weight_depth
+from frp_assess.assess.wall_model import (
+    WallInput,
+    case_design_strength,
+    rocking_model,
+    weight_depth,
+)
 from frp_assess.config import FrpMaterial, Project
 from frp_assess.config.schema import Spectrum, WallSpec
 from frp_assess.dynamics import ModelOptions, Position
@@ -60,7 +65,7 @@ def wall_derived(spec: WallSpec, pivot: PivotRule = "crushing", level: str = "LC
     pivot rule and the knowledge level (its FC gives f_d): the model ``run`` builds
     (:mod:`frp_assess.assess.wall_model`).  Raises InputError when the base cannot carry
     the wall."""
-    f_d = design_strength(spec.masonry, level, spec.compressive_strength)
+    f_d = case_design_strength(spec.masonry, level, spec.compressive_strength)
     model = rocking_model(
         WallInput(spec.thickness, spec.height, spec.unit_weight_kn, f_d),
         spec.mechanism,

@@ -5,7 +5,7 @@ stresses [MPa], E [GPa], density [kg/m³], price [currency/kg].
 
 **Design strain** (CNR-DT 200 R1/2013 §3, design values of the FRP): ε_d = c·η_a·ε_fk/γ_f, with
 the characteristic rupture strain ε_fk (5 % fractile), the environmental conversion factor η_a
-of Table 3.2 (:data:`ENVIRONMENTAL_FACTORS`), the partial factor γ_f = 1.10 for the rupture of
+of Table 3.2 (:func:`frp_assess.rules.bars.eta_a`), the partial factor γ_f = 1.10 for the rupture of
 FRP (Table 3.1) and the cyclic reduction c = 0.5 of ``docs/model.md`` §2.  The values of η_a
 are those of CNR-DT 200 R1/2013 Table 3.2 (they coincide with the environmental reduction
 factors C_E of ACI 440.2R).  Basalt is not in the table: BFRP takes the glass values, the fibre
@@ -21,22 +21,17 @@ from frp_assess.errors import InputError
 from frp_assess.rules import bars as rule
 from frp_assess.rules.bars import (
     DEFAULT_STRAIN_FACTOR,
+    ENVIRONMENTAL_FACTORS,
+    EXPOSURES,
     FRP_RUPTURE_PARTIAL_FACTOR,
+    eta_a,
 )
 
 Exposure = Literal["internal", "external", "aggressive"]
-EXPOSURES: tuple[str, ...] = ("internal", "external", "aggressive")
 
 
 #: Cyclic reduction of the rupture strain, c (``docs/model.md`` §2; the rules' default).
 CYCLIC_FACTOR = DEFAULT_STRAIN_FACTOR
-
-#: η_a by fibre and exposure (CNR-DT 200 R1/2013 Table 3.2).
-ENVIRONMENTAL_FACTORS: dict[str, dict[str, float]] = {
-    "glass": {"internal": 0.75, "external": 0.65, "aggressive": 0.50},
-    "carbon": {"internal": 0.95, "external": 0.85, "aggressive": 0.85},
-    "aramid": {"internal": 0.85, "external": 0.75, "aggressive": 0.70},
-}
 
 #: Fibre of each bar material; basalt is not in Table 3.2 and takes the glass values.
 FIBRE_OF_MATERIAL: dict[str, str] = {
@@ -77,12 +72,7 @@ def environmental_factor(material: str, exposure: str, *, fibre: str | None = No
             f"unknown exposure {exposure!r}; choose one of: {', '.join(EXPOSURES)}",
             key="exposure",
         )
-    return ENVIRONMENTAL_FACTORS[fibre][exposure]
-
-
-#: CoV of the rupture strain assumed when the producer gives no characteristic value
-#: (an assumption of this tool, on the safe side of the scatter of tension tests on FRP bars)
-DEFAULT_STRAIN_COV = 0.10
+    return eta_a(fibre, exposure)
 
 
 @dataclass(frozen=True)
@@ -108,7 +98,7 @@ class DesignStrain:
         return rule.fd_strain(self.characteristic, self.eta_a, self.partial_factor)
 
 
-def design_rupture_strain(
+def bar_design_strain(
     characteristic: float,
     material: str,
     exposure: str,

@@ -13,6 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 #: confidence factors by knowledge level (Circolare 2019 Tab. C8.5.IV): the one table, rules'
+from frp_assess.rules.kinematic import a_star
 from frp_assess.rules.masonry import CONFIDENCE_FACTORS, confidence_factor
 
 __all__ = ["CONFIDENCE_FACTORS", "KinematicCheck", "simple_overturning_check"]
@@ -51,7 +52,7 @@ def simple_overturning_check(
     alpha0 = thickness / height
     e_star = 1.0
     fc = confidence_factor(knowledge_level)
-    a0 = alpha0 / (e_star * fc)
+    a0 = a_star(alpha0, e_star, fc, g=1.0)  # in g
     return KinematicCheck(
         alpha0, e_star, fc, knowledge_level, behaviour_factor, a0, ag_s / behaviour_factor
     )

@@ -41,8 +41,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
 from frp_assess.assess.kinematic_nonlinear import time_history_check
-from frp_assess.results.model import MEAN_OF_RECORDS_FROM
 from frp_assess.results.verdict import DecidingCheck
+from frp_assess.rules.record_sets import design_statistic
 
 IDA_CHECK = "IDA capacity/demand"
 TH_SLV = "time history SLV"
@@ -112,7 +112,7 @@ def _margin_key(margin: float | None) -> float:
 def ida_deciding_check(ev: Evidence) -> DecidingCheck:
     """The IDA check: design a_dyn/(FC·a_g·S) against the target; a lower bound when a record
     that did not collapse enters the design value."""
-    rule = ev.design_value or ("mean" if len(ev.a_dyn) >= MEAN_OF_RECORDS_FROM else "least")
+    rule = ev.design_value or design_statistic(len(ev.a_dyn))
     if rule == "mean":
         value = math.fsum(ev.a_dyn) / len(ev.a_dyn)
         bound = any(ev.censored)
@@ -225,7 +225,7 @@ def without_record(ev: Evidence, k: int) -> Evidence:
     """The evidence of ``ev`` with record ``k`` left out; the design value keeps the case's
     rule (the mean stays the mean with one record fewer: the question is whether one record
     carries the verdict, not the code's rule for fewer than 7 records)."""
-    rule = ev.design_value or ("mean" if len(ev.a_dyn) >= MEAN_OF_RECORDS_FROM else "least")
+    rule = ev.design_value or design_statistic(len(ev.a_dyn))
 
     def drop(xs: tuple) -> tuple:
         return xs[:k] + xs[k + 1 :]

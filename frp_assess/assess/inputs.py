@@ -15,9 +15,8 @@ from frp_assess.assess.bar_catalogue import (
     BarSize,
 )
 from frp_assess.assess.bar_strain import (
-    DEFAULT_STRAIN_COV,
     DesignStrain,
-    design_rupture_strain,
+    bar_design_strain,
     fibre_of,
 )
 from frp_assess.assess.masonry_strength import masonry_strength
@@ -36,7 +35,12 @@ from frp_assess.motions import ElasticSpectrum
 from frp_assess.motions.site import SiteHazard
 from frp_assess.results.pivot import MasonryResult
 from frp_assess.results.run_inputs import ReportSettings
-from frp_assess.rules.bars import characteristic_strain, rupture_strain
+from frp_assess.rules.bars import (
+    DEFAULT_STRAIN_COV,
+    FRACTILE_5_PERCENT,
+    characteristic_strain,
+    rupture_strain,
+)
 
 #: the name of case 0, the wall without bars
 UNREINFORCED = "Unreinforced"
@@ -52,13 +56,13 @@ class Material:
     density: float  #: [kg/m³]
     price: float  #: [currency/kg], indicative
     source: str = ""
-    characteristic_strain: float | None = None  #: ε_fk [-]; None: ε_u·(1 − 1.645·0.10)
+    characteristic_strain: float | None = None  #: ε_fk [-]; None: ε_u·(1 − k·CoV), 5 %
     fibre: str | None = None  #: glass | carbon | aramid | basalt; None: by the name
 
     @property
     def characteristic(self) -> float:
         """ε_fk [-]: the producer's value, else the 5 % fractile of ε_u with a CoV of 0.10
-        (:data:`~frp_assess.assess.bar_strain.DEFAULT_STRAIN_COV`)."""
+        (:data:`~frp_assess.rules.bars.DEFAULT_STRAIN_COV`)."""
         if self.characteristic_strain is not None:
             return self.characteristic_strain
         return characteristic_strain(self.ultimate_strain, DEFAULT_STRAIN_COV)
@@ -68,7 +72,7 @@ class Material:
         """Where ε_fk comes from (one line for results.json)."""
         if self.characteristic_strain is not None:
             return "given (characteristic_strain)"
-        return f"eps_u*(1 - 1.645*{DEFAULT_STRAIN_COV:g}), CoV assumed"
+        return f"eps_u*(1 - {FRACTILE_5_PERCENT:g}*{DEFAULT_STRAIN_COV:g}), CoV assumed"
 
 
 @dataclass(frozen=True)
@@ -239,7 +243,7 @@ class AssessmentInputs:
         §2.1), or None when the design values are off."""
         if not self.bars.design_values:
             return None
-        return design_rupture_strain(
+        return bar_design_strain(
             material.characteristic,
             material.name,
             self.bars.exposure,

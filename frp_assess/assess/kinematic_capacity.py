@@ -18,12 +18,9 @@ from numpy.typing import ArrayLike, NDArray
 
 from frp_assess import libm
 from frp_assess.dynamics import Rebars, Wall
-from frp_assess.motions import G
-
-#: A rupture that leaves less than this fraction of the largest capacity limits d_SLV
-#: ("riduzione della capacità ... superiore al 50 % del valore massimo", §C8.7.1.2.1.6) [-].
-RUPTURE_DROP = 0.50
-
+from frp_assess.rules.constants import G
+from frp_assess.rules.kinematic import RUPTURE_DROP, a_star
+from frp_assess.rules.masonry import CONFIDENCE_FACTORS
 
 # --- the kinematics of the rigid wall --------------------------------------------------------
 
@@ -154,7 +151,7 @@ def spectral_acceleration(multiplier: float, e_star: float, fc: float) -> float:
     """
     if not (e_star > 0.0 and fc > 0.0):
         raise ValueError(f"e* and FC must be > 0, got {e_star!r}, {fc!r}")
-    return multiplier * G / (e_star * fc)
+    return a_star(multiplier, e_star, fc)
 
 
 # --- the capacity curve of the wall with its bars ---------------------------------------------
@@ -239,7 +236,7 @@ def capacity_curve(
     wall: Wall,
     rebars: Rebars | None = None,
     *,
-    fc: float = 1.35,
+    fc: float = CONFIDENCE_FACTORS["LC1"],
     points: int = 401,
     slenderness: float | None = None,
     stiffness: float | None = None,
@@ -280,6 +277,6 @@ def capacity_curve(
         intact = theta < theta_max
         intact[np.searchsorted(theta, theta_max)] = True  # the first of the two rupture points
     mult = np.where(intact, static_multiplier(theta, alpha, k), static_multiplier(theta, alpha))
-    a = mult * G / (e_star * fc)
+    a = a_star(mult, e_star, fc)
     d = control_displacement(theta, wall)
     return CapacityCurve(wall, k, theta_max, fc, e_star, m_star, d, a, slenderness)

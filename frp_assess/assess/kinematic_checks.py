@@ -89,8 +89,8 @@ from frp_assess.results.checks import (
     LinearCheck,
     TimeHistoryResult,
 )
-from frp_assess.results.model import MEAN_OF_RECORDS_FROM
 from frp_assess.rules.masonry import confidence_factor
+from frp_assess.rules.record_sets import design_statistic, design_value
 
 __all__ = [
     "Building",
@@ -124,7 +124,7 @@ def fc_basis(settings: CodeCheckSettings) -> str:
     fc = confidence_factor(settings.knowledge_level)
     rule = (
         "Circolare 2019 §C8.7.1.2.1.3: a rigid block whose masonry has infinite compressive "
-        "strength uses the FC of LC1, 1.35"
+        f"strength uses the FC of LC1, {confidence_factor('LC1'):g}"
     )
     if settings.knowledge_level == "LC1":
         text = f"FC = {fc:g} (knowledge level LC1; {rule})."
@@ -176,8 +176,8 @@ def ida_check(
     a_g·S ``demand`` [g] of ``limit_state``."""
     mean = ida_capacity_demand(ida.mean_a_dyn, demand, fc)
     least = ida_capacity_demand(ida.least_a_dyn, demand, fc)
-    rule = "mean" if ida.records >= MEAN_OF_RECORDS_FROM else "least"
-    zeta = mean if rule == "mean" else least
+    rule = design_statistic(ida.records)
+    zeta = design_value(mean, least, ida.records)
     return IdaCheck(fc, demand, mean, least, rule, zeta, zeta >= 1.0, limit_state)
 
 

@@ -200,7 +200,7 @@ def masonry_type(key: str) -> MasonryType:
         ) from None
 
 
-def confidence_factor(knowledge_level: str) -> float:
+def knowledge_level_fc(knowledge_level: str) -> float:
     """FC [-] of a knowledge level (Circolare 2019 Tab. C8.5.IV); an unknown level is an
     input error on ``code_check.knowledge_level``, where the project sets it."""
     try:
@@ -228,7 +228,7 @@ def masonry_design_values(
     divide by FC (Tab. C8.5.IV) and by ``partial_factor`` γ_M.
     """
     row = masonry_type(key)
-    fc = confidence_factor(knowledge_level)
+    fc = knowledge_level_fc(knowledge_level)
     for name, value in (("f_m", f_m), ("elastic_modulus", elastic_modulus), ("tau_0", tau_0)):
         if value is not None and not value > 0:
             raise InputError(f"must be > 0 MPa, got {value}", key=f"wall.{name}")
@@ -302,7 +302,7 @@ class PivotCheck:
         verdict = "holds" if self.rigid_block_holds else "fails"
         return (
             f"pivot: N = {self.force:.0f} kN/m needs x = {self.depth * 1e3:.0f} mm of masonry "
-            f"at 0.85*f_d = {STRESS_BLOCK_FACTOR * self.f_d:.2f} MPa, x/B = "
+            f"at {STRESS_BLOCK_FACTOR:g}*f_d = {STRESS_BLOCK_FACTOR * self.f_d:.2f} MPa, x/B = "
             f"{self.depth_ratio:.3f} (limit {self.limit:.2f}): rigid-block premise {verdict}"
         )
 
@@ -362,7 +362,7 @@ def masonry_strength(
     knowledge-level rule (:func:`masonry_design_values`); else
     :data:`DEFAULT_COMPRESSIVE_STRENGTH`.  FC is always the knowledge level's.
     """
-    fc = confidence_factor(knowledge_level)
+    fc = knowledge_level_fc(knowledge_level)
     if compressive_strength is not None:
         if not compressive_strength > 0:
             raise InputError(

@@ -58,7 +58,8 @@ class CasePivot:
         c = self.check
         head = (
             f"{self.case}: N = {c.force:.0f} kN/m (W {c.weight:.0f} + T_u {c.bar_force:.0f}) on "
-            f"0.85*f_d = {STRESS_BLOCK_FACTOR * c.f_d:.2f} MPa needs x = {c.depth * 1e3:.0f} mm, "
+            f"{STRESS_BLOCK_FACTOR:g}*f_d = {STRESS_BLOCK_FACTOR * c.f_d:.2f} MPa needs "
+            f"x = {c.depth * 1e3:.0f} mm, "
             f"x/B = {c.depth_ratio:.3f}"
         )
         if self.model_pivot == "crushing":

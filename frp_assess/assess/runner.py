@@ -21,7 +21,7 @@ from frp_assess.dynamics import (
     run_batch,
 )
 from frp_assess.motions import G, Record
-from frp_assess.results.model import MEAN_OF_RECORDS_FROM
+from frp_assess.rules.record_sets import MEAN_OF_RECORDS_FROM, design_statistic, design_value
 
 #: progress(stage, done, total)
 Progress = Callable[[str, int, int], None]
@@ -43,7 +43,7 @@ class CaseSummary:
 
 def design_value_rule(n_records: int) -> str:
     """How the design a_dyn is taken from ``n_records`` records (results.json wording)."""
-    if n_records >= MEAN_OF_RECORDS_FROM:
+    if design_statistic(n_records) == "mean":
         return "mean of the records"
     return f"least favourable record (fewer than {MEAN_OF_RECORDS_FROM} records)"
 
@@ -59,7 +59,7 @@ def summarise(results: Sequence[IdaResult], settings_max: float, a_rm_g: float) 
     )
     mean = sum(bound) / len(bound)
     low = min(bound)
-    design = mean if len(bound) >= MEAN_OF_RECORDS_FROM else low
+    design = design_value(mean, low, len(bound))
     return CaseSummary(
         tuple(results),
         a_dyn,

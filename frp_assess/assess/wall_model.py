@@ -35,7 +35,7 @@ class WallInput:
 
     Attributes:
         thickness: B [m].  height: H [m].  unit_weight: w [kN/m³].
-        design_strength: f_d = f_m/FC of the masonry [MPa] (:func:`design_strength`);
+        design_strength: f_d = f_m/FC of the masonry [MPa] (:func:`case_design_strength`);
             ``inf``: none (the pivot stays at the edge).
     """
 
@@ -76,7 +76,7 @@ class BarsInput:
         )
 
 
-def design_strength(
+def case_design_strength(
     masonry: str | None, knowledge_level: str, compressive_strength: float | None = None
 ) -> float:
     """f_d [MPa] of a case: the project's f_m, else the masonry type's by the knowledge level,

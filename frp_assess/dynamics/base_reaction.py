@@ -30,7 +30,8 @@ from numpy.typing import NDArray
 
 from frp_assess.dynamics.rebars import Rebars
 from frp_assess.dynamics.wall import Wall
-from frp_assess.motions.record import G
+from frp_assess.rules.constants import G
+from frp_assess.rules.geometry import slenderness
 from frp_assess.rules.masonry import (
     base_carries_weight,
     compressed_zone_depth,
@@ -121,7 +122,7 @@ class BaseReaction:
         if self.weight_depth == 0.0:
             return self.wall.alpha
         w = self.wall
-        return math.atan2(w.thickness - self.weight_depth, w.height)
+        return slenderness(w.thickness - self.weight_depth, w.height)  # tan α_x = (B − x_W)/H
 
     @property
     def tan_alpha_x(self) -> float:

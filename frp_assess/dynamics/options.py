@@ -20,6 +20,7 @@ from typing import Any, Generic, Literal, TypeVar, get_args
 from frp_assess.dynamics.base_reaction import PIVOT_RULES, PivotRule
 from frp_assess.dynamics.rebars import DEFAULT_STRAIN_FACTOR
 from frp_assess.dynamics.restitution import Restitution
+from frp_assess.rules.masonry import STRESS_BLOCK_FACTOR
 
 RuptureRule = Literal["energy-transfer", "velocity-continuous"]
 CollapseRule = Literal["overturning", "end-of-record", "first-exceedance"]
@@ -173,9 +174,9 @@ PIVOT: Option[PivotRule] = Option(
     flag="",
     default="crushing",
     help="The masonry at the base: crushing (the weight and the bar force N act at x/2 from "
-    "the corner, x = N/(0.85*f_d), and the toe crushes when x reaches the bar; needs the "
-    "masonry's strength, without it the edge model is used) or edge (x = 0, the paper's "
-    "model)",
+    f"the corner, x = N/({STRESS_BLOCK_FACTOR:g}*f_d), and the toe crushes when x reaches "
+    "the bar; needs the masonry's strength, without it the edge model is used) or edge "
+    "(x = 0, the paper's model)",
     choices=PIVOT_RULES,
 )
 #: Default local error tolerance of the Dormand–Prince pair [-].  Measured on the whole

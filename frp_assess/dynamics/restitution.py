@@ -7,21 +7,13 @@ from typing import Literal
 
 from frp_assess.dynamics.wall import Mechanism
 
+# the kinetic-energy ratios r₂, r₁ of Eqs. 13–14, written once in rules/ (re-exported)
+from frp_assess.rules.impact import housner_two_sided as housner_two_sided
+from frp_assess.rules.impact import one_sided as one_sided
+
 Convention = Literal["energy", "velocity"]
 #: ``"energy"`` | ``"velocity"`` | an explicit velocity ratio in (0, 1].
 Restitution = Convention | float
-
-
-def housner_two_sided(alpha: float) -> float:
-    """r₂ = (1 − 1.5·sin²α)² (paper Eq. 13; Housner 1963): kinetic-energy ratio of one
-    base impact of a rectangular block."""
-    return (1.0 - 1.5 * math.sin(alpha) ** 2) ** 2
-
-
-def one_sided(alpha: float) -> float:
-    """r₁ = [(1 − 1.5·sin²α)²·(1 − 1.5·cos²α)]² (paper Eq. 14): kinetic-energy ratio of the
-    base–wall–base impact sequence of a wall rebounding off its restraint."""
-    return ((1.0 - 1.5 * math.sin(alpha) ** 2) ** 2 * (1.0 - 1.5 * math.cos(alpha) ** 2)) ** 2
 
 
 def velocity_ratio(restitution: Restitution, mechanism: Mechanism, alpha: float) -> float:

@@ -30,7 +30,7 @@ from frp_assess.dynamics.rebars import Rebars
 from frp_assess.dynamics.restitution import Restitution, velocity_ratio
 from frp_assess.dynamics.wall import Mechanism, Wall
 from frp_assess.errors import NumericalError
-from frp_assess.motions.record import G
+from frp_assess.rules.constants import G
 
 Fate = Literal["fell", "at rest", "exceeded", "standing", "crushed"]
 #: How a wall that collapsed failed (docs/model.md §1.1): it fell (or met the α_x limit of the

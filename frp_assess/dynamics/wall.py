@@ -9,7 +9,7 @@ import math
 from dataclasses import dataclass
 from typing import Literal
 
-from frp_assess.motions.record import G
+from frp_assess.rules.constants import G
 from frp_assess.rules.geometry import (
     half_diagonal,
     size_problem,

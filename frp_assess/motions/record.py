@@ -7,8 +7,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-#: Standard gravity [m/s²] (used for every g <-> m/s² conversion in the package).
-G = 9.80665
+from frp_assess.rules.constants import G as G  # re-export: the records' g [m/s²]
 
 
 @dataclass(frozen=True, eq=False)

@@ -18,29 +18,16 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from frp_assess.errors import InputError
+from frp_assess.rules import spectrum as rule
+
+# the code's tables, written once in rules/ (re-exported)
+from frp_assess.rules.spectrum import EC8_PLATEAU as EC8_PLATEAU
+from frp_assess.rules.spectrum import EC8_TABLE as EC8_TABLE
+from frp_assess.rules.spectrum import NTC_CC_TABLE as NTC_CC_TABLE
+from frp_assess.rules.spectrum import NTC_SS_TABLE as NTC_SS_TABLE
+from frp_assess.rules.spectrum import NTC_ST as NTC_ST
 
 # --- EN 1998-1:2004 §3.2.2.2 ----------------------------------------------------------------
-
-#: EN 1998-1 Table 3.2 (type 1) and Table 3.3 (type 2): ground -> (S [-], T_B, T_C, T_D [s])
-EC8_TABLE: dict[int, dict[str, tuple[float, float, float, float]]] = {
-    1: {
-        "A": (1.00, 0.15, 0.40, 2.0),
-        "B": (1.20, 0.15, 0.50, 2.0),
-        "C": (1.15, 0.20, 0.60, 2.0),
-        "D": (1.35, 0.20, 0.80, 2.0),
-        "E": (1.40, 0.15, 0.50, 2.0),
-    },
-    2: {
-        "A": (1.00, 0.05, 0.25, 1.2),
-        "B": (1.35, 0.05, 0.25, 1.2),
-        "C": (1.50, 0.10, 0.25, 1.2),
-        "D": (1.80, 0.10, 0.30, 1.2),
-        "E": (1.60, 0.05, 0.25, 1.2),
-    },
-}
-
-#: EN 1998-1 Eqs. (3.2)-(3.5): the plateau is 2.5·η·a_g·S
-EC8_PLATEAU = 2.5
 
 
 def damping_correction(damping: float) -> float:
@@ -53,7 +40,7 @@ def damping_correction(damping: float) -> float:
     """
     if not (math.isfinite(damping) and 0.0 <= damping < 1.0):
         raise InputError(f"damping ratio must be in [0, 1), got {damping!r}", key="damping")
-    return max(math.sqrt(10.0 / (5.0 + 100.0 * damping)), 0.55)
+    return rule.eta(damping)
 
 
 def ec8_shape(
@@ -100,28 +87,6 @@ def ec8_parameters(ground: str, spectrum_type: int = 1) -> tuple[float, float, f
 
 # --- NTC 2018 §3.2.3.2.1 ----------------------------------------------------------------------
 
-#: NTC 2018 Tab. 3.2.IV, S_S = a − b·F0·a_g/g bounded to [lo, hi]: soil -> (a, b, lo, hi)
-NTC_SS_TABLE: dict[str, tuple[float, float, float, float]] = {
-    "A": (1.00, 0.00, 1.00, 1.00),
-    "B": (1.40, 0.40, 1.00, 1.20),
-    "C": (1.70, 0.60, 1.00, 1.50),
-    "D": (2.40, 1.50, 0.90, 1.80),
-    "E": (2.00, 1.10, 1.00, 1.60),
-}
-
-#: NTC 2018 Tab. 3.2.IV, C_C = c·(T_C*)^e: soil -> (c, e)
-NTC_CC_TABLE: dict[str, tuple[float, float]] = {
-    "A": (1.00, 0.00),
-    "B": (1.10, -0.20),
-    "C": (1.05, -0.33),
-    "D": (1.25, -0.50),
-    "E": (1.15, -0.40),
-}
-
-#: NTC 2018 Tab. 3.2.V, topographic amplification S_T (the values at the top of the relief;
-#: the code lets S_T decrease linearly to 1 at its base -- not modelled here)
-NTC_ST: dict[str, float] = {"T1": 1.0, "T2": 1.2, "T3": 1.2, "T4": 1.4}
-
 
 def _ntc_soil(soil: str) -> str:
     key = str(soil).strip().upper()
@@ -138,14 +103,12 @@ def ntc_ss(soil: str, ag: float, F0: float) -> float:  # noqa: N803 - the code's
         ag: site peak acceleration on rock a_g/g [g].
         F0: maximum amplification of the spectrum [-].
     """
-    a, b, lo, hi = NTC_SS_TABLE[_ntc_soil(soil)]
-    return min(max(a - b * F0 * ag, lo), hi)
+    return rule.s_s(_ntc_soil(soil), ag, F0)
 
 
 def ntc_cc(soil: str, tc_star: float) -> float:
     """Coefficient C_C [-] of T_C = C_C·T_C*, NTC 2018 Tab. 3.2.IV; T_C* in s."""
-    c, e = NTC_CC_TABLE[_ntc_soil(soil)]
-    return c * tc_star**e
+    return rule.c_c(_ntc_soil(soil), tc_star)
 
 
 def ntc_st(topography: str) -> float:
@@ -156,7 +119,7 @@ def ntc_st(topography: str) -> float:
             f"NTC topographic category must be one of T1-T4, got {topography!r}",
             key="topography",
         )
-    return NTC_ST[key]
+    return rule.s_t(key)
 
 
 def ntc_corner_periods(soil: str, tc_star: float, ag: float) -> tuple[float, float, float]:
@@ -164,13 +127,13 @@ def ntc_corner_periods(soil: str, tc_star: float, ag: float) -> tuple[float, flo
 
     T_C = C_C·T_C*, T_B = T_C/3, T_D = 4·a_g/g + 1.6 (a_g in g).
     """
-    t_c = ntc_cc(soil, tc_star) * tc_star
-    return t_c / 3.0, t_c, ntc_td(ag)
+    t_c = rule.t_c(ntc_cc(soil, tc_star), tc_star)
+    return rule.t_b(t_c), t_c, ntc_td(ag)
 
 
 def ntc_td(ag: float) -> float:
     """T_D = 4·a_g/g + 1.6 [s], NTC 2018 Eq. (3.2.7); a_g in g."""
-    return 4.0 * ag + 1.6
+    return rule.t_d(ag)
 
 
 # --- the spectrum object ------------------------------------------------------------------

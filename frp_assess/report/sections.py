@@ -26,6 +26,7 @@ from frp_assess.report.flow import (
     para,
 )
 from frp_assess.results.model import AssessmentResult, CaseResult
+from frp_assess.rules.record_sets import MEAN_OF_RECORDS_FROM
 
 Results = AssessmentResult
 MECHANISM_TEXT = {
@@ -40,7 +41,10 @@ def design_statistic(results: Results) -> str:
     """What the design a_dyn is: the mean of the records or the least favourable one."""
     if results.design_is_mean:
         return "the mean over the records"
-    return "the least favourable record, as there are fewer than 7 (EN 1998-1 §4.3.3.4.3)"
+    return (
+        f"the least favourable record, as there are fewer than {MEAN_OF_RECORDS_FROM} "
+        "(EN 1998-1 §4.3.3.4.3)"
+    )
 
 
 def _verdict(ok: bool, text: str) -> Block:

@@ -118,6 +118,7 @@ from frp_assess.report.tables_inputs import (  # re-exported, as above
     wall_rows as wall_rows,
 )
 from frp_assess.results.model import AssessmentResult, CaseResult, HistoryRun
+from frp_assess.rules.record_sets import MEAN_OF_RECORDS_FROM
 from frp_assess.text_safety import Markup
 
 Results = AssessmentResult
@@ -320,7 +321,7 @@ def case_summary_rows(results: Results, case: CaseResult) -> list[list[str]]:
     ]
     if case.design_a_dyn is not None and not results.design_is_mean:
         design = f"{fmt_acc(case.design_a_dyn)} g"
-        rows.insert(2, ["design a_dyn (fewer than 7 records)", design])
+        rows.insert(2, [f"design a_dyn (fewer than {MEAN_OF_RECORDS_FROM} records)", design])
     return rows
 
 

@@ -34,12 +34,10 @@ from frp_assess.results.run_inputs import LimitStateSite as LimitStateSite  # re
 from frp_assess.results.run_inputs import ReportSettings as ReportSettings  # re-export
 from frp_assess.results.run_inputs import SiteResult as SiteResult  # re-export
 from frp_assess.results.verdict import DecidingCheck, Robustness
+from frp_assess.rules.record_sets import design_statistic
 
 #: version of the contract written as ``schema_version``; another is refused on reading
 SCHEMA_VERSION = 1
-#: with this many records or more the design a_dyn is their mean, with fewer the least
-#: favourable one (EN 1998-1 §4.3.3.4.3, NTC 2018 §7.3.5)
-MEAN_OF_RECORDS_FROM = 7
 #: the name of the unreinforced wall's case
 UNREINFORCED = "Unreinforced"
 
@@ -386,9 +384,9 @@ class AssessmentResult:
 
     @property
     def design_is_mean(self) -> bool:
-        """design_a_dyn is the mean over the records (≥ MEAN_OF_RECORDS_FROM of them), else
-        the least favourable record."""
-        return len(self.records) >= MEAN_OF_RECORDS_FROM
+        """design_a_dyn is the mean over the records, else the least favourable record
+        (:func:`frp_assess.rules.record_sets.design_statistic`, NTC 2018 §7.3.5)."""
+        return design_statistic(len(self.records)) == "mean"
 
     def case(self, name: str | None) -> CaseResult | None:
         """The case called ``name``, or None."""

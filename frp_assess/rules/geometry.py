@@ -10,19 +10,22 @@ import math
 
 
 def size_problem(value: float, what: str = "size", unit: str = "m") -> str | None:
-    """Why a size is not a finite number > 0 (one line), ``None`` when it is."""
+    """Why a size ``value`` [``unit``, m by default] is not a finite number > 0 (one line),
+    ``None`` when it is (a block has sizes, docs/model.md §1)."""
     if isinstance(value, bool) or not (math.isfinite(value) and value > 0.0):
         return f"expected {what} > 0 {unit}, found {value!r}"
     return None
 
 
 def is_rocking_block(thickness: float, height: float) -> bool:
-    """Whether B [m] and H [m] make a rocking wall: both finite and > 0, and B < H."""
+    """Whether B [m] and H [m] make a rocking wall: both finite and > 0, and B < H
+    (docs/model.md §1: slenderness α < 45°)."""
     return size_problem(thickness) is None and size_problem(height) is None and thickness < height
 
 
 def slenderness_problem(thickness: float, height: float) -> str | None:
-    """Why B [m] ≥ H [m] is no rocking wall (one line), ``None`` when B < H."""
+    """Why B [m] ≥ H [m] is no rocking wall (one line), ``None`` when B < H (docs/model.md
+    §1)."""
     if thickness < height:
         return None
     return (
@@ -32,15 +35,15 @@ def slenderness_problem(thickness: float, height: float) -> str | None:
 
 
 def slenderness(thickness: float, height: float) -> float:
-    """Slenderness α [rad], tan α = B/H."""
+    """Slenderness α [rad], tan α = B/H, of a wall B [m] thick and H [m] tall (paper Eq. 2)."""
     return math.atan2(thickness, height)
 
 
 def thickness_of(height: float, alpha: float) -> float:
-    """B = H·tan α [m] of the wall of height H [m] and slenderness α [rad]."""
+    """B = H·tan α [m] of the wall of height H [m] and slenderness α [rad] (paper Eq. 2)."""
     return height * math.tan(alpha)
 
 
 def half_diagonal(thickness: float, height: float) -> float:
-    """R = ½·√(B² + H²) [m], centre of mass to a base corner."""
+    """R = ½·√(B² + H²) [m], centre of mass to a base corner, B and H [m] (paper Eq. 2)."""
     return 0.5 * math.hypot(thickness, height)

@@ -51,12 +51,14 @@ def design_strength(mean_strength: float, fc: float, partial_factor: float = 1.0
 
 
 def wall_weight(unit_weight: float, thickness: float, height: float) -> float:
-    """Weight of the wall per metre of length W = w·B·H [N/m] (w [N/m³], B, H [m])."""
+    """Weight of the wall per metre of length W = w·B·H [N/m] (w [N/m³], B, H [m];
+    docs/model.md §1.1)."""
     return unit_weight * thickness * height
 
 
 def base_force(weight: float, bar_force: float = 0.0) -> float:
-    """Vertical force on the base N = W + T [N/m]: weight W and tension T of the acting bar."""
+    """Vertical force on the base N = W + T [N/m]: weight W [N/m] and tension T [N/m] of the
+    acting bar (docs/model.md §1.1)."""
     return weight + bar_force
 
 
@@ -70,7 +72,8 @@ def compressed_zone_depth(normal_force: float, design_strength: float) -> float:
 
 def force_for_depth(depth: float, design_strength: float) -> float:
     """The force N [N/m] a stress block of depth x [m] carries on 1 m of wall,
-    N = 0.85·f_d·x·1 m (f_d [Pa]): the inverse of :func:`compressed_zone_depth`."""
+    N = 0.85·f_d·x·1 m (f_d [Pa]; NTC 2018 §7.8.2.2.1): the inverse of
+    :func:`compressed_zone_depth`."""
     return STRESS_BLOCK_FACTOR * design_strength * depth
 
 
@@ -82,12 +85,14 @@ def crushing_depth(thickness: float, bar_distance: float | None = None) -> float
 
 
 def toe_crushes(depth: float, thickness: float, bar_distance: float | None = None) -> bool:
-    """Whether a compressed zone of depth x [m] crushes the toe: x ≥ :func:`crushing_depth`."""
+    """Whether a compressed zone of depth x [m] crushes the toe of a wall B [m] thick:
+    x ≥ :func:`crushing_depth` (docs/model.md §1.1; ``bar_distance`` [m])."""
     return depth >= crushing_depth(thickness, bar_distance)
 
 
 def base_carries_weight(weight: float, thickness: float, design_strength: float) -> bool:
-    """Whether the base carries the wall's own weight: x_W = W/(0.85·f_d) < B.
+    """Whether the base carries the wall's own weight: x_W = W/(0.85·f_d) < B (docs/model.md
+    §1.1).
 
     W [N/m], B [m], f_d [Pa] (infinite: always).  False is the one refusal of the module's
     outcome policy.
@@ -96,7 +101,8 @@ def base_carries_weight(weight: float, thickness: float, design_strength: float)
 
 
 def weight_not_carried(weight: float, thickness: float, design_strength: float) -> str:
-    """The one-line reason a base that cannot carry the wall's weight is refused."""
+    """The one-line reason a base that cannot carry the wall's weight is refused
+    (docs/model.md §1.1): W [N/m], B [m], f_d [Pa]."""
     depth = compressed_zone_depth(weight, design_strength)
     return (
         f"the base cannot carry the wall's weight: W = {weight / 1e3:.1f} kN/m needs "

@@ -23,12 +23,13 @@ from frp_assess.assess.wall_model import (
     BarsInput,
     WallInput,
     base_problem,
-    design_strength,
+    case_design_strength,
     rocking_model,
 )
 from frp_assess.config.library import FRP_MATERIALS, did_you_mean
 from frp_assess.dynamics import RockingModel
 from frp_assess.errors import InputError
+from frp_assess.rules.geometry import slenderness, thickness_of
 from frp_assess.study.schema import StudyFile, spectrum_label, spectrum_text
 
 
@@ -141,7 +142,7 @@ class StudyPlan:
         self.options = study.model.model_options(study.model.integration_tolerance)
         self.ida_settings = study.ida.settings()
         #: f_d = f_m/FC [MPa] of every wall of the study (the crushing pivot's masonry)
-        self.design_strength = design_strength(
+        self.design_strength = case_design_strength(
             study.masonry, study.knowledge_level, study.compressive_strength
         )
         for h in self.heights:  # the one refusal of the masonry at the base, before any case
@@ -197,8 +198,8 @@ class StudyPlan:
         """B [m] and α [°] of the wall of height H [m] and the geometry axis' value (α [°]
         when the study gives ``alpha_deg``, else B [m])."""
         if self.by_alpha:
-            return height * math.tan(math.radians(geometry)), geometry
-        return geometry, math.degrees(math.atan2(geometry, height))
+            return thickness_of(height, math.radians(geometry)), geometry
+        return geometry, math.degrees(slenderness(geometry, height))
 
     def building(self, case: Case) -> BuildingSettings | None:
         """Where the wall of ``case`` stands (None: at ground level, docs/model.md §9)."""

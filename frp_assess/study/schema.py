@@ -47,6 +47,7 @@ from frp_assess.dynamics.options import INTEGRATION_TOLERANCE
 from frp_assess.dynamics.rebars import POSITIONS, Position
 from frp_assess.dynamics.wall import MECHANISMS, Mechanism
 from frp_assess.errors import InputError
+from frp_assess.rules.masonry import CONFIDENCE_FACTORS
 from frp_assess.study.building import StudyBuilding
 
 #: most cases of one study (the paper's Table 1 has 2,052)
@@ -189,7 +190,9 @@ class StudyFile(_Strict):
         "(neither: the lowest f_m of Tab. C8.5.I, as a project)",
     )
     knowledge_level: Literal["LC1", "LC2", "LC3"] = Field(
-        default="LC1", description="knowledge level: f_d = f_m/FC, FC = 1.35, 1.20, 1.00"
+        default="LC1",
+        description="knowledge level: f_d = f_m/FC, FC = "
+        + ", ".join(f"{fc:.2f}" for fc in CONFIDENCE_FACTORS.values()),
     )
     chunk_size: int = Field(
         default=64, ge=1, le=100_000, description="cases per chunk written to disk [-]"

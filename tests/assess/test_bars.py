@@ -20,15 +20,10 @@ from frp_assess.assess.bar_catalogue import (
     bar_sizes,
     best_layout,
 )
-from frp_assess.assess.bar_strain import design_rupture_strain, environmental_factor
+from frp_assess.assess.bar_strain import bar_design_strain, environmental_factor
 from frp_assess.errors import InputError
 from frp_assess.rules.bars import characteristic_strain
-
-TABLE_3_2 = {
-    "glass": (0.75, 0.65, 0.50),
-    "carbon": (0.95, 0.85, 0.85),
-    "aramid": (0.85, 0.75, 0.70),
-}
+from tests.rules.test_bars import TABLE_3_2  # η_a of CNR-DT 200 Table 3.2, typed once
 
 
 @pytest.mark.parametrize(
@@ -48,13 +43,13 @@ def test_unknown_exposure_or_material_is_an_input_error():
 
 def test_design_rupture_strain_by_hand():
     # GFRP, external: 0.5 · 0.65 · 0.015 / 1.10 = 0.0044318
-    d = design_rupture_strain(0.015, "GFRP", "external")
+    d = bar_design_strain(0.015, "GFRP", "external")
     assert d.design == pytest.approx(0.5 * 0.65 * 0.015 / 1.10)
     assert d.design == pytest.approx(0.0044318, abs=1e-7)
     # CFRP internal without partial factor: 0.5 · 0.95 · 0.013 = 0.006175
-    assert design_rupture_strain(
-        0.013, "CFRP", "internal", partial_factor=1.0
-    ).design == pytest.approx(0.006175)
+    assert bar_design_strain(0.013, "CFRP", "internal", partial_factor=1.0).design == pytest.approx(
+        0.006175
+    )
     assert characteristic_strain(0.015, 0.05) == pytest.approx(0.015 * (1 - 1.645 * 0.05))
 
 

@@ -141,14 +141,17 @@ def test_nan_and_deep_nesting_are_refused(text: str, words: str) -> None:
 
 
 def test_the_results_package_needs_only_the_standard_library() -> None:
-    """The contract can be read without numpy, numba or any other frp_assess package."""
+    """The contract can be read without numpy, numba or any other frp_assess package than
+    the code's rules (``frp_assess.rules``, which need only the standard library too)."""
     import ast
     import sys
     from pathlib import Path
 
     import frp_assess.results
+    import frp_assess.rules
 
-    for path in Path(frp_assess.results.__file__).parent.glob("*.py"):
+    packages = (frp_assess.results, frp_assess.rules)
+    for path in (p for m in packages for p in Path(m.__file__).parent.glob("*.py")):
         for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
             names = []
             if isinstance(node, ast.Import):
@@ -158,6 +161,6 @@ def test_the_results_package_needs_only_the_standard_library() -> None:
             for name in names:
                 top = name.split(".")[0]
                 ok = top in sys.stdlib_module_names or name.startswith(
-                    ("frp_assess.errors", "frp_assess.results")
+                    ("frp_assess.errors", "frp_assess.results", "frp_assess.rules")
                 )
                 assert ok, (path.name, name)

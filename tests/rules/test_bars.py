@@ -17,6 +17,7 @@ from frp_assess.rules.bars import (
     characteristic_strain,
     design_rupture_strain,
     elongation_strain,
+    eta_a,
     faces,
     fd_strain,
     lever_arm,
@@ -60,3 +61,28 @@ def test_characteristic_strain_is_the_5_percent_fractile() -> None:
     assert characteristic_strain(0.015, 0.10) == pytest.approx(0.0125325)
     with pytest.raises(ValueError):
         characteristic_strain(0.015, 0.7)
+
+
+#: CNR-DT 200 R1/2013 Table 3.2, typed from the document: η_a (internal, external, aggressive)
+TABLE_3_2 = {
+    "glass": (0.75, 0.65, 0.50),
+    "carbon": (0.95, 0.85, 0.85),
+    "aramid": (0.85, 0.75, 0.70),
+}
+
+
+@pytest.mark.parametrize(
+    "fibre,exposure,eta",
+    [
+        (fibre, exposure, etas[i])
+        for fibre, etas in TABLE_3_2.items()
+        for i, exposure in enumerate(("internal", "external", "aggressive"))
+    ],
+)
+def test_eta_a_is_table_3_2(fibre: str, exposure: str, eta: float) -> None:
+    assert eta_a(fibre, exposure) == eta
+
+
+def test_eta_a_of_a_fibre_not_in_the_table_is_a_key_error() -> None:
+    with pytest.raises(KeyError):
+        eta_a("basalt", "internal")  # the product's choice for basalt is not the table's

@@ -38,7 +38,10 @@ from frp_assess.dynamics.options import (
     RuptureRule,
 )
 from frp_assess.dynamics.rocking import ModelOptions
-from frp_assess.rules.masonry import confidence_factor
+from frp_assess.rules.masonry import CONFIDENCE_FACTORS, confidence_factor
+
+#: "1.35 (LC1), 1.20 (LC2), 1.00 (LC3)": the confidence factors of Tab. C8.5.IV, for the help
+_FC_BY_LEVEL = ", ".join(f"{fc:.2f} ({level})" for level, fc in CONFIDENCE_FACTORS.items())
 
 
 # ------------------------------------------------------------------------------- analysis
@@ -137,13 +140,14 @@ class CodeCheckSpec(_Model):
     """Linear kinematic check of Circolare 2019 §C8.7.1 beside the IDA."""
 
     knowledge_level: Literal["LC1", "LC2", "LC3"] = Field(
-        "LC1", description="Knowledge level: FC = 1.35 (LC1), 1.20 (LC2), 1.00 (LC3)."
+        "LC1", description=f"Knowledge level: FC = {_FC_BY_LEVEL}."
     )
     behaviour_factor: Number = Field(2.0, ge=1, le=4, description="Behaviour factor q (2.0).")
     fc_in_ida: bool = Field(
         True,
         description="Divide the IDA capacity by FC too: capacity/demand = a_dyn/(FC*a_g*S) "
-        "(true; Circolare 2019 C8.7.1.2.1.3: a rigid block uses LC1's FC = 1.35).",
+        "(true; Circolare 2019 C8.7.1.2.1.3: a rigid block uses LC1's "
+        f"FC = {confidence_factor('LC1'):.2f}).",
     )
 
     @property

@@ -32,7 +32,7 @@ from frp_assess.config.schema.spec_base import (
     located_error,
 )
 from frp_assess.dynamics.rebars import POSITIONS, Position
-from frp_assess.rules.bars import MAX_RATIO
+from frp_assess.rules.bars import DEFAULT_STRAIN_COV, FRACTILE_5_PERCENT, MAX_RATIO
 
 
 # ------------------------------------------------------------------------------ materials
@@ -67,7 +67,8 @@ class FrpMaterialSpec(_Model):
         ge=STRAIN_RANGE[0],
         le=STRAIN_RANGE[1],
         description="Characteristic rupture strain eps_fk [-] (5 % fractile, producer's data "
-        "sheet); default eps_u*(1 - 1.645*0.10) (docs/model.md §2.1).",
+        f"sheet); default eps_u*(1 - {FRACTILE_5_PERCENT:g}*{DEFAULT_STRAIN_COV:.2f}) "
+        "(docs/model.md §2.1).",
     )
     fibre: Fibre | None = Field(
         None,
