@@ -23,13 +23,14 @@ DEFAULT_YIELD_STRENGTH = 235e6
 DEFAULT_ELASTIC_MODULUS = 210e9
 
 
-def bar_area(diameter: float) -> float:
-    """Area of a round bar A_s = π·d²/4 [m²] (d [m])."""
+def round_bar_area(diameter: float) -> float:
+    """Area of a tie's round bar A_s = π·d²/4 [m²] (d [m]; docs/model.md §12)."""
     return math.pi * diameter * diameter / 4.0
 
 
 def tie_stiffness(area: float, elastic_modulus: float, length: float, spacing: float) -> float:
-    """Axial stiffness of the ties per metre of wall k_t = E_s·A_s/(L_t·i_t) [N/m per m].
+    """Axial stiffness of the ties per metre of wall k_t = E_s·A_s/(L_t·i_t) [N/m per m]
+    (docs/model.md §12).
 
     Args:
         area: A_s [m²] of one tie.
@@ -41,12 +42,14 @@ def tie_stiffness(area: float, elastic_modulus: float, length: float, spacing: f
 
 
 def tie_yield_force(area: float, yield_strength: float, spacing: float) -> float:
-    """Force at which the ties yield, per metre of wall F_y = A_s·f_y/i_t [N/m]."""
+    """Force at which the ties yield, per metre of wall F_y = A_s·f_y/i_t [N/m]
+    (docs/model.md §12)."""
     return area * yield_strength / spacing
 
 
 def tie_anchorage_force(anchorage: float | None, spacing: float) -> float:
-    """Force at which the anchorage of the ties fails, per metre of wall F_a/i_t [N/m].
+    """Force at which the anchorage of the ties fails, per metre of wall F_a/i_t [N/m]
+    (docs/model.md §12).
 
     ``anchorage`` F_a [N] is the capacity of one tie's anchorage (the plate punching the
     masonry); ``None``: not governing, ∞.
@@ -64,13 +67,14 @@ def tie_capacity(yield_force: float, anchorage_force: float) -> float:
 
 def tie_is_ductile(yield_force: float, anchorage_force: float) -> bool:
     """Whether the steel yields before the anchorage fails (F_y < F_a/i_t): a ductile tie,
-    whose force is surely present up to collapse (it counts in d0, docs/model.md §12)."""
+    whose force is surely present up to collapse (it counts in d0, docs/model.md §12) [-]."""
     return yield_force < anchorage_force
 
 
 def tie_elongation(height: float, theta: float) -> float:
     """Elongation of a tie at height h_t [m] of a wall turned by θ [rad] outward about its
-    outer base corner, δ = h_t·sin θ [m] for θ > 0; 0 for θ ≤ 0 (the tie goes slack)."""
+    outer base corner, δ = h_t·sin θ [m] for θ > 0; 0 for θ ≤ 0 (the tie goes slack;
+    docs/model.md §12)."""
     return height * math.sin(theta) if theta > 0.0 else 0.0
 
 
@@ -81,5 +85,6 @@ def tie_force(
     plastic_elongation: float,
 ) -> float:
     """Force of an elastic–perfectly plastic, tension-only tie [N/m]:
-    F_t = clip(k_t·(δ − δ_p), 0, F_y), δ_p the plastic elongation [m] left by earlier yields."""
+    F_t = clip(k_t·(δ − δ_p), 0, F_y), δ_p the plastic elongation [m] left by earlier yields
+    (docs/model.md §12)."""
     return min(max(stiffness * (elongation - plastic_elongation), 0.0), yield_force)

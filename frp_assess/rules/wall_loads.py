@@ -42,7 +42,7 @@ class Thrust(NamedTuple):
 
 def lever(load: TopLoad, thickness: float, side: int) -> float:
     """u [m]: the distance of a top load's line of action from the pivot of ``side``
-    (+1: the outer corner, u = d; −1: the inner corner, u = B − d)."""
+    (+1: the outer corner, u = d; −1: the inner corner, u = B − d; docs/model.md §12)."""
     return load.distance if side > 0 else thickness - load.distance
 
 
@@ -119,7 +119,7 @@ def overturning_multiplier(
     ) / overturning_moment_per_g(weight, height, top)
 
 
-def static_multiplier(
+def multiplier_at_rotation(
     theta: float,
     weight: float,
     thickness: float,

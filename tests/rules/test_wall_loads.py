@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 from frp_assess.rules.tie_rods import (
-    bar_area,
+    round_bar_area,
     tie_anchorage_force,
     tie_capacity,
     tie_elongation,
@@ -30,9 +30,9 @@ from frp_assess.rules.wall_loads import (
     Thrust,
     TopLoad,
     impact_velocity_ratio,
+    multiplier_at_rotation,
     overturning_multiplier,
     participating_mass_ratio,
-    static_multiplier,
     uplift_multiplier,
 )
 
@@ -71,7 +71,7 @@ def test_a_floor_and_a_tie_hand_calculation() -> None:
     235e6/3 = 24 609.14 N/m, L_i = 24.60914 × 5.8 = 142.7330 kN·m/m, α₀ = (11.64 + 142.7330)/
     189.6 = 0.8142037.  With an anchorage of 30 kN per tie, 10 kN/m < F_y governs: α₀ =
     (11.64 + 10 × 5.8)/189.6 = 0.3672996."""
-    area = bar_area(0.020)
+    area = round_bar_area(0.020)
     assert area == pytest.approx(314.159265e-6, rel=1e-8)
     f_y = tie_yield_force(area, 235e6, 3.0)
     assert f_y == pytest.approx(24609.142, rel=1e-7)
@@ -96,7 +96,9 @@ def test_no_load_is_the_free_standing_wall() -> None:
     assert participating_mass_ratio(W, H, []) == pytest.approx(1.0)
     alpha = math.atan(B / H)
     for theta in (0.0, 0.01, 0.05):
-        assert static_multiplier(theta, W, B, H, [], []) == pytest.approx(math.tan(alpha - theta))
+        assert multiplier_at_rotation(theta, W, B, H, [], []) == pytest.approx(
+            math.tan(alpha - theta)
+        )
 
 
 def test_a_restrained_load_holds_but_brings_no_inertia() -> None:
@@ -110,7 +112,7 @@ def test_capacity_curve_with_a_floor_vanishes_where_the_moments_balance() -> Non
     """At θ where W·(B/2·cosθ − H/2·sinθ) + P·(d·cosθ − H·sinθ) = 0, i.e. tan θ =
     (W·B/2 + P·d)/(W·H/2 + P·H) = α₀ (hand: the same ratio), α(θ) = 0."""
     theta = math.atan(0.0613924051)
-    assert static_multiplier(theta, W, B, H, [FLOOR], []) == pytest.approx(0.0, abs=1e-9)
+    assert multiplier_at_rotation(theta, W, B, H, [FLOOR], []) == pytest.approx(0.0, abs=1e-9)
 
 
 def test_impact_ratio_reduces_to_housner() -> None:
@@ -147,9 +149,9 @@ def test_impact_ratio_with_a_top_mass_against_a_point_by_point_sum(new_side: int
 def test_tie_is_elastic_perfectly_plastic_in_tension_only() -> None:
     """F_t = clip(k_t·(δ − δ_p), 0, F_y): slack for θ ≤ 0, capped at F_y, and the plastic
     elongation shifts the unloading branch (EN 1993-1-1 idealisation of the steel)."""
-    k = tie_stiffness(bar_area(0.020), 210e9, 8.0, 3.0)  # 210e9·314.16e-6/24 = 2.7489e6 N/m/m
+    k = tie_stiffness(round_bar_area(0.020), 210e9, 8.0, 3.0)  # 210e9·314.16e-6/24 = 2.7489e6 N/m/m
     assert k == pytest.approx(2.74889e6, rel=1e-5)
-    f_y = tie_yield_force(bar_area(0.020), 235e6, 3.0)
+    f_y = tie_yield_force(round_bar_area(0.020), 235e6, 3.0)
     assert tie_elongation(5.8, -0.01) == 0.0
     assert tie_force(k, f_y, tie_elongation(5.8, -0.01), 0.0) == 0.0
     small = tie_elongation(5.8, 1e-4)
