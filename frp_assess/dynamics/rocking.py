@@ -14,6 +14,7 @@ from frp_assess.dynamics.base_reaction import PIVOT_RULES, BaseReaction, PivotRu
 from frp_assess.dynamics.kernel import history_length, simulate
 from frp_assess.dynamics.kernel import params as kp
 from frp_assess.dynamics.kernel.fate import tipping_angle
+from frp_assess.dynamics.loads import NO_LOADS, Loads
 from frp_assess.dynamics.options import (
     COLLAPSE,
     COLLAPSE_RULES,
@@ -205,6 +206,8 @@ class RockingModel:
     mechanism: Mechanism
     rebars: Rebars | None = None
     options: ModelOptions = ModelOptions()
+    #: what bears on and pushes the wall (docs/model.md §12); none: the free-standing wall
+    loads: Loads = NO_LOADS
 
     def __post_init__(self) -> None:
         if self.mechanism not in ("one-sided", "two-sided"):
