@@ -112,8 +112,22 @@ def test_refused_with_one_located_line(
     assert fragment in lines[0]
 
 
-def test_a_facade_with_a_floor_a_thrust_and_a_tie_is_valid(
+def test_a_facade_with_a_floor_and_a_thrust_is_valid(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    code, err = _validate(tmp_path, BASE, capsys)
+    no_tie = BASE.replace(
+        "    ties:\n      - {name: catena, height: 5.8, diameter: 20, spacing: 3.0, length: 8.0}\n",
+        "",
+    )
+    assert no_tie != BASE
+    code, err = _validate(tmp_path, no_tie, capsys)
     assert code == 0, err
+
+
+def test_ties_are_refused_until_the_time_histories_model_them(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A tie accepted and left out of the IDA would be a silent wrong answer: one line."""
+    code, err = _validate(tmp_path, BASE, capsys)
+    assert code == 2
+    assert "p.yaml:13: wall.loads.ties: expected no tie-rods yet" in err

@@ -109,8 +109,18 @@ class WallSpec(_Model):
         if (problem := loads.problem(self.thickness, self.height)) is not None:
             message, where = problem
             raise located_error(message, "loads", *where)
-        if not loads.thrust:
-            return
+        if loads.thrust:
+            self._check_thrusts(loads)
+        if loads.ties:
+            raise located_error(
+                "expected no tie-rods yet: the time histories do not model ties (docs/model.md "
+                "§12); assess the wall without them (conservative: a tie only holds it)",
+                "loads",
+                "ties",
+            )
+
+    def _check_thrusts(self, loads: WallLoadsSpec) -> None:
+        """Thrusts that tip the wall without an earthquake, refused."""
         weight = self.unit_weight_kn * self.thickness * self.height  # [kN/m]
         top = [TopLoad(p.load, p.distance, p.inertia == "carried") for p in loads.top]
         thrusts = [Thrust(f.force, f.height) for f in loads.thrust]
