@@ -256,7 +256,10 @@ def checks_summary(results: AssessmentResult, labelled: bool = False) -> list[tu
     out = [(kc.cases[0].case, checks_line(kc.cases[0], labelled))]
     best = next((c for c in results.cases if c.rank == 1), None)
     if best is not None and best.name in by_name:
-        if results.recommended == best.name and results.input_code_compliant:
+        if results.recommended == best.name and not results.retrofit_required:
+            # the wall passes unreinforced: the decision recommends no retrofit
+            label = f"{best.name} (cheapest passing option; no retrofit needed)"
+        elif results.recommended == best.name and results.input_code_compliant:
             label = f"{best.name} (recommended)"
         elif results.recommended is None and results.input_code_compliant:
             label = f"{best.name} (closest, not recommended)"
