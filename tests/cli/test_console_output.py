@@ -14,6 +14,7 @@ from frp_assess.cli.ranking import print_ranking, ranking_rows
 from frp_assess.numbers import fmt_against
 from frp_assess.text_safety import PLACEHOLDER, plain
 from tests.report.test_report import raw, typed
+from tests.results.decided import decided
 
 
 @pytest.fixture
@@ -135,26 +136,6 @@ def test_text_columns_wrap_whole_words_at_80_columns() -> None:
     for row in rows:
         for cell in row:
             assert set(cell.split()) <= tokens, cell
-
-
-def decided(results: dict[str, Any]) -> dict[str, Any]:
-    """The fixture with a decision (it has none): the first two options by rank pass, the
-    others fail on the time-history check (the 3rd by a fall), the unreinforced wall fails."""
-    r = copy.deepcopy(results)
-    by_rank = sorted(r["cases"][1:], key=lambda c: c["rank"])
-    for i, c in enumerate([r["cases"][0], *by_rank]):
-        passes = i in (1, 2)
-        margin = 1.2 if passes else (0.0 if i == 3 else 0.5)
-        c.update(
-            passes=passes,
-            governing_check="time history SLV",
-            governing_margin=margin,
-            governing_lower_bound=False,
-            recommended=i == 1,
-        )
-    r["recommended"] = by_rank[0]["name"]
-    r["retrofit_required"] = True
-    return r
 
 
 def test_the_ranking_is_one_table_of_80_columns_with_the_decision(
