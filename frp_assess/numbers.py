@@ -32,6 +32,22 @@ def fmt_margin(margin: float | None, lower_bound: bool = False) -> str:
     return f"≥ {text}" if lower_bound and not text.startswith(">") else text
 
 
+#: the governing margin shown for a time-history check that a record fails by toppling the
+#: wall (margin 0)
+FALLS = "falls"
+
+
+def margin_text(case: CaseResult) -> str:
+    """The governing check's margin of a case for a ranking column (≥ 1 passes):
+    :func:`fmt_margin`, :data:`FALLS` for a time-history check that a record fails by
+    toppling the wall, "—" without a decision (an older file)."""
+    if case.governing_check is None:
+        return "—"
+    if case.governing_margin == 0.0 and case.governing_check.startswith("time history"):
+        return FALLS
+    return fmt_margin(case.governing_margin, case.governing_lower_bound)
+
+
 def verdict_text(case: CaseResult) -> str:
     """ "passes: <governing check> <margin>", "fails: <governing check> <margin>" (the
     decision's governing check, the one with the smallest margin), or "—" when undecided

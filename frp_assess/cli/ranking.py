@@ -11,16 +11,13 @@ from __future__ import annotations
 from rich.console import Console
 
 from frp_assess.cli.output import Column, print_table, user
-from frp_assess.numbers import fmt_capacity, fmt_margin
+from frp_assess.numbers import FALLS, fmt_capacity, margin_text
 from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.results.verdict_words import (
     GOVERNING_LEGEND,
     governing_short,
     verdict_word,
 )
-
-#: the margin column of a time-history check that a record fails by falling (margin 0)
-FALLS = "falls"
 
 
 def ranking_columns(results: AssessmentResult) -> list[Column]:
@@ -35,16 +32,6 @@ def ranking_columns(results: AssessmentResult) -> list[Column]:
         Column("FRP kg"),
         Column("cost"),
     ]
-
-
-def margin_cell(case: CaseResult) -> str:
-    """The governing check's margin (≥ 1 passes), :data:`FALLS` for a time-history check
-    that a record fails by toppling the wall, "—" without a decision."""
-    if case.governing_check is None:
-        return "—"
-    if case.governing_margin == 0.0 and case.governing_check.startswith("time history"):
-        return FALLS
-    return fmt_margin(case.governing_margin, case.governing_lower_bound)
 
 
 def is_dropped(case: CaseResult) -> bool:
@@ -65,7 +52,7 @@ def ranking_rows(results: AssessmentResult) -> list[list[str]]:
             c.name,
             verdict_word(results, c),
             governing_short(c.governing_check),
-            margin_cell(c),
+            margin_text(c),
             fmt_capacity(c, target),
             f"{c.frp_mass:.1f}",
             f"{c.frp_cost:.0f}",
