@@ -22,7 +22,6 @@ from textual.widget import Widget
 from textual.widgets import Button, Input, Select, TabbedContent, TabPane
 
 from frp_assess.app.assessment import UNREINFORCED, default_out_dir
-from frp_assess.app.report import export_folder_problem
 from frp_assess.app.rerun import project_changed
 from frp_assess.config.schema import Project
 from frp_assess.errors import InputError
@@ -50,6 +49,7 @@ from frp_assess.tui.ranking_table import RankingTable
 from frp_assess.tui.records_pane import RecordsPane
 from frp_assess.tui.results_pane import STALE_TITLE, ResultsPane
 from frp_assess.tui.retrofits_pane import RetrofitsPane
+from frp_assess.tui.run_folders import export_prompt, exported, scratch_folder, unsaved_note
 from frp_assess.tui.run_panel import RunPanel
 from frp_assess.tui.site_pane import SitePane
 from frp_assess.tui.status_bar import StatusBar
@@ -101,6 +101,7 @@ class FrpAssessApp(PaneLookupApp):
         self.pending_run = False  #: run once the new project is saved
         self.quitting = False
         self.previous_cancel = threading.Event()  #: stops rebuilding the last results
+        self.scratch: Path | None = None  #: where unsaved edits run (tui/run_folders.py)
 
     # ------------------------------------------------------------------------ layout
     def compose(self) -> ComposeResult:
@@ -229,13 +230,14 @@ class FrpAssessApp(PaneLookupApp):
         self.show_outcome(o)
 
     def show_outcome(self, outcome: RunOutcome) -> None:
-        """Show the results of a run in the Results and History tabs (once its views exist)."""
+        """Show the results of a run in the Results and Time history tabs (once its views exist)."""
         pane = self.query_one(ResultsPane)
         if not pane.when_ready(partial(self.show_outcome, outcome)):
             return
         self.outcome = outcome
         stale = self.project != outcome.project
-        pane.show(outcome.results, str(outcome.out_dir), stale, self.file_changed(outcome))
+        changed = self.file_changed(outcome)
+        pane.show(outcome.results, str(outcome.out_dir), stale, changed, self.is_scratch(outcome))
         self.query_one(HistoryPane).show_outcome(outcome)
         self.update_status()
 
@@ -337,6 +339,10 @@ class FrpAssessApp(PaneLookupApp):
         return True
 
     # -------------------------------------------------------------------------- run
+    def is_scratch(self, outcome: RunOutcome) -> bool:
+        """The run was of unsaved edits, in the scratch folder (tui/run_folders.py)."""
+        return self.scratch is not None and Path(outcome.out_dir) == self.scratch
+
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
         return self.running if action == "cancel_run" else True
 
@@ -360,8 +366,9 @@ class FrpAssessApp(PaneLookupApp):
         out_dir = default_out_dir(self.path)
         names = [UNREINFORCED, *(str(o.name) for o in project.expand_interventions())]
         saved = None if self.modified() else self.path  # the digest: only of what the file holds
-        if saved is None:
-            panel.log_line("note: running the project as edited (not saved yet)", "yellow")
+        if saved is None:  # the saved file's results folder holds only the saved file's results
+            self.scratch = out_dir = self.scratch or scratch_folder()
+            panel.log_line(unsaved_note(out_dir, self.path), "yellow")
         panel.start(names, record_count(project), str(out_dir))
         self.cancel_event = threading.Event()
         self.running = True
@@ -428,7 +435,7 @@ class FrpAssessApp(PaneLookupApp):
                 "nothing to export yet: run the assessment first (ctrl+r)", severity="warning"
             )
             return
-        outcome = self.outcome
+        outcome, scratch = self.outcome, self.is_scratch(self.outcome)
 
         def done(path: Path | None) -> None:
             if path is not None:
@@ -438,15 +445,7 @@ class FrpAssessApp(PaneLookupApp):
                     job, thread=True, exclusive=True, group="export", exit_on_error=False
                 )
 
-        self.push_screen(
-            PathPrompt(
-                "Export the reports (PDF and Word) and the results into the folder",
-                str(outcome.out_dir),
-                "report.pdf, report.docx, results.json, results.csv, spectra.csv, records/",
-                export_folder_problem,
-            ),
-            done,
-        )
+        self.push_screen(export_prompt(self.path, outcome.out_dir, scratch), done)
 
     @on(ExportDone)
     def _export_done(self, message: ExportDone) -> None:
@@ -456,9 +455,7 @@ class FrpAssessApp(PaneLookupApp):
             self.notify(message.error, title="Export failed", severity="error")
             panel.log_line(f"export failed: {message.error}", "red")
             return
-        names = ", ".join(f.name for f in message.files)
-        pdf = next((f for f in message.files if f.name == "report.pdf"), None)
-        where = pdf.parent if pdf else (message.files[0].parent if message.files else "")
+        names, where = exported(message.files)
         self.notify(f"wrote {names} into {where}/", title="Exported")
         panel.log_line(f"exported into {where}/: {names}")
 
