@@ -26,6 +26,7 @@ from frp_assess.app.rerun import project_changed
 from frp_assess.config.schema import Project
 from frp_assess.errors import InputError
 from frp_assess.numbers import numerical_check_text, recommendation_text
+from frp_assess.tui import run_folders as folders
 from frp_assess.tui.analysis_pane import AnalysisPane
 from frp_assess.tui.core.editor_state import Problem
 from frp_assess.tui.core.opening import opening_data
@@ -49,7 +50,6 @@ from frp_assess.tui.ranking_table import RankingTable
 from frp_assess.tui.records_pane import RecordsPane
 from frp_assess.tui.results_pane import STALE_TITLE, ResultsPane
 from frp_assess.tui.retrofits_pane import RetrofitsPane
-from frp_assess.tui.run_folders import export_prompt, exported, scratch_folder, unsaved_note
 from frp_assess.tui.run_panel import RunPanel
 from frp_assess.tui.site_pane import SitePane
 from frp_assess.tui.status_bar import StatusBar
@@ -367,8 +367,8 @@ class FrpAssessApp(PaneLookupApp):
         names = [UNREINFORCED, *(str(o.name) for o in project.expand_interventions())]
         saved = None if self.modified() else self.path  # the digest: only of what the file holds
         if saved is None:  # the saved file's results folder holds only the saved file's results
-            self.scratch = out_dir = self.scratch or scratch_folder()
-            panel.log_line(unsaved_note(out_dir, self.path), "yellow")
+            self.scratch = out_dir = self.scratch or folders.scratch_folder()
+            panel.log_line(folders.unsaved_note(out_dir, self.path), "yellow")
         panel.start(names, record_count(project), str(out_dir))
         self.cancel_event = threading.Event()
         self.running = True
@@ -445,7 +445,7 @@ class FrpAssessApp(PaneLookupApp):
                     job, thread=True, exclusive=True, group="export", exit_on_error=False
                 )
 
-        self.push_screen(export_prompt(self.path, outcome.out_dir, scratch), done)
+        self.push_screen(folders.export_prompt(self.path, outcome.out_dir, scratch), done)
 
     @on(ExportDone)
     def _export_done(self, message: ExportDone) -> None:
@@ -455,7 +455,7 @@ class FrpAssessApp(PaneLookupApp):
             self.notify(message.error, title="Export failed", severity="error")
             panel.log_line(f"export failed: {message.error}", "red")
             return
-        names, where = exported(message.files)
+        names, where = folders.exported(message.files)
         self.notify(f"wrote {names} into {where}/", title="Exported")
         panel.log_line(f"exported into {where}/: {names}")
 
@@ -480,11 +480,13 @@ class FrpAssessApp(PaneLookupApp):
         self.push_screen(ConfirmQuit(what), done)
 
     def quit_now(self) -> None:
-        """Stop the workers and leave."""
+        """Stop the workers, remove the scratch folder (unless a run writes there), leave."""
         self.quitting = True
         self.previous_cancel.set()
         if self.cancel_event is not None:
             self.cancel_event.set()
+        if self.scratch is not None and not self.running:
+            folders.remove_scratch(self.scratch)
         self.exit()
 
 

@@ -77,7 +77,8 @@ Runs write `results.json`, `results.csv`, `spectra.csv`, `records/`, `report.pdf
 `report.docx` (the editable Word report) into `<project>-results/` next to the project
 file and keep every finished analysis in its `.cache/`, as `frp-assess run` does.  That
 folder only ever holds the results of the file as saved: `ctrl+r` on unsaved edits runs
-them in a scratch folder of their own (the run log and the Results tab say where); save,
+them in a scratch folder of their own (the run log and the Results tab say where; it is
+removed when you quit: `ctrl+e` exports its results before); save,
 then `ctrl+r`, to put them next to the project.  `ctrl+e` writes them all (both reports
 included) into another folder (proposed: `<project>-export/`).
 Opening a project that was run before shows that run's results again (rebuilt from the

@@ -4,7 +4,8 @@ that file as saved.
 - A run of the project as saved writes into ``<stem>-results/`` next to it, as
   ``frp-assess run`` does.
 - A run of unsaved edits writes into a scratch folder of its own (a new temporary folder,
-  one per session, so that its cache serves the next run of edits), never into
+  one per session, so that its cache serves the next run of edits; removed at quit), never
+  into
   ``<stem>-results/``: the report there would describe a wall the file does not hold (after
   "Discard", report.pdf said B = 0.30 m while the file said 0.25 m).  The run log and the
   Results tab say so.
@@ -15,6 +16,7 @@ that file as saved.
 
 from __future__ import annotations
 
+import shutil
 import tempfile
 from functools import partial
 from pathlib import Path
@@ -23,10 +25,20 @@ from frp_assess.app.assessment import default_out_dir
 from frp_assess.app.report import export_folder_problem
 from frp_assess.tui.dialogs import PathPrompt
 
+#: the name of a scratch folder starts so (:func:`remove_scratch` removes no other folder)
+SCRATCH_PREFIX = "frp-assess-unsaved-edits-"
+
 
 def scratch_folder() -> Path:
     """A new folder for the runs of unsaved edits (under the system's temporary folder)."""
-    return Path(tempfile.mkdtemp(prefix="frp-assess-unsaved-edits-"))
+    return Path(tempfile.mkdtemp(prefix=SCRATCH_PREFIX))
+
+
+def remove_scratch(folder: Path) -> None:
+    """Remove a scratch folder of :func:`scratch_folder` (at quit: its results were of
+    edits never saved; ``ctrl+e`` exports them before)."""
+    if folder.name.startswith(SCRATCH_PREFIX):
+        shutil.rmtree(folder, ignore_errors=True)
 
 
 def unsaved_note(scratch: Path, project_file: Path) -> str:

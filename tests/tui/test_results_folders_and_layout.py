@@ -88,6 +88,10 @@ def test_unsaved_edits_never_run_into_the_saved_projects_folder(
             assert app.outcome is not None and app.outcome.out_dir == saved_dir
             assert app.outcome.results.wall.thickness == 0.35
             assert "Results of the last run" in shown(app.query_one("#results-note", Static))
+            scratch = app.scratch
+            assert scratch is not None and scratch.is_dir()
+            app.quit_now()  # the scratch folder goes with the session
+        assert not scratch.exists() and saved_dir.is_dir()
 
     run_async(body)
 
