@@ -23,7 +23,8 @@ from frp_assess.api import run_assessment
 from frp_assess.assess.inputs import DesignRequest
 from frp_assess.assess.results import case_failure_mode
 from frp_assess.assess.runner import design_search
-from frp_assess.cli.cmd_run import built_lines, dropped_lines, ranking_rows
+from frp_assess.cli.cmd_run import built_lines
+from frp_assess.cli.ranking import dropped_lines, ranking_rows
 from frp_assess.report import as_built_section
 from frp_assess.report.document import build_report
 from frp_assess.report.tables import ranking_table
