@@ -23,6 +23,7 @@ from frp_assess.app.rerun import project_digest, referenced_paths, unchanged_run
 from frp_assess.assess.cache import IdaCache, cache_file, record_digest, task_key
 from frp_assess.assess.floor_input import floor_record, floor_spectra
 from frp_assess.assess.from_project import inputs_from_project, load_inputs
+from frp_assess.assess.independent_checks import independent_checks
 from frp_assess.assess.inputs import UNREINFORCED, AssessmentInputs, Material
 from frp_assess.assess.kinematic_checks import floor_ratio, ida_confidence_factor, linear_check
 from frp_assess.assess.limit_states import limit_state_spectrum
@@ -230,6 +231,18 @@ def run_assessment(
         closest=decided.closest,
         robustness=decided.robustness,
     )
+    # NTC 2018 §10.2: the checks of the run by routes it did not take (assess/independent_checks)
+    checks = independent_checks(
+        inputs.case_models(),
+        inputs.case_names(),
+        runner.motions,
+        results.cases,
+        results.recommended or results.closest,
+        scale=fc,
+        ida_tolerance=inputs.ida.tolerance,
+        numerical=results.numerical_check,
+    )
+    results = replace(results, independent_checks=checks)
     if inputs_digest:
         results = replace(results, inputs_digest=inputs_digest)
     if write:
