@@ -169,7 +169,9 @@ def method(results: Results, lang: Lang) -> list[Block]:
         [lang.t("model.collapse"), lang.t(f"model.collapse.{m.collapse}")
          if lang.has(f"model.collapse.{m.collapse}") else esc(m.collapse)],
         [lang.t("model.strain_factor"), lang.gnum(m.strain_factor)],
-        [lang.t("model.tail"), f"{lang.gnum(m.free_vibration_tail)} s"],
+        [lang.t("model.tail"),
+         lang.t("model.tail.value", tail=lang.gnum(m.free_vibration_tail))
+         if m.collapse == "overturning" else f"{lang.gnum(m.free_vibration_tail)} s"],
         [lang.t("model.tolerance"), f"{m.integration.tolerance:.0e}".replace("e-0", "e-")],
         [lang.t("model.ida"), lang.t("model.ida.value", s=lang.gnum(m.ida.step_ratio),
                                      tol=lang.gnum(m.ida.tolerance),

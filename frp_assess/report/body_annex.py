@@ -8,11 +8,18 @@ from __future__ import annotations
 
 from reportlab.lib.units import mm
 
+from frp_assess.report import pivot_section
 from frp_assess.report.body_front import position_words
 from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import cond_break, esc, grid, h1, h2, markup
 from frp_assess.report.formats import TableData, column_blocks
 from frp_assess.report.lang import Lang, short
+from frp_assess.report.verdict_words import (
+    cell,
+    collapse_probability,
+    probability_text,
+    robustness_lines,
+)
 from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.text_safety import Markup
 
@@ -45,6 +52,7 @@ def options_table(results: Results, lang: Lang) -> TableData:
         "I [-]",
         lang.t("col.mass"),
         lang.t("col.cost", currency=short(results.costs.currency)),
+        lang.t("verdict.col"),
     ]
     rows = []
     for c in results.ranked_options:
@@ -52,7 +60,8 @@ def options_table(results: Results, lang: Lang) -> TableData:
         rank = str(c.rank) if c.rank is not None else lang.t("annex.dropped")
         rows.append([rank, case_label(c, lang), _bound(n(c.design_a_dyn, 3), lb),
                      _bound(n(c.capacity_demand, 2), lb), _bound(n(c.improvement, 2), lb),
-                     n(c.frp_mass, 1), n(c.frp_cost, 0, grouping=True)])  # fmt: skip
+                     n(c.frp_mass, 1), n(c.frp_cost, 0, grouping=True),
+                     cell(c, lang)])  # fmt: skip
     return TableData(header, rows)
 
 
@@ -77,15 +86,15 @@ def scatter_table(results: Results, lang: Lang) -> TableData:
     header = [
         lang.t("annex.col.option"),
         Markup(lang.t("annex.col.median")),
-        "CoV [-]",
-        lang.t("annex.col.pcollapse"),
+        lang.t("annex.col.cov"),
+        Markup(lang.t("annex.col.pcollapse")),
     ]
     rows = []
     for c in _cases(results):
         sc = c.scatter
-        p = None if sc.fragility is None else sc.fragility.p_collapse_at_demand
+        at = collapse_probability(results, c)
         rows.append([case_label(c, lang), n(sc.median_a_dyn, 3), n(sc.cov, 2),
-                     "—" if p is None else f"{n(100 * p, 1)} %"])  # fmt: skip
+                     "—" if at is None else probability_text(at[1], lang)])  # fmt: skip
     return TableData(header, rows)
 
 
@@ -169,7 +178,7 @@ def annex(results: Results, lang: Lang) -> list[Block]:
 
     if results.options:
         out += [heading("annex.h.options")]
-        widths = [x * mm for x in (14, 62, 22, 22, 16, 18, 26)]
+        widths = [x * mm for x in (12, 52, 20, 20, 14, 16, 20, 20)]
         table = options_table(results, lang)
         out.append(grid(table, widths, wrap=(1,), numeric_from=2, small=True))
     design = adt.design_table(results, lang)
@@ -193,8 +202,9 @@ def annex(results: Results, lang: Lang) -> list[Block]:
         label = next((case_label(c, lang) for c in results.cases
                       if c.name == results.sensitivity.case), results.sensitivity.case)  # fmt: skip
         out += [cond_break(60 * mm), heading("annex.h.sensitivity")]
-        out.append(grid(sens, [x * mm for x in (76, 32, 30, 36)], wrap=(0,), numeric_from=1,
-                        small=True))  # fmt: skip
+        out.append(grid(sens, [x * mm for x in (58, 22, 20, 24, 26, 24)], wrap=(0,),
+                        numeric_from=1, small=True))  # fmt: skip
+        out += [markup(line) for line in robustness_lines(results, lang)]
         out.append(markup(lang.t("annex.sensitivity.note", case=esc(label)), "caption"))
     checks = checks_table(results, lang)
     if checks is not None:
@@ -206,6 +216,15 @@ def annex(results: Results, lang: Lang) -> list[Block]:
         states = intensities_text(results, lang)
         if states:
             out.append(markup(states, "caption"))
+    if any(c.pivot is not None for c in results.cases):
+        out += [cond_break(60 * mm), heading("annex.h.pivot")]
+        out.append(markup(pivot_section.masonry_text(results, lang)))
+        out.append(grid(pivot_section.pivot_table(results, lang, lambda c: case_label(c, lang)),
+                        [x * mm for x in (48, 18, 16, 16, 24, 52)], wrap=(0, 5),
+                        numeric_from=1, small=True))  # fmt: skip
+        out.append(markup(lang.t("pivot.caption"), "caption"))
+        out += [markup(line) for line in pivot_section.weaker_notes(
+            results, lang, lambda c: case_label(c, lang))]  # fmt: skip
     bars = bars_table(results, lang)
     if bars is not None:
         out += [cond_break(60 * mm), heading("annex.h.bars")]

@@ -75,6 +75,7 @@ from frp_assess.report.formats import (
 from frp_assess.report.formats import (
     yes_no as yes_no,
 )
+from frp_assess.report.lang import Lang
 from frp_assess.report.tables_inputs import (
     COLLAPSE_WORDS as COLLAPSE_WORDS,
 )
@@ -117,10 +118,19 @@ from frp_assess.report.tables_inputs import (
 from frp_assess.report.tables_inputs import (  # re-exported, as above
     wall_rows as wall_rows,
 )
+from frp_assess.report.verdict_words import (
+    cell,
+    collapse_probability,
+    convention_cells,
+    governing,
+    probability_text,
+)
 from frp_assess.results.model import AssessmentResult, CaseResult, HistoryRun
 from frp_assess.text_safety import Markup
 
 Results = AssessmentResult
+#: the English words of the verdict: the catalogue's, as in the body (report/verdict_words.py)
+EN = Lang("en")
 # --- the tables ---------------------------------------------------------------------------
 
 RANKING_HEADER = [
@@ -136,7 +146,7 @@ RANKING_HEADER = [
     "mean q",
     "improve-<br/>ment",
     "capacity /<br/>demand",
-    "meets<br/>target",
+    "deciding<br/>checks",
 ]
 
 
@@ -163,7 +173,7 @@ def ranking_row(case: CaseResult, target: float) -> list[str]:
         bound(fmt_q(case.mean_q), lb),
         bound(fmt_ratio(case.improvement), lb),
         bound(fmt_capacity(case, target), lb),
-        yes_no(case.meets_target),
+        cell(case, EN),
     ]
 
 
@@ -179,10 +189,9 @@ def ranking_table(results: Results) -> TableData:
     return TableData(header, rows)
 
 
-def _probability(p: float | None) -> str:
-    if p is None:
-        return DASH
-    return "< 0.1%" if p < 1e-3 else f"{p:.1%}"
+def _probability(at: tuple[float, float] | None) -> str:
+    """P(collapse) at FC·a_g·S (:func:`~frp_assess.report.verdict_words.collapse_probability`)."""
+    return DASH if at is None else probability_text(at[1], EN)
 
 
 def sensitivity_table(results: Results) -> TableData | None:
@@ -191,7 +200,8 @@ def sensitivity_table(results: Results) -> TableData | None:
     if not sens or not sens.rows:
         return None
     base = sens.rows[0].design_a_dyn
-    header = ["variant", a_dyn_label(results), "change [%]", "capacity/demand [–]"]
+    header = ["variant", a_dyn_label(results), "change [%]", "capacity/demand [–]",
+              EN.t("sens.col.verdict"), EN.t("sens.col.governing")]  # fmt: skip
     rows = []
     for r in sens.rows:
         ge = "≥ " if r.lower_bound else ""
@@ -201,6 +211,7 @@ def sensitivity_table(results: Results) -> TableData | None:
                 ge + fmt_acc(r.design_a_dyn),
                 f"{100.0 * (r.design_a_dyn / base - 1.0):+.1f}",
                 ge + f"{r.capacity_demand:.2f}",
+                *convention_cells(results, r.variant, EN),
             ]
         )
     return TableData(header, rows)
@@ -217,7 +228,7 @@ def scatter_table(results: Results) -> TableData:
         "least favourable [g] (record)",
         "fragility median [g]",
         "β [–]",
-        "P(collapse) at a_g·S",
+        Markup(EN.t("annex.col.pcollapse")),
     ]
     rows = []
     for c in [results.urm, *ranked_options(results)]:
@@ -232,7 +243,7 @@ def scatter_table(results: Results) -> TableData:
                 f"{fmt_acc(c.min_a_dyn)} ({sc.least_favourable_record})",
                 fmt_acc(None if fr is None else fr.median),
                 DASH if fr is None else f"{fr.beta:.2f}",
-                _probability(None if fr is None else fr.p_collapse_at_demand),
+                _probability(collapse_probability(results, c)),
             ]
         )
     return TableData(header, rows)
@@ -249,13 +260,13 @@ def summary_table(results: Results, n_alternatives: int = 3) -> TableData:
         a_dyn_label(results),
         Markup("improve-<br/>ment"),
         Markup("capacity /<br/>demand"),
-        Markup("meets<br/>target"),
+        Markup("deciding<br/>checks"),
     ]
     ranked = [c for c in ranked_options(results) if c.rank is not None]  # not the dropped
     chosen: list[tuple[str, CaseResult]] = [("existing", results.urm)]
     rec = case_by_name(results, results.recommended)
     if rec is not None:
-        urm_ok = bool(results.urm.meets_target)
+        urm_ok = cell(results.urm, EN) == EN.t("verdict.cell.pass")
         if not results.input_code_compliant:
             label = "best ranked"
         else:
@@ -275,7 +286,7 @@ def summary_table(results: Results, n_alternatives: int = 3) -> TableData:
                 bound(fmt_acc(c.design_a_dyn), lb),
                 bound(fmt_ratio(c.improvement), lb),
                 bound(fmt_capacity(c, float(results.model.target)), lb),
-                yes_no(c.meets_target),
+                cell(c, EN),
             ]
         )
     return TableData(header, rows)
@@ -313,10 +324,7 @@ def case_summary_rows(results: Results, case: CaseResult) -> list[list[str]]:
             bound(fmt_capacity(case, float(results.model.target)), lb)
             + f" (FC = {case.fc:g}, demand a_g·S = {fmt_acc(results.demand.pga)} g)",
         ],
-        [
-            f"meets the target (≥ {results.model.target:g})",
-            yes_no(case.meets_target),
-        ],
+        ["deciding checks", f"{cell(case, EN)}: {governing(case, EN)}"],
     ]
     if case.design_a_dyn is not None and not results.design_is_mean:
         design = f"{fmt_acc(case.design_a_dyn)} g"
