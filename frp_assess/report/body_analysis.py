@@ -82,12 +82,21 @@ def site_blocks(results: Results, lang: Lang) -> list[Block]:
     ]
 
 
+#: decimals of each spectrum parameter: one rounding per quantity, as in the site's table
+#: (a_g 4, F0 and T_C* 3) and the derived factors (3)
+PARAM_DECIMALS = {"ag": 4, "F0": 3, "Tc_star": 3, "SS": 3, "CC": 3, "ST": 3, "eta": 3}
+
+
 def _param(key: str, value: object, lang: Lang) -> list[str]:
     symbol = PARAM_SYMBOL.get(key, key)
     label = lang.t(symbol) if symbol.startswith("spectrum.") else symbol
     if isinstance(value, float | int) and not isinstance(value, bool):
         unit = {"ag": " g", "Tc_star": " s"}.get(key, "")
-        return [label, lang.gnum(float(value)) + unit]
+        places = PARAM_DECIMALS.get(key)
+        shown = lang.gnum(float(value)) if places is None else lang.num(float(value), places)
+        if places is not None and float(value) == round(float(value)):
+            shown = lang.gnum(float(value))  # S_T = 1, η = 1: no trailing zeros
+        return [label, shown + unit]
     return [label, str(value)]
 
 

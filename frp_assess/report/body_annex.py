@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from reportlab.lib.units import mm
 
-from frp_assess.report import pivot_section
+from frp_assess.report import history_section, pivot_section
 from frp_assess.report.body_front import position_words
 from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import cond_break, esc, grid, h1, h2, markup
@@ -230,6 +230,16 @@ def annex(results: Results, lang: Lang) -> list[Block]:
         out += [cond_break(60 * mm), heading("annex.h.bars")]
         out.append(grid(bars, [x * mm for x in (52, 14, 18, 14, 20, 16, 20, 20)], wrap=(0,),
                         small=True))  # fmt: skip
+    if results.governing is not None and results.governing.runs:
+        out += [cond_break(90 * mm), heading("annex.h.history")]
+        out += history_section.blocks(
+            results,
+            lang,
+            lambda t: grid(
+                t, [x * mm for x in (26, 18, 24, 44, 20, 42)], wrap=(0, 3, 5), small=True
+            ),  # fmt: skip
+            3,
+        )
     anchorage = adt.anchorage_table(results, lang)
     if anchorage is not None:
         out += [cond_break(60 * mm), heading("annex.h.anchorage")]

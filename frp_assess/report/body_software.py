@@ -21,7 +21,7 @@ from dataclasses import dataclass
 from reportlab.lib.units import mm
 
 from frp_assess.report.doc_model import Block
-from frp_assess.report.flow import esc, grid, h1, h2, key_value, markup
+from frp_assess.report.flow import esc, grid, h1, h2, keep, key_value, markup
 from frp_assess.report.lang import Lang
 from frp_assess.report.tables import TableData
 from frp_assess.results.model import AssessmentResult
@@ -159,8 +159,9 @@ def independent_blocks(results: Results, lang: Lang) -> list[Block]:
             _deviation(c.tolerance, c.absolute, lang),
             lang.t("word.pass" if c.passed else "word.fail"),
         ])  # fmt: skip
-    out.append(grid(TableData(header, rows), [62 * mm, 22 * mm, 22 * mm, 20 * mm, 20 * mm,
-                                              24 * mm], wrap=(0,)))  # fmt: skip
+    table = grid(TableData(header, rows), [58 * mm, 22 * mm, 24 * mm, 20 * mm, 20 * mm, 26 * mm],
+                 wrap=(0,))  # fmt: skip
+    out[-1:] = [keep([out[-1], table])]  # the lead stays with its table
     failed = [c for c in checks if not c.passed]
     if failed:
         text = lang.t("sw.indep.bad", n=len(failed), total=len(checks),

@@ -10,6 +10,7 @@ from __future__ import annotations
 from collections import Counter
 from itertools import pairwise
 
+from frp_assess.report.body_front import masonry_words
 from frp_assess.report.formats import TableData
 from frp_assess.report.lang import Lang
 from frp_assess.results.model import AssessmentResult, CaseResult
@@ -27,7 +28,11 @@ def masonry_text(results: Results, lang: Lang) -> str:
         return lang.t("pivot.none")
     pivot = next((c.pivot for c in results.cases if c.pivot is not None), None)
     rule = pivot.rule if pivot is not None else "crushing"
-    kind = lang.t("pivot.kind", name=m.masonry) if m.masonry else lang.t("pivot.kind.given")
+    kind = (
+        lang.t("pivot.kind", name=masonry_words(results, lang))
+        if m.masonry
+        else lang.t("pivot.kind.given")
+    )
     head = lang.t("pivot.masonry", kind=kind, lc=m.knowledge_level, fm=lang.num(m.f_m, 2),
                   source=m.source, fc=lang.gnum(m.confidence_factor),
                   fd=lang.num(m.f_d, 2))  # fmt: skip

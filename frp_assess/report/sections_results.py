@@ -5,12 +5,11 @@ from __future__ import annotations
 
 from reportlab.lib.units import mm
 
-from frp_assess.report import charts, floor_section
+from frp_assess.report import charts, floor_section, history_section
 from frp_assess.report import tables as tb
-from frp_assess.report.doc_model import Block, with_subscripts
+from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import (
     cond_break,
-    esc,
     figure,
     gap,
     grid,
@@ -207,38 +206,10 @@ def governing(results: Results) -> list[Block]:
     if not gov or not gov.runs:
         out.append(para("No time history is stored in the results."))
         return out
-    rs = gov.rupture_strain
-    out.append(
-        markup(
-            f"Case <b>{esc(gov.case)}</b>, record <b>{esc(gov.record)}</b> (the record "
-            "that overturns it at the smallest multiplier). The response at the collapse "
-            "multiplier and just below it shows how the wall fails"
-            + (
-                f"; the bar ruptures when its strain reaches ε<sub>max</sub> = "
-                f"{with_subscripts(esc(tb.rupture_strain_words(results)))} = {1e3 * rs:.2f} ‰."
-                if rs is not None
-                else "."
-            )
-        )
+    out += history_section.blocks(
+        results,
+        EN,
+        lambda t: grid(t, [24 * mm, 20 * mm, 24 * mm, 40 * mm, 22 * mm, 44 * mm], wrap=(0, 3, 5)),
+        4,
     )
-    out.append(
-        grid(
-            tb.governing_runs_table(results),
-            [24 * mm, 22 * mm, 24 * mm, 36 * mm, 22 * mm, 46 * mm],
-            wrap=(0, 3, 5),
-        )
-    )
-    out.append(gap(8))
-    chart = charts.history_chart(results)
-    if chart is not None:
-        out.append(figure(chart))
-        out.append(
-            para(
-                "Figure 4. Rotation θ/α (θ = α: the wall has rotated as far as its slenderness; "
-                "collapse follows the criterion of section 2.4) and strain of the acting bar, at "
-                "the collapse multiplier (red) and just below it (blue); after the record the "
-                "wall moves freely until its fate is decided.",
-                "caption",
-            )
-        )
     return out
