@@ -8,9 +8,10 @@ from reportlab.lib.units import mm
 from frp_assess.report import charts
 from frp_assess.report.body_closing import decision_lines
 from frp_assess.report.body_front import option_words, position_words
+from frp_assess.report.charts import localize_drawing
 from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import cond_break, figure, grid, h1, h2, keep, key_value, markup
-from frp_assess.report.lang import Lang, localize_drawing, short
+from frp_assess.report.lang import Lang, short
 from frp_assess.report.tables import TableData
 from frp_assess.report.verdict_words import (
     cell,

@@ -86,22 +86,7 @@ def blocks(results: Results, lang: Lang, table: object, figure_no: int) -> list[
     chart = charts.history_chart(results)
     if chart is not None:
         if lang.code != "en":
-            _relabel(chart, lang)
+            charts.relabel(chart, lambda text: chart_label(text, lang))
         caption = markup(lang.t("hist.caption", n=figure_no), "caption")
         out.append(keep([figure(chart), caption]))
     return out
-
-
-def _relabel(drawing: object, lang: Lang) -> None:
-    """Every string of the chart through :func:`chart_label` (in place)."""
-    from reportlab.graphics.shapes import Group, String
-
-    def walk(node: object) -> None:
-        if isinstance(node, String):
-            node.text = chart_label(str(node.text), lang)
-        elif isinstance(node, Group):
-            for child in node.contents:
-                walk(child)
-
-    for s in getattr(drawing, "contents", []):
-        walk(s)

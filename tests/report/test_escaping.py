@@ -13,8 +13,8 @@ import pytest
 from frp_assess.report import build_report, build_story
 from frp_assess.report import tables as tb
 from frp_assess.report.charts import ratio_note
-from frp_assess.report.document import pdf_date
 from frp_assess.report.flow import PARAGRAPH_MAX_CHARS
+from frp_assess.report.pdf_document import pdf_date
 from frp_assess.text_safety import PDF_MAX_CHARS, PDF_MAX_WORD, PLACEHOLDER
 from tests.report.test_report import raw, story_text, typed
 

@@ -25,7 +25,7 @@ from frp_assess.assess.results import case_failure_mode
 from frp_assess.assess.runner import design_search
 from frp_assess.cli.cmd_run import built_lines, dropped_lines, ranking_rows
 from frp_assess.report import as_built_section, pivot_section
-from frp_assess.report.document import build_report
+from frp_assess.report.pdf_document import build_report
 from frp_assess.report.tables import EN, ranking_table
 from frp_assess.results.json_io import from_json, to_json
 from frp_assess.results.model import AssessmentResult
