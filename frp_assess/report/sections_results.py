@@ -73,7 +73,7 @@ def options(results: Results) -> list[Block]:
     data = tb.ranking_table(results)
     rec_name = results.recommended
     hl = [i for i, r in enumerate(data.rows) if r[1] == rec_name]
-    widths = [12, 25, 11, 14, 8, 11, 11, 11, 14, 12, 16, 16, 11]  # rank: 'dropped'
+    widths = [12, 22, 11, 14, 8, 11, 11, 11, 14, 12, 16, 15, 15]  # rank: "dropped"
     out.append(
         grid(
             data,
