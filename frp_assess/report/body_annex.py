@@ -6,6 +6,8 @@ catalogue, numbers from the results."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from reportlab.lib.units import mm
 
 from frp_assess.report import history_section, pivot_section
@@ -81,19 +83,34 @@ def a_dyn_table(results: Results, lang: Lang) -> TableData:
     return TableData([lang.t("annex.col.option"), *names], rows)
 
 
-def scatter_table(results: Results, lang: Lang) -> TableData:
+def scatter_table(
+    results: Results, lang: Lang, label: Callable[[CaseResult], str] | None = None
+) -> TableData:
+    """Record-to-record scatter of a_dyn and the lognormal fragility of every case (the wall
+    as it is first, then by rank): mean, median, CoV, least favourable (record), fragility
+    median, β and P(collapse) at FC·a_g·S; dashes where no lognormal was fitted.
+    ``label(case)`` names a case (default :func:`case_label`)."""
     n = lang.num
+    name = label or (lambda c: case_label(c, lang))
     header = [
         lang.t("annex.col.option"),
+        Markup(lang.t("annex.col.mean")),
         Markup(lang.t("annex.col.median")),
         lang.t("annex.col.cov"),
+        lang.t("annex.col.least"),
+        lang.t("annex.col.frag_median"),
+        "β [-]",
         Markup(lang.t("annex.col.pcollapse")),
     ]
     rows = []
     for c in _cases(results):
         sc = c.scatter
+        fr = sc.fragility
         at = collapse_probability(results, c)
-        rows.append([case_label(c, lang), n(sc.median_a_dyn, 3), n(sc.cov, 2),
+        rows.append([name(c), n(c.mean_a_dyn, 3), n(sc.median_a_dyn, 3), n(sc.cov, 2),
+                     f"{n(c.min_a_dyn, 3)} ({sc.least_favourable_record})",
+                     "—" if fr is None else n(fr.median, 3),
+                     "—" if fr is None else n(fr.beta, 2),
                      "—" if at is None else probability_text(at[1], lang)])  # fmt: skip
     return TableData(header, rows)
 
@@ -194,7 +211,8 @@ def annex(results: Results, lang: Lang) -> list[Block]:
         out.append(grid(block, [48 * mm] + [other * mm] * names, wrap=(0,), small=True))
     out.append(markup(lang.t("annex.nc.note"), "caption"))
     out += [cond_break(60 * mm), heading("annex.h.scatter")]
-    out.append(grid(scatter_table(results, lang), [x * mm for x in (62, 34, 24, 40)], wrap=(0,),
+    widths = [x * mm for x in (40, 18, 18, 14, 30, 18, 12, 24)]
+    out.append(grid(scatter_table(results, lang), widths, wrap=(0, 4), numeric_from=1,
                     small=True))  # fmt: skip
     out.append(markup(lang.t("annex.scatter.note"), "caption"))
     sens = adt.sensitivity_table(results, lang)

@@ -5,7 +5,8 @@ from __future__ import annotations
 
 from reportlab.lib.units import mm
 
-from frp_assess.report import charts, floor_section, history_section
+from frp_assess.report import annex_design_tables as adt
+from frp_assess.report import body_annex, charts, floor_section, history_section
 from frp_assess.report import tables as tb
 from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import (
@@ -155,7 +156,7 @@ def options(results: Results) -> list[Block]:
     out.append(h2("5.5  How far the numbers can be trusted: scatter and fragility"))
     out.append(
         grid(
-            tb.scatter_table(results),
+            body_annex.scatter_table(results, EN, lambda c: c.name),
             [x * mm for x in (34, 18, 16, 13, 33, 20, 12, 28)],
             wrap=(0, 4),
             small=True,
@@ -174,7 +175,7 @@ def options(results: Results) -> list[Block]:
             "caption",
         )
     )
-    sens = tb.sensitivity_table(results)
+    sens = adt.sensitivity_table(results, EN)
     if sens is not None and results.sensitivity is not None:
         out.append(cond_break(60 * mm))
         out.append(h2("5.6  What the result depends on: the model conventions"))

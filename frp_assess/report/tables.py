@@ -120,10 +120,7 @@ from frp_assess.report.tables_inputs import (  # re-exported, as above
 )
 from frp_assess.report.verdict_words import (
     cell,
-    collapse_probability,
-    convention_cells,
     governing,
-    probability_text,
 )
 from frp_assess.results.model import AssessmentResult, CaseResult, HistoryRun
 from frp_assess.text_safety import Markup
@@ -186,66 +183,6 @@ def ranking_table(results: Results) -> TableData:
     target = float(results.model.target)
     cases = [results.urm, *ranked_options(results)]
     rows = [ranking_row(c, target) for c in cases]
-    return TableData(header, rows)
-
-
-def _probability(at: tuple[float, float] | None) -> str:
-    """P(collapse) at FC·a_g·S (:func:`~frp_assess.report.verdict_words.collapse_probability`)."""
-    return DASH if at is None else probability_text(at[1], EN)
-
-
-def sensitivity_table(results: Results) -> TableData | None:
-    """The assessed case under every model-convention variant, or None when not recorded."""
-    sens = results.sensitivity
-    if not sens or not sens.rows:
-        return None
-    base = sens.rows[0].design_a_dyn
-    header = ["variant", a_dyn_label(results), "change [%]", "capacity/demand [–]",
-              EN.t("sens.col.verdict"), EN.t("sens.col.governing")]  # fmt: skip
-    rows = []
-    for r in sens.rows:
-        ge = "≥ " if r.lower_bound else ""
-        rows.append(
-            [
-                r.variant,
-                ge + fmt_acc(r.design_a_dyn),
-                f"{100.0 * (r.design_a_dyn / base - 1.0):+.1f}",
-                ge + f"{r.capacity_demand:.2f}",
-                *convention_cells(results, r.variant, EN),
-            ]
-        )
-    return TableData(header, rows)
-
-
-def scatter_table(results: Results) -> TableData:
-    """Record-to-record scatter of a_dyn and the lognormal fragility of every case (unreinforced
-    first, then by rank); the fragility columns show dashes where no lognormal was fitted."""
-    header = [
-        "option",
-        "mean a_dyn [g]",
-        "median [g]",
-        "CoV [–]",
-        "least favourable [g] (record)",
-        "fragility median [g]",
-        "β [–]",
-        Markup(EN.t("annex.col.pcollapse")),
-    ]
-    rows = []
-    for c in [results.urm, *ranked_options(results)]:
-        sc = c.scatter
-        fr = sc.fragility
-        rows.append(
-            [
-                c.name,
-                fmt_acc(c.mean_a_dyn),
-                fmt_acc(sc.median_a_dyn),
-                f"{sc.cov:.2f}",
-                f"{fmt_acc(c.min_a_dyn)} ({sc.least_favourable_record})",
-                fmt_acc(None if fr is None else fr.median),
-                DASH if fr is None else f"{fr.beta:.2f}",
-                _probability(collapse_probability(results, c)),
-            ]
-        )
     return TableData(header, rows)
 
 
