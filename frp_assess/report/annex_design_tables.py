@@ -18,10 +18,10 @@ from frp_assess.text_safety import Markup
 Results = AssessmentResult
 
 
-def design_table(results: Results, lang: Lang) -> TableData | None:
+def design_table(results: Results, lang: Lang, *, notes: bool = False) -> TableData | None:
     """Design mode, one row per (material, position): the smallest ratio ρ [‰] that passes
-    every deciding check, its capacity/demand, FRP mass [kg] and cost; None when the design
-    mode was not run."""
+    every deciding check, its capacity/demand, FRP mass [kg] and cost, and with ``notes`` the
+    run's one-line note (English); None when the design mode was not run."""
     if not results.design:
         return None
     n = lang.num
@@ -32,6 +32,7 @@ def design_table(results: Results, lang: Lang) -> TableData | None:
         lang.t("col.cd"),
         lang.t("col.mass"),
         lang.t("col.cost", currency=short(results.costs.currency)),
+        *([lang.t("annex.col.note")] if notes else []),
     ]
     rows = [
         [
@@ -41,6 +42,7 @@ def design_table(results: Results, lang: Lang) -> TableData | None:
             n(d.capacity_demand, 2),
             n(d.frp_mass, 1),
             n(d.frp_cost, 0, grouping=True),
+            *([d.message or ""] if notes else []),
         ]
         for d in results.design
     ]

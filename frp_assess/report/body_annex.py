@@ -67,7 +67,12 @@ def options_table(results: Results, lang: Lang) -> TableData:
     return TableData(header, rows)
 
 
-def a_dyn_table(results: Results, lang: Lang) -> TableData:
+def a_dyn_table(
+    results: Results, lang: Lang, label: Callable[[CaseResult], str] | None = None
+) -> TableData:
+    """a_dyn [g] of every case and record, the wall as it is first, then by rank
+    (``label(case)`` names a case; default :func:`case_label`)."""
+    name_of = label or (lambda c: case_label(c, lang))
     names = [r.name for r in results.records]
     rows = []
     for c in _cases(results):
@@ -79,7 +84,7 @@ def a_dyn_table(results: Results, lang: Lang) -> TableData:
                 cells.append("—")
             else:
                 cells.append(lang.t("annex.nc") if r.a_dyn is None else lang.num(r.a_dyn, 3))
-        rows.append([case_label(c, lang), *cells])
+        rows.append([name_of(c), *cells])
     return TableData([lang.t("annex.col.option"), *names], rows)
 
 

@@ -134,10 +134,11 @@ def options(results: Results) -> list[Block]:
     )
     out.append(cond_break(50 * mm))
     out.append(h2("5.3  Design mode: the smallest ratio that passes every deciding check"))
-    if results.design:
+    design = adt.design_table(results, EN, notes=True)
+    if design is not None:
         out.append(
             grid(
-                tb.design_table(results),
+                design,
                 [16 * mm, 18 * mm, 20 * mm, 20 * mm, 18 * mm, 18 * mm, 64 * mm],
                 wrap=(6,),
                 numeric_from=2,
@@ -147,7 +148,7 @@ def options(results: Results) -> list[Block]:
         out.append(para("Design mode was not run for this project."))
     out.append(cond_break(80 * mm))
     out.append(h2("5.4  a_dyn [g] of every option and record"))
-    for mat in column_blocks(tb.a_dyn_matrix(results)):
+    for mat in column_blocks(body_annex.a_dyn_table(results, EN, lambda c: c.name)):
         n = len(mat.header) - 1
         other = (174 - 34) / max(n, 1)
         out.append(grid(mat, [34 * mm] + [other * mm] * n, wrap=(0,), small=True))

@@ -13,8 +13,6 @@ Number formats, used everywhere in the report:
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-
 from frp_assess.report.formats import (  # re-exported: tables.X for the sections
     DASH as DASH,
 )
@@ -122,7 +120,7 @@ from frp_assess.report.verdict_words import (
     cell,
     governing,
 )
-from frp_assess.results.model import AssessmentResult, CaseResult, HistoryRun
+from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.text_safety import Markup
 
 Results = AssessmentResult
@@ -311,88 +309,4 @@ def comparison_table(results: Results) -> TableData:
             "satisfied" if k.passed else "NOT satisfied",
         ],
     ]
-    return TableData(header, rows)
-
-
-def design_table(results: Results) -> TableData:
-    cur = results.costs.currency
-    header = [
-        "material",
-        "position",
-        "smallest ρ [‰]",
-        "capacity / demand",
-        "FRP wall [kg]",
-        f"cost [{cur}]",
-        "note",
-    ]
-    rows = [
-        [
-            d.material,
-            d.position,
-            "none in range" if d.ratio is None else fmt_permille(d.ratio),
-            fmt_ratio(d.capacity_demand),
-            fmt_mass(d.frp_mass),
-            fmt_cost(d.frp_cost),
-            d.message or "",
-        ]
-        for d in results.design or []
-    ]
-    return TableData(header, rows)
-
-
-def a_dyn_matrix(results: Results) -> TableData:
-    """a_dyn [g] of every case and record, unreinforced wall first then by rank."""
-    names = [r.name for r in results.records]
-    header = ["option"] + names
-    cases: Sequence[CaseResult] = [results.urm] + ranked_options(results)
-    rows = []
-    for c in cases:
-        by_rec = {r.record: r for r in c.records}
-        cells = []
-        for n in names:
-            r = by_rec.get(n)
-            if r is None:
-                cells.append(DASH)
-            else:
-                cells.append("n.c." if r.a_dyn is None else fmt_acc(r.a_dyn))
-        rows.append([c.name, *cells])
-    return TableData(header, rows)
-
-
-def _fate(run: HistoryRun) -> str:
-    """A time history's fate and when it was decided."""
-    if run.decided_time is None:
-        return run.fate
-    return f"{run.fate} ({run.decided_time:.2f} s)"
-
-
-def governing_runs_table(results: Results) -> TableData:
-    header = [
-        "run",
-        "multiplier C",
-        "a = C·PGA [g]",
-        "fate (decided at)",
-        "peak θ/α [–]",
-        "peak ε [‰]",
-    ]
-    gov = results.governing
-    if gov is None:
-        return TableData(header, [])
-    pga = None
-    for r in results.records:
-        if r.name == gov.record:
-            pga = r.pga
-    rows = []
-    for run in gov.runs:
-        rows.append(
-            [
-                run.label,
-                fmt_mult(run.multiplier),
-                DASH if pga is None else fmt_acc(run.multiplier * pga),
-                _fate(run),
-                f"{run.peak_rotation_ratio:.2f}",
-                f"{1e3 * run.peak_strain:.2f}"
-                + (f", broke at {run.ruptures[0].time:.2f} s" if run.ruptures else ""),
-            ]
-        )
     return TableData(header, rows)
