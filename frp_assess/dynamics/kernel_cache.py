@@ -23,6 +23,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from frp_assess import libm
 from frp_assess.dynamics.ida import IdaSettings, ida
 from frp_assess.dynamics.ida_search import search
 from frp_assess.dynamics.kernel.fate import tipping_angle
@@ -116,4 +117,4 @@ def warm_up_in_parallel() -> None:
 def _tiny_record() -> tuple[float, NDArray[np.float64]]:
     """(dt [s], acc [m/s²]): 2 s of a 2 Hz sine of 0.41 g, enough to rock and tip the wall."""
     dt = 0.01
-    return dt, 4.0 * np.sin(2.0 * np.pi * 2.0 * np.arange(200) * dt)
+    return dt, 4.0 * libm.sin(2.0 * np.pi * 2.0 * np.arange(200) * dt)
