@@ -1,10 +1,10 @@
 """The build's one step beyond pyproject.toml: the wheel carries the compiled kernel.
 
 After the package's files are copied into the build directory, the kernel is compiled there
-once (:func:`frp_assess.dynamics.kernel_cache.warm_up`, in a subprocess on the build's own
+once (:func:`frp_assess.dynamics.kernel_cache.warm_up_in_parallel`, in a subprocess on the build's
 numba), so numba's cache files (``__pycache__/*.nbi|*.nbc`` next to the sources) are
 installed with the package and the first ``frp-assess run`` loads the kernel instead of
-compiling it for ~35 s (docs/compilation.md).  numba's cache is valid where the numba
+compiling it (15-23 CPU-s, docs/compilation.md).  numba's cache is valid where the numba
 version, the source's content, the Python bytecode and the processor are the ones it was
 compiled with: a wheel built and installed on the same machine (``pip install .``).
 Anywhere else numba compiles on the first run, as it would without this step.
@@ -41,7 +41,7 @@ def compile_kernel(build_lib: Path) -> None:
     env.pop("NUMBA_DISABLE_JIT", None)
     env["PYTHONDONTWRITEBYTECODE"] = "1"  # no .pyc in the wheel: pip writes its own
     env["PYTHONPATH"] = os.pathsep.join(p for p in (str(build_lib), env.get("PYTHONPATH")) if p)
-    print("frp-assess: compiling the numerical kernel into the wheel (about 30 s)", flush=True)
+    print("frp-assess: compiling the numerical kernel into the wheel (about 20 CPU-s)", flush=True)
     done = subprocess.run([sys.executable, "-c", WARM_UP], env=env, cwd=build_lib, check=False)
     if done.returncode != 0:
         drop_kernel_cache(build_lib)

@@ -4,7 +4,7 @@ Every ``@njit(cache=True)`` function of the package (the rocking kernel, the IDA
 response spectra, the floor filter) is compiled by numba the first time a process calls it
 with a new argument type, and stored next to its source (``__pycache__/*.nbi|*.nbc``, or
 under ``NUMBA_CACHE_DIR``); a later process loads it in milliseconds.  A first run without
-that cache spends ~35 s compiling (docs/compilation.md).  :func:`warm_up` calls the few
+that cache spends 15-23 CPU-s compiling (docs/compilation.md).  :func:`warm_up` calls the few
 entry points a run calls from Python, once each, with the argument types a run gives them,
 so that everything a run needs is compiled and cached.  The wheel's build runs it
 (``setup.py``: :func:`warm_up_in_parallel`), so a run after ``pip install .`` finds the
@@ -33,10 +33,10 @@ from frp_assess.dynamics.wall import Wall
 from frp_assess.motions.floor import _relative_acceleration, floor_acceleration
 from frp_assess.motions.response import _psa, response_spectrum
 
-#: CPU time a cold cache costs a run of the bundled example, in round seconds (the compile
-#: of every entry point below; docs/compilation.md: 19-21 CPU-s measured, 35-45 s of wall
-#: time on the busy 2-core machine)
-COMPILE_SECONDS = 30
+#: What a cold cache costs a run of the bundled example, in round seconds of one core: 15-23
+#: CPU-s measured (docs/compilation.md); the wall time grows with the machine's load (35 s at
+#: load 3, 64-80 s at load 12-14 on the shared 2-core machine)
+COMPILE_SECONDS = 20
 #: The line a run prints before it compiles (CLI, and the TUI's run log).
 COLD_NOTICE = (
     f"compiling the numerical kernel once, about {COMPILE_SECONDS} s "
