@@ -206,12 +206,15 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
     )
 
     from frp_assess.app.assessment import prepare_records, run_assessment
+    from frp_assess.app.kernel import compile_notice
     from frp_assess.app.project import load_project
 
     path = Path(args.file)
     files = referenced_paths(load_project(path).project)
     digest = inputs_digest(path, files, rtol=args.rtol, verify=args.verify)
     console = make_console()
+    if (notice := compile_notice()) is not None:  # a cold numba cache: say why it waits
+        console.print(notice)
     with console.status("generating/reading the records and checking them against the spectrum"):
         seismic = prepare_records(inputs)
     for line in seismic.warnings:
