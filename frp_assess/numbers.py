@@ -8,29 +8,9 @@ is "0.997", never "1.00 … meets: no".
 
 from __future__ import annotations
 
-import math
-
 from frp_assess.results.checks import CaseChecks
 from frp_assess.results.model import AssessmentResult, CaseResult
-
-#: most decimals :func:`fmt_against` shows before giving up on separating value and threshold
-MAX_DECIMALS = 6
-
-
-def fmt_against(value: float, threshold: float, meets: bool | None, decimals: int = 2) -> str:
-    """``value`` with ``decimals`` decimals, or more when that rounding would contradict the
-    verdict ``meets`` (``value ≥ threshold``): the shown number then reads on the verdict's
-    side of ``threshold``.  ``meets`` None (no verdict) keeps ``decimals``."""
-    if not math.isfinite(value):
-        return f"{value}"
-    text = f"{value:.{decimals}f}"
-    if meets is None:
-        return text
-    for d in range(decimals, MAX_DECIMALS + 1):
-        text = f"{value:.{d}f}"
-        if (float(text) >= threshold) == bool(meets):
-            return text
-    return text
+from frp_assess.results.rounding import fmt_against as fmt_against  # re-export
 
 
 def fmt_capacity(case: CaseResult, target: float) -> str:
@@ -50,6 +30,22 @@ def fmt_margin(margin: float | None, lower_bound: bool = False) -> str:
         return "unbounded"
     text = fmt_zeta(margin)
     return f"≥ {text}" if lower_bound and not text.startswith(">") else text
+
+
+#: the governing margin shown for a time-history check that a record fails by toppling the
+#: wall (margin 0)
+FALLS = "falls"
+
+
+def margin_text(case: CaseResult) -> str:
+    """The governing check's margin of a case for a ranking column (≥ 1 passes):
+    :func:`fmt_margin`, :data:`FALLS` for a time-history check that a record fails by
+    toppling the wall, "—" without a decision (an older file)."""
+    if case.governing_check is None:
+        return "—"
+    if case.governing_margin == 0.0 and case.governing_check.startswith("time history"):
+        return FALLS
+    return fmt_margin(case.governing_margin, case.governing_lower_bound)
 
 
 def verdict_text(case: CaseResult) -> str:
@@ -256,7 +252,10 @@ def checks_summary(results: AssessmentResult, labelled: bool = False) -> list[tu
     out = [(kc.cases[0].case, checks_line(kc.cases[0], labelled))]
     best = next((c for c in results.cases if c.rank == 1), None)
     if best is not None and best.name in by_name:
-        if results.recommended == best.name and results.input_code_compliant:
+        if results.recommended == best.name and not results.retrofit_required:
+            # the wall passes unreinforced: the decision recommends no retrofit
+            label = f"{best.name} (cheapest passing option; no retrofit needed)"
+        elif results.recommended == best.name and results.input_code_compliant:
             label = f"{best.name} (recommended)"
         elif results.recommended is None and results.input_code_compliant:
             label = f"{best.name} (closest, not recommended)"

@@ -25,8 +25,6 @@ os.environ.setdefault("TEXTUAL_ANIMATIONS", "none")
 
 import contextlib  # noqa: E402
 import io  # noqa: E402
-import subprocess  # noqa: E402
-import sys  # noqa: E402
 import tempfile  # noqa: E402
 from pathlib import Path  # noqa: E402
 
@@ -114,54 +112,21 @@ def numba_cache_is_warm(package: Path = PACKAGE) -> bool:
 
 
 def warm_numba_cache() -> None:
-    """Compile every cached kernel once, on both cores: the motions' kernels (response
-    spectra, the floor filter) in a second process while this one compiles the rocking
-    kernel (the IDA search and the driver with its history), then run the golden gable
-    (tests/golden/projects/building-crushing.yaml) through the CLI, quietly, for whatever
-    else it calls; by then it all comes from the cache.  The two processes compile disjoint
-    modules (numba writes one index file per function), so neither overwrites the other's.
+    """Compile every cached kernel once, on both cores
+    (:func:`frp_assess.dynamics.kernel_cache.warm_up_in_parallel`, what the wheel's build
+    runs: the motions' kernels in a second process while this one compiles the rocking
+    kernel), then run the golden gable (tests/golden/projects/building-crushing.yaml) through
+    the CLI, quietly, for whatever else it calls; by then it all comes from the cache.
     Measured cold on this machine: 26–34 s wall (4 runs), against 40–47 s (3 runs) for the
     gable alone on one core.  (Compiling the driver with its history in the second process
     too was tried: both then compiled the driver's helpers, 31 s and 54 CPU-s.)"""
+    from frp_assess.dynamics.kernel_cache import warm_up_in_parallel
     from tests.golden.golden import run_project
 
-    helper = subprocess.Popen(
-        [sys.executable, "-c", "from tests.conftest import warm_motion_kernels as w; w()"],
-        cwd=PACKAGE.parent,
-        stdout=subprocess.DEVNULL,
-        stderr=subprocess.PIPE,
-    )
-    try:
-        warm_rocking_kernels()
-    finally:
-        _, err = helper.communicate()
-    if helper.returncode != 0:
-        raise RuntimeError(f"warming the motions' kernels failed:\n{err.decode(errors='replace')}")
+    warm_up_in_parallel()
     with (
         tempfile.TemporaryDirectory(prefix="frp-numba-warm-") as tmp,
         contextlib.redirect_stdout(io.StringIO()),
         contextlib.redirect_stderr(io.StringIO()),
     ):
         run_project("building-crushing", Path(tmp) / "out", jobs=1)
-
-
-def warm_rocking_kernels() -> None:
-    """The IDA search and the driver with its history, compiled (frp_assess/dynamics)."""
-    from frp_assess.dynamics import ModelOptions, Rebars, RockingModel, Wall, ida
-
-    acc = synthetic_record(1)
-    bars = Rebars(150e9, 0.013, "external", 1.0, 0.5)
-    model = RockingModel(Wall(0.3, 3.0, 18e3, 2e6), "one-sided", bars, ModelOptions())
-    ida(model, acc, 0.01)
-    model.run(acc, 0.01, 2.0, history=True)
-
-
-def warm_motion_kernels() -> None:
-    """The response spectra and the floor filter, compiled (frp_assess/motions): one version
-    each, since every record reaches them read-only (``motions.record.kernel_record``)."""
-    from frp_assess.motions.floor import floor_acceleration
-    from frp_assess.motions.response import response_spectrum
-
-    acc = synthetic_record(2)
-    response_spectrum(acc, 0.01, np.geomspace(0.02, 4.0, 30))
-    floor_acceleration(acc, 0.01, height_building=9.0, storeys=3, wall_base=6.0, period=0.3)

@@ -10,8 +10,9 @@ cancellation are plain callables and :class:`threading.Event`, never UI objects:
 - :mod:`~frp_assess.app.study`: load, check and run a parametric study;
 - :mod:`~frp_assess.app.expert`: the expert commands `simulate` and `ida` (one wall);
 - :mod:`~frp_assess.app.records`: generate and check sets of records;
-- :mod:`~frp_assess.app.preview`: the derived quantities the TUI previews while typing.
-- :mod:`~frp_assess.app.site`: the seismic parameters of a site from its coordinates.
+- :mod:`~frp_assess.app.preview`: the derived quantities the TUI previews while typing;
+- :mod:`~frp_assess.app.site`: the seismic parameters of a site from its coordinates;
+- :mod:`~frp_assess.app.kernel`: whether a run will first compile the numerical kernel.
 
 The package imports its modules lazily (import ``frp_assess.app.<module>``), so that the
 command line's parser does not load the numerics it does not need.

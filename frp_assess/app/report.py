@@ -116,7 +116,7 @@ def build_pdf(results: AssessmentResult, path: Path) -> bool:
     report.pdf, and the rest of the set is written (issue 25).
     """
     try:
-        from frp_assess.report.document import build_report
+        from frp_assess.report.pdf_document import build_report
     except ImportError:
         return False
     try:
@@ -202,11 +202,10 @@ def rebuild_report(results_dir: Path, out: Path | None = None, *, docx: bool = F
     from frp_assess.report.document import (
         CONTRACT_ERRORS,
         build_docx,
-        build_report,
-        build_story,
         contract_error,
         load_results,
     )
+    from frp_assess.report.pdf_document import build_report, build_story
 
     results_dir = Path(results_dir)
     default = results_dir / ("report.docx" if docx else "report.pdf")

@@ -12,8 +12,10 @@ and the outputs go, progress, the date and the digest of the inputs, writing the
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from dataclasses import replace
 
 from frp_assess.assess.floor_input import floor_record, floor_spectra
+from frp_assess.assess.independent_checks import independent_checks
 from frp_assess.assess.inputs import AssessmentInputs, Material
 from frp_assess.assess.kinematic_checks import (
     KinematicCheck,
@@ -149,7 +151,7 @@ def assess(
     inputs, cases, recommended = decided.inputs, decided.cases, decided.recommended
     all_results = decided.results
     governing = governing_histories(inputs, cases, records, all_results, recommended)
-    return build_results(
+    results = build_results(
         inputs=inputs,
         seismic=seismic,
         cases=cases,
@@ -168,3 +170,15 @@ def assess(
         closest=decided.closest,
         robustness=decided.robustness,
     )
+    # NTC 2018 §10.2: the checks of the run by routes it did not take (assess/independent_checks)
+    checks = independent_checks(
+        inputs.case_models(),
+        inputs.case_names(),
+        runner.motions,
+        results.cases,
+        results.recommended or results.closest,
+        scale=fc,
+        ida_tolerance=inputs.ida.tolerance,
+        numerical=results.numerical_check,
+    )
+    return replace(results, independent_checks=checks)

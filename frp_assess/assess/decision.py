@@ -26,9 +26,12 @@ The *governing* check is the one with the smallest margin.  The linear and nonli
 kinematic checks are supporting checks: shown, never deciding.
 
 The recommendation is the cheapest passing option (then the lightest); when none passes,
-there is none, and the *closest* is the option with the largest governing margin.  Ranking:
-the passing options first, cheapest first; then the others by governing margin, highest first
-(a lower bound enters at its bound, ahead of an equal exact value).  An option the pivot check
+there is none, and the *closest* is the option closest to passing: the largest governing
+margin; equal governing margins (every time-history margin is 0 once a record makes the wall
+fall) are told apart by the IDA's margin, the largest first, so that a tie never names the
+cheapest, weakest option.  Ranking: the passing options first, cheapest first; then the
+others by governing margin, highest first (a lower bound enters at its bound, ahead of an
+equal exact value), then by the IDA's margin, highest first.  An option the pivot check
 drops (no rocking mechanism) never passes and gets no rank.
 
 Pure functions of plain numbers (:class:`Evidence`): no I/O, no model runs.
@@ -57,14 +60,16 @@ DECISION_RULE = (
     "wall never exceeded, mean peak ≤ d_SLV, ≤ d_SLC). The governing "
     "check is the one with the smallest margin (capacity/demand, ≥ 1 passes). The recommendation: "
     "the cheapest passing option, design-mode answers included; when none passes, none is "
-    "recommended and the closest (largest governing margin) is named. The linear and "
+    "recommended and the closest to passing (largest governing margin, equal ones by the IDA's "
+    "margin) is named. The linear and "
     "nonlinear static kinematic checks are supporting checks, not deciding."
 )
 
 RANKING_RULE = (
     "Options passing every deciding check first, cheapest first (then lightest); then the "
     "others by governing margin, highest first (a lower bound at its bound, ahead of an equal "
-    "exact value). Every option is ranked: none is dropped for the masonry at its base."
+    "exact value; equal margins by the IDA's margin, highest first). Every option is ranked: "
+    "none is dropped for the masonry at its base."
 )
 
 
@@ -183,10 +188,17 @@ def verdict(ev: Evidence) -> Verdict:
     )
 
 
+def ida_margin(v: Verdict) -> float:
+    """The IDA check's margin of a verdict (0 when it has none): what tells apart options
+    whose governing margins tie (a record made the wall fall: every time-history margin 0)."""
+    return next((_margin_key(c.margin) for c in v.checks if c.name == IDA_CHECK), 0.0)
+
+
 def rank(evidence: Sequence[Evidence], verdicts: Sequence[Verdict]) -> list[int]:
     """Indices of the options (not the unreinforced wall, not the dropped) in ranked order:
     passing first by (cost, mass), then the others by governing margin, highest first (a
-    lower bound ahead of an equal exact value), then cost."""
+    lower bound ahead of an equal exact value), then by the IDA's margin, highest first
+    (closest to passing when governing margins tie), then cost."""
     idx = [i for i, e in enumerate(evidence) if not e.unreinforced and not e.dropped]
     passing = [i for i in idx if verdicts[i].passes]
     others = [i for i in idx if not verdicts[i].passes]
@@ -195,6 +207,7 @@ def rank(evidence: Sequence[Evidence], verdicts: Sequence[Verdict]) -> list[int]
         key=lambda i: (
             -_margin_key(verdicts[i].governing_margin),
             0 if verdicts[i].governing_lower_bound else 1,
+            -ida_margin(verdicts[i]),
             evidence[i].cost,
             i,
         )

@@ -19,6 +19,7 @@ from frp_assess.app.rerun import (
     write_sidecar,
 )
 from frp_assess.cli.output import Column, make_console, print_table, user
+from frp_assess.cli.ranking import print_ranking
 from frp_assess.errors import Cancelled, InputError
 from frp_assess.numbers import (
     checks_summary,
@@ -29,7 +30,7 @@ from frp_assess.numbers import (
     recommendation_text,
     verdict_text,
 )
-from frp_assess.results.model import AssessmentResult, CaseResult
+from frp_assess.results.model import AssessmentResult
 from frp_assess.text_safety import plain
 
 if TYPE_CHECKING:  # the numerics are imported only when a run computes (not when unchanged)
@@ -108,7 +109,7 @@ COMPLIANCE_COLUMNS = (
     Column("requirement", text=True),
     Column("found", text=True),
     Column("margin", text=True),
-    Column("result", text=True),
+    Column("result", text=True, fold=False),
 )
 
 
@@ -121,78 +122,15 @@ def print_compliance(con: Console, rep: ComplianceReport) -> None:
     )
 
 
-def ranking_columns(results: AssessmentResult) -> list[Column]:
-    """Columns of the ranking table, every header with its unit."""
-    cur = results.costs.currency
-    statistic = "mean" if results.design_is_mean else "design"
-    return [
-        Column("rank"),
-        Column("option", text=True),
-        Column("FRP [kg]"),
-        Column(f"cost [{cur}]"),
-        Column(f"{statistic} a_dyn [g]"),
-        Column("mean q [–]"),
-        Column("improvement [–]"),
-        Column("capacity / demand [–]"),
-        Column("verdict", text=True),
-    ]
-
-
-def ranking_rows(results: AssessmentResult) -> list[list[str]]:
-    """One row per case (plain text): the unreinforced wall, the options by rank, then those
-    the pivot check dropped (rank "dropped", the reason below the table: :func:`dropped_lines`).
-    capacity/demand is the IDA's ("≥" before a lower bound); the verdict is the decision's:
-    "passes" every deciding check, or "fails: <governing check> <margin>"."""
-    target = float(results.model.target)
-    ordered = [results.urm, *results.ranked_options]
-    return [
-        [
-            ("dropped" if is_dropped(c) else "—") if c.rank is None else str(c.rank),
-            c.name,
-            f"{c.frp_mass:.1f}",
-            f"{c.frp_cost:.0f}",
-            f"{c.design_a_dyn:.3f}",
-            f"{c.mean_q:.2f}",
-            f"{c.improvement:.2f}",
-            fmt_capacity(c, target),
-            verdict_text(c),
-        ]
-        for c in ordered
-    ]
-
-
-def is_dropped(case: CaseResult) -> bool:
-    """The option fails the pivot check and has no rank (results.json ``pivot.dropped``)."""
-    return case.pivot is not None and case.pivot.dropped and not case.is_unreinforced
-
-
-def dropped_lines(results: AssessmentResult) -> list[str]:
-    """One line per option the pivot check dropped: its name, the check, "dropped: <why>"."""
-    return [c.pivot.reason for c in results.options if is_dropped(c) and c.pivot is not None]
-
-
 def built_lines(results: AssessmentResult) -> list[str]:
-    """The recommended option's bars as built and their anchorage (none without them)."""
+    """The recommended option's bars as built and their anchorage (none without them); the
+    cheapest passing option's "if installed" when the wall needs no retrofit."""
     rec = results.case(results.recommended)
     if rec is None or rec.as_built is None:
         return []
     b = rec.as_built
-    return [f"  built as {b.note}; {b.anchorage.note}"]
-
-
-def print_ranking(con: Console, results: AssessmentResult) -> None:
-    print_table(
-        con,
-        f"Retrofit options (demand a_g·S = {results.demand.pga:.3f} g, "
-        f"target capacity/demand ≥ {results.model.target:g})",
-        ranking_columns(results),
-        ranking_rows(results),
-    )
-    for line in dropped_lines(results):
-        con.print(user(line))
-    for c in results.cases:
-        if c.remark:
-            con.print(f"note, {user(c.name)}: {user(c.remark)}")
+    head = "  built as" if results.retrofit_required else f"  {rec.name}, if installed: built as"
+    return [f"{head} {b.note}; {b.anchorage.note}"]
 
 
 def print_floor_and_checks(console: Console, results: AssessmentResult) -> None:
@@ -268,12 +206,15 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
     )
 
     from frp_assess.app.assessment import prepare_records, run_assessment
+    from frp_assess.app.kernel import compile_notice
     from frp_assess.app.project import load_project
 
     path = Path(args.file)
     files = referenced_paths(load_project(path).project)
     digest = inputs_digest(path, files, rtol=args.rtol, verify=args.verify)
     console = make_console()
+    if (notice := compile_notice()) is not None:  # a cold numba cache: say why it waits
+        console.print(notice)
     with console.status("generating/reading the records and checking them against the spectrum"):
         seismic = prepare_records(inputs)
     for line in seismic.warnings:
@@ -336,13 +277,12 @@ def print_summary(console: Console, results: AssessmentResult) -> None:
     w = results.wall
     urm = results.urm
     target = float(results.model.target)
-    fc = f"FC = {urm.fc:g}; " if urm.fc != 1.0 else ""
     console.print(
         f"wall B = {w.thickness:g} m, H = {w.height:g} m, α = {w.alpha_deg:.2f}°, "
         f"{activation_text(results)}, {user(w.mechanism)}; unreinforced: design a_dyn = "
-        f"{urm.design_a_dyn:.3f} g, capacity/demand = {fmt_capacity(urm, target)} "
-        f"({fc}{'meets' if urm.meets_target else 'does NOT meet'} the target; "
-        f"verdict: {verdict_text(urm)})"
+        f"{urm.design_a_dyn:.3f} g, capacity/demand = {fmt_capacity(urm, target)} at "
+        f"FC·a_g·S = {urm.fc * results.demand.pga:.3f} g (FC = {urm.fc:g}); "
+        f"verdict: {verdict_text(urm)}"
     )
     print_floor_and_checks(console, results)
     cc = results.code_check

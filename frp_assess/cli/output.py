@@ -53,6 +53,9 @@ class Column:
 
     header: str
     text: bool = False  #: left-aligned, may wrap (names); otherwise numbers, never cut
+    #: a text column that may wrap between words (a word longer than the column is folded);
+    #: False: its cells are never wrapped (short words: a verdict, a check's short name)
+    fold: bool = True
 
 
 #: width the table layout adds per column (a space separator and one space of padding; no outer
@@ -63,6 +66,9 @@ _PER_TABLE = 0
 _HEADER_WORD = 12
 #: narrowest a text column (names) may be made before the table is stacked [characters]
 _MIN_TEXT = 12
+#: a text column is at least as wide as its longest word up to this, so that words are wrapped
+#: whole ("pseudo-stationary", not "pseudo-stationar / y") [characters]
+_WHOLE_WORD = 20
 
 
 def _longest_word(text: str) -> int:
@@ -74,8 +80,9 @@ def _min_widths(columns: Sequence[Column], rows: Sequence[Sequence[str]]) -> lis
     out = []
     for j, col in enumerate(columns):
         cells = [r[j] for r in rows]
-        if col.text:
+        if col.text and col.fold:
             need = max(min(_MIN_TEXT, max((len(c) for c in cells), default=0)), 1)
+            need = max(need, min(_WHOLE_WORD, max((_longest_word(c) for c in cells), default=0)))
         else:
             need = max((len(c) for c in cells), default=1)
         out.append(max(need, min(_longest_word(col.header), _HEADER_WORD)))
@@ -94,7 +101,7 @@ def column_widths(
     columns share the rest in proportion to their longest cell (never below their minimum)."""
     mins = _min_widths(columns, rows)
     widths = list(mins)
-    text = [j for j, c in enumerate(columns) if c.text]
+    text = [j for j, c in enumerate(columns) if c.text and c.fold]
     natural = {
         j: max(max((len(r[j]) for r in rows), default=1), _longest_word(columns[j].header))
         for j in text

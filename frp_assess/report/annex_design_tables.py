@@ -6,51 +6,22 @@ copied: the words are rebuilt from the values."""
 
 from __future__ import annotations
 
-import re
-
 from frp_assess.report.body_annex import case_label
 from frp_assess.report.body_front import position_words
 from frp_assess.report.formats import TableData
 from frp_assess.report.lang import Lang, short
+from frp_assess.report.verdict_text import convention_cells, variant_words
 from frp_assess.results.as_built import AsBuilt
 from frp_assess.results.model import AssessmentResult
 from frp_assess.text_safety import Markup
 
 Results = AssessmentResult
 
-_CONVENTION = re.compile(r"^(restitution|collapse|rupture): ([a-z-]+)$")
-_STRAIN = re.compile(r"^strain factor c = ([0-9.]+)$")
-_MODULUS = re.compile(r"^E ([+-][0-9.]+)% \(([0-9.]+) GPa\)$")
-_HUNT_STEP = re.compile(r"^IDA step ratio s = ([0-9.]+)$")
 
-
-def variant_words(variant: str, lang: Lang) -> str:
-    """A model convention of the sensitivity table in the report's language: the run's label
-    (``"as assessed"``, ``"collapse: end-of-record"``, ``"E -10% (41.4 GPa)"`` ...) read back
-    into its parts; a label of another form is shown as written, numbers re-formatted."""
-    if variant == "as assessed":
-        return lang.t("sens.as_assessed")
-    m = _CONVENTION.match(variant)
-    if m and lang.has(f"sens.value.{m.group(2)}"):
-        return lang.t(f"sens.{m.group(1)}", value=lang.t(f"sens.value.{m.group(2)}"))
-    m = _STRAIN.match(variant)
-    if m:
-        return lang.t("sens.strain", c=lang.gnum(float(m.group(1))))
-    m = _MODULUS.match(variant)
-    if m:
-        return lang.t(
-            "sens.modulus", change=lang.numbers_in(m.group(1)), e=lang.gnum(float(m.group(2)))
-        )
-    m = _HUNT_STEP.match(variant)
-    if m:
-        return lang.t("sens.hunt_step", s=lang.gnum(float(m.group(1))))
-    return lang.numbers_in(variant)
-
-
-def design_table(results: Results, lang: Lang) -> TableData | None:
+def design_table(results: Results, lang: Lang, *, notes: bool = False) -> TableData | None:
     """Design mode, one row per (material, position): the smallest ratio ρ [‰] that passes
-    every deciding check, its capacity/demand, FRP mass [kg] and cost; None when the design
-    mode was not run."""
+    every deciding check, its capacity/demand, FRP mass [kg] and cost, and with ``notes`` the
+    run's one-line note (English); None when the design mode was not run."""
     if not results.design:
         return None
     n = lang.num
@@ -61,6 +32,7 @@ def design_table(results: Results, lang: Lang) -> TableData | None:
         lang.t("col.cd"),
         lang.t("col.mass"),
         lang.t("col.cost", currency=short(results.costs.currency)),
+        *([lang.t("annex.col.note")] if notes else []),
     ]
     rows = [
         [
@@ -70,6 +42,7 @@ def design_table(results: Results, lang: Lang) -> TableData | None:
             n(d.capacity_demand, 2),
             n(d.frp_mass, 1),
             n(d.frp_cost, 0, grouping=True),
+            *([d.message or ""] if notes else []),
         ]
         for d in results.design
     ]
@@ -78,7 +51,9 @@ def design_table(results: Results, lang: Lang) -> TableData | None:
 
 def sensitivity_table(results: Results, lang: Lang) -> TableData | None:
     """The assessed case under each model convention: design a_dyn [g], its change from the
-    case as assessed [%], capacity/demand [-]; None when not computed."""
+    case as assessed [%], the IDA's capacity/demand [-], and the verdict of the deciding
+    checks with the governing margin (so that a row whose IDA passes but whose verdict flips
+    does not read as a pass); None when not computed."""
     sens = results.sensitivity
     if sens is None or not sens.rows:
         return None
@@ -89,6 +64,8 @@ def sensitivity_table(results: Results, lang: Lang) -> TableData | None:
         Markup("a<sub>dyn,d</sub> [g]"),
         lang.t("annex.col.change"),
         lang.t("col.cd"),
+        lang.t("sens.col.verdict"),
+        lang.t("sens.col.governing"),
     ]
     rows = []
     for r in sens.rows:
@@ -99,6 +76,7 @@ def sensitivity_table(results: Results, lang: Lang) -> TableData | None:
             ge + n(r.design_a_dyn, 3),
             ("+" if change >= 0 else "") + n(change, 1),
             ge + n(r.capacity_demand, 2),
+            *convention_cells(results, r.variant, lang),
         ])  # fmt: skip
     return TableData(header, rows)
 

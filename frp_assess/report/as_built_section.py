@@ -13,15 +13,22 @@ in mm, ratios in ‰ as :func:`~frp_assess.report.tables.fmt_permille`.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-
 from reportlab.lib.units import mm
 
+from frp_assess.report import pivot_section
 from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import cond_break, grid, h1, h2, markup, page_break, para
-from frp_assess.report.tables import DASH, TableData, fmt_cost, fmt_mass, fmt_permille, head
+from frp_assess.report.tables import (
+    DASH,
+    EN,
+    TableData,
+    fmt_cost,
+    fmt_mass,
+    fmt_permille,
+    head,
+)
 from frp_assess.results.as_built import AsBuilt, BarStrain
-from frp_assess.results.model import AssessmentResult, CaseResult
+from frp_assess.results.model import AssessmentResult
 
 Results = AssessmentResult
 
@@ -52,7 +59,6 @@ ANCHORAGE_HEADER = [
     "pull-out cone [kN]",
     "cone",
 ]
-PIVOT_HEADER = ["case", "N [kN/m]", "x [mm]", "x/B [-]", "pivot shift [mm]", "pivot", "verdict"]
 
 
 def layout_text(b: AsBuilt) -> str:
@@ -154,56 +160,10 @@ def anchorage_table(results: Results) -> TableData:
     return TableData(list(ANCHORAGE_HEADER), rows)
 
 
-def pivot_table(cases: Sequence[CaseResult]) -> TableData:
-    """Per case: N = W + T_u, the compressed depth x, x/B, the pivot's shift, the pivot the
-    IDA used and the verdict (kept / dropped)."""
-    rows = []
-    for c in cases:
-        p = c.pivot
-        if p is None:
-            continue
-        rows.append(
-            [
-                c.name,
-                f"{p.force:.0f}",
-                f"{p.depth * 1e3:.0f}",
-                f"{p.depth_ratio:.3f}",
-                f"{p.pivot_shift * 1e3:.0f}",
-                p.model_pivot,
-                "dropped" if p.dropped else "holds",
-            ]
-        )
-    return TableData(list(PIVOT_HEADER), rows)
-
-
 def masonry_text(results: Results) -> str:
-    """f_m and its source, FC, f_d and the pivot rule, one paragraph (plain text)."""
-    m = results.masonry_strength
-    if m is None:
-        return "The masonry strength is not in these results (written before the pivot check)."
-    pivot = next((c.pivot for c in results.cases if c.pivot is not None), None)
-    rule = pivot.rule if pivot is not None else None
-    limit = f"{pivot.limit:.2f}" if pivot is not None else "the limit"
-    rule_text = {
-        "edge": (
-            "pivot: edge — the wall rocks about its compressed edge; an option is dropped "
-            f"when the compressed zone is deeper than x/B = {limit}"
-        ),
-        "crushing": (
-            "pivot: crushing — each case's pivot sits x/2 inside the compressed edge, x of "
-            "its N, held for the whole time history (the lever arms of gravity and bars "
-            "shrink by x/2; conservative below rupture, when the bar force is less than "
-            "T_u); an option is dropped only when there is no mechanism (the bar inside the "
-            "compressed zone, or x ≥ B)"
-        ),
-    }.get(rule or "", f"pivot: {rule}")
-    kind = f"Masonry {m.masonry}" if m.masonry else "Masonry given by the project"
-    return (
-        f"{kind}, knowledge level {m.knowledge_level}: f_m = {m.f_m:.2f} MPa ({m.source}); "
-        f"FC = {m.confidence_factor:.2f}; f_d = f_m/FC = {m.f_d:.2f} MPa; stress block "
-        f"{m.stress_block_factor:.2f}·f_d over a depth x = N/({m.stress_block_factor:.2f}·f_d·1 m),"
-        f" N = W + T_u with the bar at its rupture strain. {rule_text}."
-    )
+    """The masonry strength and the base reaction the model ran (English markup):
+    :func:`frp_assess.report.pivot_section.masonry_text`."""
+    return pivot_section.masonry_text(results, EN)
 
 
 def dropped_reasons(results: Results) -> list[str]:
@@ -275,25 +235,19 @@ def section(results: Results) -> list[Block]:
                 )
             )
     out.append(cond_break(60 * mm))
-    out.append(h2("6.4  The masonry at the pivot"))
-    out.append(para(masonry_text(results)))
+    out.append(h2("6.4  The masonry at the base"))
+    out.append(markup(masonry_text(results)))
     if has_pivot:
         out.append(
             grid(
-                pivot_table(results.cases),
-                [x * mm for x in (44, 20, 18, 18, 24, 20, 20)],
-                wrap=(0,),
+                pivot_section.pivot_table(results, EN),
+                [x * mm for x in (40, 18, 16, 16, 24, 60)],
+                wrap=(0, 5),
                 numeric_from=1,
             )
         )
-        out.append(
-            para(
-                "N: largest compression at the pivot per metre of wall (weight and the acting "
-                "bar at rupture); x: depth of the compressed zone; pivot shift: how far the "
-                "model's pivot sits from the compressed edge (x/2 with pivot: crushing).",
-                "caption",
-            )
-        )
+        out.append(markup(EN.t("pivot.caption"), "caption"))
+        out += [markup(line) for line in pivot_section.weaker_notes(results, EN)]
     reasons = dropped_reasons(results)
     if reasons:
         out.append(
@@ -304,5 +258,10 @@ def section(results: Results) -> list[Block]:
         )
         out += [para(r, "small") for r in reasons]
     elif has_pivot:
-        out.append(para("No option is dropped: every case passes the pivot check."))
+        out.append(
+            para(
+                "No option is dropped for its base: a toe that crushes is a failure mode of "
+                "the IDA."
+            )
+        )
     return out

@@ -9,9 +9,10 @@ from __future__ import annotations
 from reportlab.lib.units import mm
 
 from frp_assess.report import charts
+from frp_assess.report.charts import localize_drawing
 from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import cond_break, esc, figure, grid, h1, h2, keep, key_value, markup
-from frp_assess.report.lang import Lang, localize_drawing
+from frp_assess.report.lang import Lang
 from frp_assess.report.tables import TableData
 from frp_assess.results.model import AssessmentResult
 from frp_assess.text_safety import Markup
@@ -82,12 +83,21 @@ def site_blocks(results: Results, lang: Lang) -> list[Block]:
     ]
 
 
+#: decimals of each spectrum parameter: one rounding per quantity, as in the site's table
+#: (a_g 4, F0 and T_C* 3) and the derived factors (3)
+PARAM_DECIMALS = {"ag": 4, "F0": 3, "Tc_star": 3, "SS": 3, "CC": 3, "ST": 3, "eta": 3}
+
+
 def _param(key: str, value: object, lang: Lang) -> list[str]:
     symbol = PARAM_SYMBOL.get(key, key)
     label = lang.t(symbol) if symbol.startswith("spectrum.") else symbol
     if isinstance(value, float | int) and not isinstance(value, bool):
         unit = {"ag": " g", "Tc_star": " s"}.get(key, "")
-        return [label, lang.gnum(float(value)) + unit]
+        places = PARAM_DECIMALS.get(key)
+        shown = lang.gnum(float(value)) if places is None else lang.num(float(value), places)
+        if places is not None and float(value) == round(float(value)):
+            shown = lang.gnum(float(value))  # S_T = 1, η = 1: no trailing zeros
+        return [label, shown + unit]
     return [label, str(value)]
 
 
@@ -169,7 +179,9 @@ def method(results: Results, lang: Lang) -> list[Block]:
         [lang.t("model.collapse"), lang.t(f"model.collapse.{m.collapse}")
          if lang.has(f"model.collapse.{m.collapse}") else esc(m.collapse)],
         [lang.t("model.strain_factor"), lang.gnum(m.strain_factor)],
-        [lang.t("model.tail"), f"{lang.gnum(m.free_vibration_tail)} s"],
+        [lang.t("model.tail"),
+         lang.t("model.tail.value", tail=lang.gnum(m.free_vibration_tail))
+         if m.collapse == "overturning" else f"{lang.gnum(m.free_vibration_tail)} s"],
         [lang.t("model.tolerance"), f"{m.integration.tolerance:.0e}".replace("e-0", "e-")],
         [lang.t("model.ida"), lang.t("model.ida.value", s=lang.gnum(m.ida.step_ratio),
                                      tol=lang.gnum(m.ida.tolerance),

@@ -6,13 +6,22 @@ catalogue, numbers from the results."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from reportlab.lib.units import mm
 
+from frp_assess.report import history_section, pivot_section
 from frp_assess.report.body_front import position_words
 from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import cond_break, esc, grid, h1, h2, markup
 from frp_assess.report.formats import TableData, column_blocks
 from frp_assess.report.lang import Lang, short
+from frp_assess.report.verdict_text import (
+    cell,
+    collapse_probability,
+    probability_text,
+    robustness_lines,
+)
 from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.text_safety import Markup
 
@@ -45,6 +54,7 @@ def options_table(results: Results, lang: Lang) -> TableData:
         "I [-]",
         lang.t("col.mass"),
         lang.t("col.cost", currency=short(results.costs.currency)),
+        lang.t("verdict.col"),
     ]
     rows = []
     for c in results.ranked_options:
@@ -52,11 +62,17 @@ def options_table(results: Results, lang: Lang) -> TableData:
         rank = str(c.rank) if c.rank is not None else lang.t("annex.dropped")
         rows.append([rank, case_label(c, lang), _bound(n(c.design_a_dyn, 3), lb),
                      _bound(n(c.capacity_demand, 2), lb), _bound(n(c.improvement, 2), lb),
-                     n(c.frp_mass, 1), n(c.frp_cost, 0, grouping=True)])  # fmt: skip
+                     n(c.frp_mass, 1), n(c.frp_cost, 0, grouping=True),
+                     cell(c, lang)])  # fmt: skip
     return TableData(header, rows)
 
 
-def a_dyn_table(results: Results, lang: Lang) -> TableData:
+def a_dyn_table(
+    results: Results, lang: Lang, label: Callable[[CaseResult], str] | None = None
+) -> TableData:
+    """a_dyn [g] of every case and record, the wall as it is first, then by rank
+    (``label(case)`` names a case; default :func:`case_label`)."""
+    name_of = label or (lambda c: case_label(c, lang))
     names = [r.name for r in results.records]
     rows = []
     for c in _cases(results):
@@ -68,24 +84,39 @@ def a_dyn_table(results: Results, lang: Lang) -> TableData:
                 cells.append("—")
             else:
                 cells.append(lang.t("annex.nc") if r.a_dyn is None else lang.num(r.a_dyn, 3))
-        rows.append([case_label(c, lang), *cells])
+        rows.append([name_of(c), *cells])
     return TableData([lang.t("annex.col.option"), *names], rows)
 
 
-def scatter_table(results: Results, lang: Lang) -> TableData:
+def scatter_table(
+    results: Results, lang: Lang, label: Callable[[CaseResult], str] | None = None
+) -> TableData:
+    """Record-to-record scatter of a_dyn and the lognormal fragility of every case (the wall
+    as it is first, then by rank): mean, median, CoV, least favourable (record), fragility
+    median, β and P(collapse) at FC·a_g·S; dashes where no lognormal was fitted.
+    ``label(case)`` names a case (default :func:`case_label`)."""
     n = lang.num
+    name = label or (lambda c: case_label(c, lang))
     header = [
         lang.t("annex.col.option"),
+        Markup(lang.t("annex.col.mean")),
         Markup(lang.t("annex.col.median")),
-        "CoV [-]",
-        lang.t("annex.col.pcollapse"),
+        lang.t("annex.col.cov"),
+        lang.t("annex.col.least"),
+        lang.t("annex.col.frag_median"),
+        "β [-]",
+        Markup(lang.t("annex.col.pcollapse")),
     ]
     rows = []
     for c in _cases(results):
         sc = c.scatter
-        p = None if sc.fragility is None else sc.fragility.p_collapse_at_demand
-        rows.append([case_label(c, lang), n(sc.median_a_dyn, 3), n(sc.cov, 2),
-                     "—" if p is None else f"{n(100 * p, 1)} %"])  # fmt: skip
+        fr = sc.fragility
+        at = collapse_probability(results, c)
+        rows.append([name(c), n(c.mean_a_dyn, 3), n(sc.median_a_dyn, 3), n(sc.cov, 2),
+                     f"{n(c.min_a_dyn, 3)} ({sc.least_favourable_record})",
+                     "—" if fr is None else n(fr.median, 3),
+                     "—" if fr is None else n(fr.beta, 2),
+                     "—" if at is None else probability_text(at[1], lang)])  # fmt: skip
     return TableData(header, rows)
 
 
@@ -169,7 +200,7 @@ def annex(results: Results, lang: Lang) -> list[Block]:
 
     if results.options:
         out += [heading("annex.h.options")]
-        widths = [x * mm for x in (14, 62, 22, 22, 16, 18, 26)]
+        widths = [x * mm for x in (12, 52, 20, 20, 14, 16, 20, 20)]
         table = options_table(results, lang)
         out.append(grid(table, widths, wrap=(1,), numeric_from=2, small=True))
     design = adt.design_table(results, lang)
@@ -185,7 +216,8 @@ def annex(results: Results, lang: Lang) -> list[Block]:
         out.append(grid(block, [48 * mm] + [other * mm] * names, wrap=(0,), small=True))
     out.append(markup(lang.t("annex.nc.note"), "caption"))
     out += [cond_break(60 * mm), heading("annex.h.scatter")]
-    out.append(grid(scatter_table(results, lang), [x * mm for x in (62, 34, 24, 40)], wrap=(0,),
+    widths = [x * mm for x in (40, 18, 18, 14, 30, 18, 12, 24)]
+    out.append(grid(scatter_table(results, lang), widths, wrap=(0, 4), numeric_from=1,
                     small=True))  # fmt: skip
     out.append(markup(lang.t("annex.scatter.note"), "caption"))
     sens = adt.sensitivity_table(results, lang)
@@ -193,8 +225,9 @@ def annex(results: Results, lang: Lang) -> list[Block]:
         label = next((case_label(c, lang) for c in results.cases
                       if c.name == results.sensitivity.case), results.sensitivity.case)  # fmt: skip
         out += [cond_break(60 * mm), heading("annex.h.sensitivity")]
-        out.append(grid(sens, [x * mm for x in (76, 32, 30, 36)], wrap=(0,), numeric_from=1,
-                        small=True))  # fmt: skip
+        out.append(grid(sens, [x * mm for x in (58, 22, 20, 24, 26, 24)], wrap=(0,),
+                        numeric_from=1, small=True))  # fmt: skip
+        out += [markup(line) for line in robustness_lines(results, lang)]
         out.append(markup(lang.t("annex.sensitivity.note", case=esc(label)), "caption"))
     checks = checks_table(results, lang)
     if checks is not None:
@@ -206,11 +239,30 @@ def annex(results: Results, lang: Lang) -> list[Block]:
         states = intensities_text(results, lang)
         if states:
             out.append(markup(states, "caption"))
+    if any(c.pivot is not None for c in results.cases):
+        out += [cond_break(60 * mm), heading("annex.h.pivot")]
+        out.append(markup(pivot_section.masonry_text(results, lang)))
+        out.append(grid(pivot_section.pivot_table(results, lang, lambda c: case_label(c, lang)),
+                        [x * mm for x in (48, 18, 16, 16, 24, 52)], wrap=(0, 5),
+                        numeric_from=1, small=True))  # fmt: skip
+        out.append(markup(lang.t("pivot.caption"), "caption"))
+        out += [markup(line) for line in pivot_section.weaker_notes(
+            results, lang, lambda c: case_label(c, lang))]  # fmt: skip
     bars = bars_table(results, lang)
     if bars is not None:
         out += [cond_break(60 * mm), heading("annex.h.bars")]
         out.append(grid(bars, [x * mm for x in (52, 14, 18, 14, 20, 16, 20, 20)], wrap=(0,),
                         small=True))  # fmt: skip
+    if results.governing is not None and results.governing.runs:
+        out += [cond_break(90 * mm), heading("annex.h.history")]
+        out += history_section.blocks(
+            results,
+            lang,
+            lambda t: grid(
+                t, [x * mm for x in (26, 18, 24, 44, 20, 42)], wrap=(0, 3, 5), small=True
+            ),  # fmt: skip
+            3,
+        )
     anchorage = adt.anchorage_table(results, lang)
     if anchorage is not None:
         out += [cond_break(60 * mm), heading("annex.h.anchorage")]

@@ -6,11 +6,20 @@ from __future__ import annotations
 from reportlab.lib.units import mm
 
 from frp_assess.report import charts
+from frp_assess.report.body_closing import decision_lines
 from frp_assess.report.body_front import option_words, position_words
+from frp_assess.report.charts import localize_drawing
 from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import cond_break, figure, grid, h1, h2, keep, key_value, markup
-from frp_assess.report.lang import Lang, localize_drawing, short
+from frp_assess.report.lang import Lang, short
 from frp_assess.report.tables import TableData
+from frp_assess.report.verdict_text import (
+    cell,
+    passes,
+    rests_on,
+    robustness_lines,
+    verdict_sentence,
+)
 from frp_assess.results.checks import CaseChecks
 from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.text_safety import Markup
@@ -80,14 +89,18 @@ def as_is(results: Results, lang: Lang) -> list[Block]:
         [lang.t("model.target"), lang.gnum(target)],
     ]
     out.append(key_value(rows, sub_values=True))
-    ok = bool(urm.meets_target)
+    ok = passes(urm)
     out.append(
         markup(
             lang.t("as_is.verdict_ok" if ok else "as_is.verdict_bad",
+                   verdict=verdict_sentence(urm, lang),
                    cd=_bound(n(urm.capacity_demand, 2), lb), target=lang.gnum(target)),
             "verdict_ok" if ok else "verdict_bad",
         )
     )  # fmt: skip
+    why = rests_on(results, urm, lang)
+    if why is not None:
+        out.append(markup(why))
     cc = results.code_check
     out.append(h2(lang.t("h.as_is.linear")))
     out.append(
@@ -128,6 +141,7 @@ def _ranking_table(results: Results, lang: Lang, limit: int = 12) -> TableData:
         "I [-]",
         lang.t("col.mass"),
         lang.t("col.cost", currency=short(results.costs.currency)),
+        lang.t("verdict.col"),
     ]
     rows = []
     for c in _ranked(results)[:limit]:
@@ -143,6 +157,7 @@ def _ranking_table(results: Results, lang: Lang, limit: int = 12) -> TableData:
                 _bound(n(c.improvement, 2), lb),
                 n(c.frp_mass, 1),
                 n(c.frp_cost, 0, grouping=True),
+                cell(c, lang),
             ]
         )
     return TableData(header, rows)
@@ -158,8 +173,9 @@ def retrofit(results: Results, lang: Lang) -> list[Block]:
     rec = results.case(results.recommended)
     compliant = bool(results.input_code_compliant)
     if rec is not None:
+        optional = passes(results.urm)  # the wall as it is passes: no retrofit is needed
         key = "retrofit.recommended" if compliant else "retrofit.best_ranked"
-        out.append(h2(lang.t(key)))
+        out.append(h2(lang.t("retrofit.optional" if optional and compliant else key)))
         lb = rec.lower_bound
         rows = [
             [lang.t("retrofit.option"), option_words(rec, lang)],
@@ -189,14 +205,24 @@ def retrofit(results: Results, lang: Lang) -> list[Block]:
         out.append(key_value(rows, sub_values=True, verbatim_rows=(0,)))
         if not compliant:
             out.append(markup(lang.t("retrofit.not_compliant"), "verdict_bad"))
+        said = "retrofit.verdict_optional" if optional else "retrofit.verdict"
+        said = said if compliant else "retrofit.verdict_best"
+        out.append(markup(lang.t(said, verdict=verdict_sentence(rec, lang))))
+        why = rests_on(results, rec, lang)
+        if why is not None:
+            out.append(markup(why))
+        out += [markup(line) for line in robustness_lines(results, lang)]
     else:
         out.append(markup(lang.t("retrofit.no_option_meets", target=lang.gnum(
             results.model.target)), "verdict_bad"))  # fmt: skip
+        out += decision_lines(results, lang)
+        out += [markup(line) for line in robustness_lines(results, lang)]
     out.append(h2(lang.t("h.retrofit.ranking")))
     out.append(markup(lang.t("retrofit.rule", target=lang.gnum(results.model.target)), "small"))
     out.append(
-        grid(_ranking_table(results, lang), [x * mm for x in (9, 18, 24, 15, 22, 22, 16, 20, 28)],
-             wrap=(1, 2), numeric_from=3, highlight_rows=[0] if rec is not None else [])
+        grid(_ranking_table(results, lang),
+             [x * mm for x in (8, 19, 20, 13, 17, 19, 13, 17, 22, 26)],
+             wrap=(1, 2, 9), numeric_from=3, highlight_rows=[0] if rec is not None else [])
     )  # fmt: skip
     n_dropped = sum(1 for c in results.options if c.rank is None)
     if n_dropped:

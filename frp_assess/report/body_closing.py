@@ -6,6 +6,15 @@ from frp_assess.report.body_front import option_words
 from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import esc, h1, h2, markup
 from frp_assess.report.lang import Lang
+from frp_assess.report.verdict_text import (
+    check_words,
+    margin_text,
+    passes,
+    rests_on,
+    robustness_lines,
+    verdict_sentence,
+)
+from frp_assess.report.verdict_text import governing as governing_words
 from frp_assess.results.model import AssessmentResult
 
 Results = AssessmentResult
@@ -20,10 +29,13 @@ def conclusions(results: Results, lang: Lang) -> list[Block]:
     urm = results.urm
     target = lang.gnum(results.model.target)
     out: list[Block] = [h1(lang.t("h.conclusions"))]
-    ok = bool(urm.meets_target)
+    ok = passes(urm)
     cd = _bound(n(urm.capacity_demand, 2), urm.lower_bound)
     out.append(markup(lang.t("concl.as_is_ok" if ok else "concl.as_is_bad", cd=cd,
-                             target=target)))  # fmt: skip
+                             target=target, verdict=verdict_sentence(urm, lang))))  # fmt: skip
+    why = rests_on(results, urm, lang)
+    if why is not None:
+        out.append(markup(why))
     failure = getattr(urm, "failure_mode", None)
     if failure:  # the kernel's failure mode, by its catalogue name when it has one
         key = f"failure:{failure}"
@@ -49,20 +61,15 @@ def conclusions(results: Results, lang: Lang) -> list[Block]:
                 )
             )
         )
-    elif results.options:
+    elif results.options and results.case(results.closest) is None:
         out.append(markup(lang.t("retrofit.no_option_meets", target=target), "verdict_bad"))
     out += decision_lines(results, lang)
+    out += [markup(line) for line in robustness_lines(results, lang)]
     if urm.lower_bound or any(c.lower_bound for c in results.options):
         out.append(markup(lang.t("concl.lower_bound"), "small"))
     out.append(markup(lang.t("concl.details")))
     out.append(markup(lang.t("concl.responsibility")))
     return out
-
-
-def check_words(name: str, lang: Lang) -> str:
-    """A deciding check of the results in the report's language."""
-    key = f"check:{name}"
-    return lang.t(key) if lang.has(key) else esc(name)
 
 
 def decision_lines(results: Results, lang: Lang) -> list[Block]:
@@ -71,17 +78,16 @@ def decision_lines(results: Results, lang: Lang) -> list[Block]:
     files written before them)."""
     out: list[Block] = []
     rec = results.case(results.recommended)
-    for case, key in ((results.urm, "decision.as_is"), (rec, "decision.option")):
+    for case, key in ((rec, "decision.option"),):  # the wall as it is: in its verdict
         check = getattr(case, "governing_check", None) if case is not None else None
         if check is None or case is None:
             continue
-        margin = getattr(case, "governing_margin", None)
-        bound = bool(getattr(case, "governing_lower_bound", False))
-        shown = "—" if margin is None else _bound(lang.num(float(margin), 2), bound)
+        shown = margin_text(case, lang)
         out.append(markup(lang.t(key, check=check_words(str(check), lang), margin=shown)))
     closest = results.case(getattr(results, "closest", None))
     if closest is not None:
-        out.append(markup(lang.t("decision.closest", option=option_words(closest, lang))))
+        out.append(markup(lang.t("decision.closest", option=option_words(closest, lang),
+                                 governing=governing_words(closest, lang))))  # fmt: skip
     return out
 
 

@@ -140,7 +140,10 @@ def knowledge_section(results: Results, lang: Lang) -> list[Block]:
         out.append(markup(lang.t("knowledge.ida_without_fc")))
     else:
         out.append(markup(lang.t("knowledge.ida_with_fc", fc=lang.gnum(ida_fc))))
-    out.append(markup(lang.t("knowledge.rigid_block"), "small"))
+    piv = results.urm.pivot
+    edge = piv is None or piv.model_pivot == "edge"
+    key = "knowledge.rigid_block_edge" if edge and level != "LC1" else "knowledge.rigid_block"
+    out.append(markup(lang.t(key, fc=lang.gnum(fc), level=esc(level)), "small"))
     return out
 
 

@@ -7,9 +7,11 @@ the wall's own numbers:
 * about the base edge, the moment balance W·B/2 = α₀·W·H/2 gives α₀ = B/H;
   about the crushing pivot (at x/2 inside the compressed zone x = W/(0.85·f_d), as the run
   modelled it) W·(B − x)/2 = α₀·W·H/2 gives α₀ = (B − x)/H;
-* the acceleration that starts rocking a_RM = α₀·g, against the run's a_RM;
-* the static activation multiplier of each record C₀ = a_RM/PGA, against the first multiplier
-  of the record's IDA (the IDA starts at C₀, docs of the method).
+* the acceleration that starts rocking a_RM = α₀·g, against the run's a_RM.
+
+The judgement itself rests on the independent checks the run computed (results.json
+``independent_checks``, :mod:`frp_assess.assess.independent_checks`), each with its value,
+reference and tolerance, any of which can fail: :func:`independent_blocks`.
 """
 
 from __future__ import annotations
@@ -19,7 +21,7 @@ from dataclasses import dataclass
 from reportlab.lib.units import mm
 
 from frp_assess.report.doc_model import Block
-from frp_assess.report.flow import esc, grid, h1, h2, key_value, markup
+from frp_assess.report.flow import esc, grid, h1, h2, keep, key_value, markup
 from frp_assess.report.lang import Lang
 from frp_assess.report.tables import TableData
 from frp_assess.results.model import AssessmentResult
@@ -27,15 +29,11 @@ from frp_assess.text_safety import Markup
 
 Results = AssessmentResult
 
-#: relative difference [-] between the hand calculation and the run accepted without comment
-AGREEMENT = 0.01
-
 
 @dataclass(frozen=True)
 class HandCheck:
     """The hand calculation of the unreinforced wall: W [kN/m], x [m] (None about the
-    edge), α₀ [-], a_RM by hand and by the run [g], and per record (name, PGA at the wall's
-    base [g], C₀ by hand [-], first IDA multiplier [-] or None)."""
+    edge), α₀ [-], a_RM by hand and by the run [g]."""
 
     weight: float
     depth: float | None
@@ -43,18 +41,11 @@ class HandCheck:
     block_factor: float | None
     alpha0: float
     a_rm_run: float
-    records: tuple[tuple[str, float, float, float | None], ...]
 
     @property
     def a_rm_diff(self) -> float:
         """Relative difference of the run's a_RM from the hand one [-]."""
         return abs(self.a_rm_run - self.alpha0) / self.alpha0
-
-    @property
-    def c0_diff(self) -> float | None:
-        """Largest relative difference of an IDA's first multiplier from C₀ [-]."""
-        diffs = [abs(c - h) / h for _, _, h, c in self.records if c is not None and h > 0]
-        return max(diffs) if diffs else None
 
 
 def hand_check(results: Results) -> HandCheck:
@@ -70,12 +61,7 @@ def hand_check(results: Results) -> HandCheck:
         depth = weight / (factor * f_d * 1000.0)  # kN/m over kN/m² [m]
         breadth = w.thickness - depth
     alpha0 = breadth / w.height
-    rows = []
-    for r in results.urm.records:
-        pga = r.floor_pga if r.floor_pga is not None else r.pga
-        first = min((p[0] for p in r.curve), default=None)
-        rows.append((r.record, pga, alpha0 / pga if pga > 0 else float("nan"), first))
-    return HandCheck(weight, depth, f_d, factor, alpha0, w.a_rm, tuple(rows))
+    return HandCheck(weight, depth, f_d, factor, alpha0, w.a_rm)
 
 
 def section(results: Results, lang: Lang) -> list[Block]:
@@ -129,38 +115,67 @@ def section(results: Results, lang: Lang) -> list[Block]:
     for line in calc:
         out.append(markup(line, "equation"))
     out.append(markup(lang.t("sw.hand.code_alpha0", alpha0=n(results.code_check.alpha0, 4))))
-    header: list[str] = [Markup(lang.t(k)) for k in ("col.record", "sw.col.pga", "sw.col.c0_hand",
-                                         "sw.col.c0_ida", "sw.col.diff")]  # fmt: skip
-    body = []
-    for name, pga, c0, first in hc.records:
-        diff = "—" if first is None or c0 <= 0 else n(100 * abs(first - c0) / c0, 2)
-        body.append([name, n(pga, 3), n(c0, 4), n(first, 4) if first is not None else "—", diff])
-    out.append(
-        grid(TableData(header, body), [50 * mm, 30 * mm, 30 * mm, 30 * mm, 30 * mm], wrap=(0,))
-    )
-    worst = hc.c0_diff
-    ok = hc.a_rm_diff <= AGREEMENT and (worst is None or worst <= AGREEMENT)
-    out.append(
-        markup(
-            lang.t(
-                "sw.judgement.ok" if ok else "sw.judgement.bad",
-                limit=n(100 * AGREEMENT, 0),
-                worst=n(100 * (worst or 0.0), 2),
-            ),
-            "verdict_ok" if ok else "verdict_bad",
-        )
-    )
-    nc = results.numerical_check
-    if nc is not None:
-        if nc.fate_changed or nc.max_change is None:
-            text = lang.t("sw.numerical.fate", case=esc(nc.case), record=esc(nc.record),
-                          moved=nc.changed_pairs, pairs=nc.pairs)  # fmt: skip
-        else:
-            text = lang.t("sw.numerical.ok", tol=f"{nc.tolerance:g}",
-                          check=f"{nc.check_tolerance:g}", change=n(100 * nc.max_change, 2),
-                          moved=nc.changed_pairs, pairs=nc.pairs)  # fmt: skip
-        out.append(markup(text))
-    else:
+    out += independent_blocks(results, lang)
+    if results.numerical_check is None:
         out.append(markup(lang.t("sw.numerical.none"), "small"))
     out.append(markup(lang.t("sw.engineer")))
     return out
+
+
+def _deviation(value: float, absolute: bool, lang: Lang) -> str:
+    return lang.num(value, 4) if absolute else f"{lang.num(100 * value, 3)} %"
+
+
+def _figure(value: float, unit: str, lang: Lang) -> str:
+    return lang.num(value, 5) + ("" if unit == "-" else f" {esc(unit)}")
+
+
+def independent_blocks(results: Results, lang: Lang) -> list[Block]:
+    """The independent checks of the run (NTC 2018 §10.2): a table of what each compares,
+    the program's figure, the independent one, the deviation, the tolerance and the result,
+    and the judgement that follows from them (a sentence saying they are missing in a
+    results file written before them)."""
+    checks = results.independent_checks
+    if not checks:
+        return [markup(lang.t("sw.indep.none"), "verdict_bad")]
+    case = results.case(results.recommended or results.closest) or results.urm
+    out: list[Block] = [markup(lang.t("sw.indep.lead"))]
+    keys = ("sw.col.check", "sw.col.program", "sw.col.reference", "sw.col.deviation",
+            "sw.col.tolerance", "sw.col.result")  # fmt: skip
+    header: list[str] = [Markup(lang.t(k)) for k in keys]
+    rows = []
+    for c in checks:
+        key = f"indep:{c.name}"
+        what = (
+            lang.t(key, case=esc(case.name), record=esc(_least_record(case)))
+            if lang.has(key)
+            else esc(c.detail)
+        )
+        rows.append([
+            Markup(what),
+            _figure(c.value, c.unit, lang),
+            _figure(c.reference, c.unit, lang),
+            _deviation(c.deviation, c.absolute, lang),
+            _deviation(c.tolerance, c.absolute, lang),
+            lang.t("word.pass" if c.passed else "word.fail"),
+        ])  # fmt: skip
+    table = grid(TableData(header, rows), [58 * mm, 22 * mm, 24 * mm, 20 * mm, 20 * mm, 26 * mm],
+                 wrap=(0,))  # fmt: skip
+    out[-1:] = [keep([out[-1], table])]  # the lead stays with its table
+    failed = [c for c in checks if not c.passed]
+    if failed:
+        text = lang.t("sw.indep.bad", n=len(failed), total=len(checks),
+                      names=", ".join(esc(c.name) for c in failed))  # fmt: skip
+        out.append(markup(text, "verdict_bad"))
+    else:
+        out.append(markup(lang.t("sw.indep.ok"), "verdict_ok"))
+    return out
+
+
+def _least_record(case: object) -> str:
+    """The least favourable record of a case (the smallest a_dyn; one that did not collapse
+    counts as infinite): the record the reference integrator re-ran."""
+    records = getattr(case, "records", ())
+    if not records:
+        return "—"
+    return str(min(records, key=lambda r: float("inf") if r.a_dyn is None else r.a_dyn).record)

@@ -4,10 +4,10 @@ the axes and the other primitives are in :mod:`frp_assess.report.chart_axes`."""
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
-from reportlab.graphics.shapes import Circle, Drawing
+from reportlab.graphics.shapes import Circle, Drawing, Group, String
 
 from frp_assess.report import styles as st
 from frp_assess.report.chart_axes import (
@@ -19,6 +19,7 @@ from frp_assess.report.chart_axes import (
     new_drawing,
     nice_range,
 )
+from frp_assess.report.lang import Lang
 from frp_assess.report.tables import fmt_permille
 from frp_assess.results.model import AssessmentResult, CaseResult
 
@@ -281,3 +282,23 @@ def history_chart(
             ax2.line(t, [1e3 * abs(v) for v in sn], color, 0.8)
         legend(d, x0 + w + 14, 40.0 + panel_h - FS, items)
     return d
+
+
+def relabel(d: Drawing, label: Callable[[str], str]) -> Drawing:
+    """``d`` with every string passed through ``label`` (in place; returned for chaining)."""
+
+    def walk(node: object) -> None:
+        if isinstance(node, String):
+            node.text = label(str(node.text))
+        elif isinstance(node, Group):
+            for child in node.contents:
+                walk(child)
+
+    for s in d.contents:
+        walk(s)
+    return d
+
+
+def localize_drawing(d: Drawing, lang: Lang) -> Drawing:
+    """``d`` with every string in ``lang`` (:meth:`Lang.chart_label`; in place)."""
+    return d if lang.code == "en" else relabel(d, lang.chart_label)

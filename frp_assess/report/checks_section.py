@@ -197,7 +197,9 @@ def checks_section(checks: KinematicChecks) -> list[Block]:
         gap(6),
         grid(curves_table(checks), [34 * mm] + [17 * mm] * 8, wrap=(0,), small=True),
         para(
-            "K: bar term of Eq. 10; d0 = B/2; d_SLV = min(0.40·d0, the displacement where a bar "
+            "K: bar term of Eq. 10; d0 = d_C(α_x), the centroid's displacement where the bare "
+            "wall's restoring moment vanishes (B/2 about the edge, about (B − x_W)/2 with the "
+            "base reaction at x_W/2); d_SLV = min(0.40·d0, the displacement where a bar "
             "rupture drops the capacity by more than 50 %), d_SLC = 0.60·d0; T = 1.68π√(d/a) "
             "(SLV), 1.56π√(d/a) (SLC); D: displacement demand at 8 % (SLV) and 10 % (SLC) "
             "damping.",

@@ -15,10 +15,15 @@ import html
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-
-from reportlab.graphics.shapes import Drawing
+from typing import TYPE_CHECKING
 
 from frp_assess.text_safety import PDF_MAX_CHARS, pdf
+
+#: points per millimetre (72 pt to the inch; reportlab's value, so that layouts are identical)
+MM = 72.0 / 2.54 * 0.1
+
+if TYPE_CHECKING:  # the model holds a chart; only the renderers draw it
+    from reportlab.graphics.shapes import Drawing
 
 
 @dataclass(frozen=True)

@@ -22,7 +22,7 @@ from frp_assess.report.doc_model import (
     Para,
     Table,
 )
-from frp_assess.report.tables import TableData
+from frp_assess.report.formats import TableData
 from frp_assess.text_safety import PDF_MAX_CHARS, pdf
 
 #: longest plain-text paragraph (notes) [characters]; table cells hold PDF_MAX_CHARS

@@ -4,7 +4,7 @@
 Catalogue strings are trusted markup (``<b>``, ``<sub>``...) with ``{name}`` placeholders;
 what fills a placeholder is already escaped or a number formatted by :meth:`Lang.num`.
 Chart labels are looked up by their English text (``chart:`` keys) and numbers in them are
-re-formatted (:func:`localize_drawing`).
+re-formatted (:func:`frp_assess.report.charts.localize_drawing`).
 """
 
 from __future__ import annotations
@@ -13,8 +13,6 @@ import json
 import re
 from functools import cache
 from importlib import resources
-
-from reportlab.graphics.shapes import Drawing, Group, String
 
 #: languages with a catalogue
 LANGUAGES = ("en", "it")
@@ -113,20 +111,3 @@ _CHART_PATTERNS = (
     (re.compile(r"(\S+) centred"), "{} centred"),
     (re.compile(r"(\S+) external"), "{} external"),
 )
-
-
-def localize_drawing(d: Drawing, lang: Lang) -> Drawing:
-    """``d`` with every string in ``lang`` (in place; returned for chaining)."""
-    if lang.code == "en":
-        return d
-
-    def walk(node: object) -> None:
-        if isinstance(node, String):
-            node.text = lang.chart_label(str(node.text))
-        elif isinstance(node, Group):
-            for child in node.contents:
-                walk(child)
-
-    for s in d.contents:
-        walk(s)
-    return d

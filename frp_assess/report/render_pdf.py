@@ -62,6 +62,10 @@ def cell_limit(width: float, size: float) -> int:
     return max(24, int(MAX_CELL_LINES * width / (0.55 * size)))
 
 
+#: tables of at most this many body rows are kept on one page
+KEEP_WHOLE_ROWS = 12
+
+
 def flowables(blocks: Sequence[Block]) -> list[Flowable]:
     """The flowables of ``blocks``, in order."""
     return [_one(b) for b in blocks]
@@ -74,7 +78,9 @@ def _one(b: Block) -> Flowable:
     if isinstance(b, Para):
         return Paragraph(b.markup, styles[b.style])
     if isinstance(b, Table):
-        return key_value_table(b) if b.kind == "key_value" else grid_table(b)
+        table = key_value_table(b) if b.kind == "key_value" else grid_table(b)
+        # a short table is never split (a page holding its last two rows): it moves whole
+        return KeepTogether([table]) if len(b.rows) <= KEEP_WHOLE_ROWS else table
     if isinstance(b, Figure):
         return b.drawing
     if isinstance(b, Break):

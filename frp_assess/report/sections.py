@@ -25,6 +25,13 @@ from frp_assess.report.flow import (
     page_break,
     para,
 )
+from frp_assess.report.tables import EN
+from frp_assess.report.verdict_text import (
+    governing,
+    passes,
+    robustness_lines,
+    verdict_sentence,
+)
 from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.rules.record_sets import MEAN_OF_RECORDS_FROM
 
@@ -60,7 +67,7 @@ def _option_sentence(results: Results, c: CaseResult) -> str:
         f"{tb.fmt_cost(c.frp_cost)} {esc(cur)}; capacity/demand "
         f"{esc(tb.bound(tb.fmt_capacity(c, results.model.target), lb))}, improvement "
         f"{esc(tb.bound(tb.fmt_ratio(c.improvement), lb))} × the unreinforced wall"
-        + ("" if c.meets_target else " (does <b>not</b> reach the target)")
+        + ("" if passes(c) else f" (does <b>not</b> pass every deciding check: {governing(c, EN)})")
         + "."
         + ("" if c.as_built is None else f" Built as {esc(c.as_built.note)}.")
     )
@@ -103,9 +110,11 @@ def summary(results: Results) -> list[Block]:
             + (
                 "."
                 if x_pivot is None
-                else f" about a pivot {x_pivot * 500:.0f} mm inside its edge (the masonry "
-                f"crushed under its weight, x = {x_pivot * 1000:.0f} mm; section 6.4), "
-                f"against g·tan α = {tb.fmt_acc(math.tan(w.alpha))} g about the edge."
+                else f", its base reaction at rest acting {x_pivot * 500:.0f} mm inside its "
+                f"edge (half the compressed zone under its weight, x<sub>W</sub> = "
+                f"{x_pivot * 1000:.0f} mm; section 6.4), against g·tan α = "
+                f"{tb.fmt_acc(math.tan(w.alpha))} g about the edge; the reaction then follows "
+                "the bars as they stretch."
             )
         )
     )
@@ -126,7 +135,7 @@ def summary(results: Results) -> list[Block]:
     floor = floor_section.floor_sentence(results)
     if floor is not None:
         out.append(markup(floor))
-    ok = bool(urm.meets_target)
+    ok = passes(urm)
     lb = urm.lower_bound
     out.append(
         markup(
@@ -146,9 +155,8 @@ def summary(results: Results) -> list[Block]:
                 if ok
                 else "Verdict: the unreinforced wall is NOT adequate"
             )
-            + f" (capacity/demand {esc(tb.bound(tb.fmt_capacity(urm, target), lb))} "
-            + ("≥" if ok else "<")
-            + f" target {target:g}).",
+            + f": it {verdict_sentence(urm, EN)}; the IDA's capacity/demand is "
+            + f"{esc(tb.bound(tb.fmt_capacity(urm, target), lb))} (target {target:g}).",
         )
     )
     k = floor_section.linear_check(results)
@@ -198,11 +206,12 @@ def summary(results: Results) -> list[Block]:
             out.append(markup("<b>Recommended retrofit.</b> " + _option_sentence(results, rec)))
         out.append(
             markup(
-                "It is the cheapest option that meets the target (ranking rule: "
-                f"{esc(results.ranking_rule)})",
+                f"It is the cheapest option that passes every deciding check ("
+                f"{governing(rec, EN)}; ranking rule: {esc(results.ranking_rule)})",
                 "small",
             )
         )
+        out += [markup(line, "small") for line in robustness_lines(results, EN)]
         alts = [c for c in ranked if c is not rec][:3]
         if alts:
             out.append(markup("<b>Alternatives</b>, next in the ranking:"))
@@ -212,8 +221,8 @@ def summary(results: Results) -> list[Block]:
         out.append(
             _verdict(
                 False,
-                f"No retrofit option examined reaches capacity/demand ≥ {target:g}. "
-                "The best ones are:",
+                "No retrofit option examined passes every deciding check. The closest to "
+                "passing (the largest governing margin, equal margins by the IDA's) are:",
             )
         )
         for c in ranked[:3]:

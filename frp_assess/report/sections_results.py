@@ -5,12 +5,12 @@ from __future__ import annotations
 
 from reportlab.lib.units import mm
 
-from frp_assess.report import charts, floor_section
+from frp_assess.report import annex_design_tables as adt
+from frp_assess.report import body_annex, charts, floor_section, history_section
 from frp_assess.report import tables as tb
-from frp_assess.report.doc_model import Block, with_subscripts
+from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import (
     cond_break,
-    esc,
     figure,
     gap,
     grid,
@@ -23,6 +23,8 @@ from frp_assess.report.flow import (
     para,
 )
 from frp_assess.report.formats import column_blocks
+from frp_assess.report.tables import EN
+from frp_assess.report.verdict_text import robustness_lines
 from frp_assess.results.model import AssessmentResult
 
 Results = AssessmentResult
@@ -72,7 +74,7 @@ def options(results: Results) -> list[Block]:
     data = tb.ranking_table(results)
     rec_name = results.recommended
     hl = [i for i, r in enumerate(data.rows) if r[1] == rec_name]
-    widths = [12, 25, 11, 14, 8, 11, 11, 11, 14, 12, 16, 16, 11]  # rank: 'dropped'
+    widths = [12, 22, 11, 14, 8, 11, 11, 11, 14, 12, 16, 15, 15]  # rank: "dropped"
     out.append(
         grid(
             data,
@@ -121,19 +123,22 @@ def options(results: Results) -> list[Block]:
             [
                 figure(charts.options_chart(results, "capacity_demand")),
                 para(
-                    "Figure 3. Capacity/demand against the FRP installed on the wall; options "
-                    "above the target line meet it.",
+                    "Figure 3. Capacity/demand of the IDA against the FRP installed on the "
+                    "wall. The target line belongs to the IDA check alone: an option passes "
+                    "only when every deciding check passes (column 'deciding checks' of "
+                    "section 5.1), so an option above the line can still fail.",
                     "caption",
                 ),
             ]
         )
     )
     out.append(cond_break(50 * mm))
-    out.append(h2("5.3  Design mode: the smallest ratio that meets the target"))
-    if results.design:
+    out.append(h2("5.3  Design mode: the smallest ratio that passes every deciding check"))
+    design = adt.design_table(results, EN, notes=True)
+    if design is not None:
         out.append(
             grid(
-                tb.design_table(results),
+                design,
                 [16 * mm, 18 * mm, 20 * mm, 20 * mm, 18 * mm, 18 * mm, 64 * mm],
                 wrap=(6,),
                 numeric_from=2,
@@ -143,7 +148,7 @@ def options(results: Results) -> list[Block]:
         out.append(para("Design mode was not run for this project."))
     out.append(cond_break(80 * mm))
     out.append(h2("5.4  a_dyn [g] of every option and record"))
-    for mat in column_blocks(tb.a_dyn_matrix(results)):
+    for mat in column_blocks(body_annex.a_dyn_table(results, EN, lambda c: c.name)):
         n = len(mat.header) - 1
         other = (174 - 34) / max(n, 1)
         out.append(grid(mat, [34 * mm] + [other * mm] * n, wrap=(0,), small=True))
@@ -152,7 +157,7 @@ def options(results: Results) -> list[Block]:
     out.append(h2("5.5  How far the numbers can be trusted: scatter and fragility"))
     out.append(
         grid(
-            tb.scatter_table(results),
+            body_annex.scatter_table(results, EN, lambda c: c.name),
             [x * mm for x in (34, 18, 16, 13, 33, 20, 12, 28)],
             wrap=(0, 4),
             small=True,
@@ -164,27 +169,33 @@ def options(results: Results) -> list[Block]:
             "Statistics of a_dyn over the records (a record without collapse up to C_max "
             "enters at its lower bound C_max·PGA). Fragility: a lognormal curve fitted by "
             "maximum likelihood to the collapse accelerations (records without collapse "
-            "right-censored); P(collapse) is its value at the demand a_g·S. With few records "
+            "right-censored); P(collapse) is its value at the demand FC·a_g·S, the demand of "
+            "the IDA check and of the robustness statement. With few records "
             "the fit is coarse: read it as the scatter of the result, not as a site "
             "probability.",
             "caption",
         )
     )
-    sens = tb.sensitivity_table(results)
+    sens = adt.sensitivity_table(results, EN)
     if sens is not None and results.sensitivity is not None:
         out.append(cond_break(60 * mm))
         out.append(h2("5.6  What the result depends on: the model conventions"))
-        out.append(grid(sens, [x * mm for x in (70, 34, 26, 34)], wrap=(0,), numeric_from=1))
+        out.append(
+            grid(sens, [x * mm for x in (54, 24, 20, 26, 26, 24)], wrap=(0,), numeric_from=1)
+        )
         out.append(
             para(
                 f"{results.sensitivity.case} under the conventions the paper leaves open, "
                 "one at a time (docs/model.md §3), the IDA's hunt at the square root of its "
                 "step ratio (a finer hunt can meet a lower collapse window, docs/model.md "
                 "§5.1), and a ±10 % change of the bars' elastic modulus; the same records, "
-                "the design value of a_dyn.",
+                "the design value of a_dyn. The capacity/demand column is the IDA check's "
+                "alone; the deciding checks' verdict and governing margin under each "
+                "convention are in the last two columns.",
                 "caption",
             )
         )
+        out += [markup(line) for line in robustness_lines(results, EN)]
     return out
 
 
@@ -197,38 +208,10 @@ def governing(results: Results) -> list[Block]:
     if not gov or not gov.runs:
         out.append(para("No time history is stored in the results."))
         return out
-    rs = gov.rupture_strain
-    out.append(
-        markup(
-            f"Case <b>{esc(gov.case)}</b>, record <b>{esc(gov.record)}</b> (the record "
-            "that overturns it at the smallest multiplier). The response at the collapse "
-            "multiplier and just below it shows how the wall fails"
-            + (
-                f"; the bar ruptures when its strain reaches ε<sub>max</sub> = "
-                f"{with_subscripts(esc(tb.rupture_strain_words(results)))} = {1e3 * rs:.2f} ‰."
-                if rs is not None
-                else "."
-            )
-        )
+    out += history_section.blocks(
+        results,
+        EN,
+        lambda t: grid(t, [24 * mm, 20 * mm, 24 * mm, 40 * mm, 22 * mm, 44 * mm], wrap=(0, 3, 5)),
+        4,
     )
-    out.append(
-        grid(
-            tb.governing_runs_table(results),
-            [24 * mm, 22 * mm, 24 * mm, 36 * mm, 22 * mm, 46 * mm],
-            wrap=(0, 3, 5),
-        )
-    )
-    out.append(gap(8))
-    chart = charts.history_chart(results)
-    if chart is not None:
-        out.append(figure(chart))
-        out.append(
-            para(
-                "Figure 4. Rotation θ/α (θ = α: the wall has rotated as far as its slenderness; "
-                "collapse follows the criterion of section 2.4) and strain of the acting bar, at "
-                "the collapse multiplier (red) and just below it (blue); after the record the "
-                "wall moves freely until its fate is decided.",
-                "caption",
-            )
-        )
     return out

@@ -13,8 +13,6 @@ Number formats, used everywhere in the report:
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-
 from frp_assess.report.formats import (  # re-exported: tables.X for the sections
     DASH as DASH,
 )
@@ -75,6 +73,7 @@ from frp_assess.report.formats import (
 from frp_assess.report.formats import (
     yes_no as yes_no,
 )
+from frp_assess.report.lang import Lang
 from frp_assess.report.tables_inputs import (
     COLLAPSE_WORDS as COLLAPSE_WORDS,
 )
@@ -117,11 +116,17 @@ from frp_assess.report.tables_inputs import (
 from frp_assess.report.tables_inputs import (  # re-exported, as above
     wall_rows as wall_rows,
 )
-from frp_assess.results.model import AssessmentResult, CaseResult, HistoryRun
+from frp_assess.report.verdict_text import (
+    cell,
+    governing,
+)
+from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.rules.record_sets import MEAN_OF_RECORDS_FROM
 from frp_assess.text_safety import Markup
 
 Results = AssessmentResult
+#: the English words of the verdict: the catalogue's, as in the body (report/verdict_text.py)
+EN = Lang("en")
 # --- the tables ---------------------------------------------------------------------------
 
 RANKING_HEADER = [
@@ -137,7 +142,7 @@ RANKING_HEADER = [
     "mean q",
     "improve-<br/>ment",
     "capacity /<br/>demand",
-    "meets<br/>target",
+    "deciding<br/>checks",
 ]
 
 
@@ -164,7 +169,7 @@ def ranking_row(case: CaseResult, target: float) -> list[str]:
         bound(fmt_q(case.mean_q), lb),
         bound(fmt_ratio(case.improvement), lb),
         bound(fmt_capacity(case, target), lb),
-        yes_no(case.meets_target),
+        cell(case, EN),
     ]
 
 
@@ -180,65 +185,6 @@ def ranking_table(results: Results) -> TableData:
     return TableData(header, rows)
 
 
-def _probability(p: float | None) -> str:
-    if p is None:
-        return DASH
-    return "< 0.1%" if p < 1e-3 else f"{p:.1%}"
-
-
-def sensitivity_table(results: Results) -> TableData | None:
-    """The assessed case under every model-convention variant, or None when not recorded."""
-    sens = results.sensitivity
-    if not sens or not sens.rows:
-        return None
-    base = sens.rows[0].design_a_dyn
-    header = ["variant", a_dyn_label(results), "change [%]", "capacity/demand [–]"]
-    rows = []
-    for r in sens.rows:
-        ge = "≥ " if r.lower_bound else ""
-        rows.append(
-            [
-                r.variant,
-                ge + fmt_acc(r.design_a_dyn),
-                f"{100.0 * (r.design_a_dyn / base - 1.0):+.1f}",
-                ge + f"{r.capacity_demand:.2f}",
-            ]
-        )
-    return TableData(header, rows)
-
-
-def scatter_table(results: Results) -> TableData:
-    """Record-to-record scatter of a_dyn and the lognormal fragility of every case (unreinforced
-    first, then by rank); the fragility columns show dashes where no lognormal was fitted."""
-    header = [
-        "option",
-        "mean a_dyn [g]",
-        "median [g]",
-        "CoV [–]",
-        "least favourable [g] (record)",
-        "fragility median [g]",
-        "β [–]",
-        "P(collapse) at a_g·S",
-    ]
-    rows = []
-    for c in [results.urm, *ranked_options(results)]:
-        sc = c.scatter
-        fr = sc.fragility
-        rows.append(
-            [
-                c.name,
-                fmt_acc(c.mean_a_dyn),
-                fmt_acc(sc.median_a_dyn),
-                f"{sc.cov:.2f}",
-                f"{fmt_acc(c.min_a_dyn)} ({sc.least_favourable_record})",
-                fmt_acc(None if fr is None else fr.median),
-                DASH if fr is None else f"{fr.beta:.2f}",
-                _probability(None if fr is None else fr.p_collapse_at_demand),
-            ]
-        )
-    return TableData(header, rows)
-
-
 def summary_table(results: Results, n_alternatives: int = 3) -> TableData:
     """The unreinforced wall, the recommended option and the best alternatives."""
     cur = results.costs.currency
@@ -250,13 +196,13 @@ def summary_table(results: Results, n_alternatives: int = 3) -> TableData:
         a_dyn_label(results),
         Markup("improve-<br/>ment"),
         Markup("capacity /<br/>demand"),
-        Markup("meets<br/>target"),
+        Markup("deciding<br/>checks"),
     ]
     ranked = [c for c in ranked_options(results) if c.rank is not None]  # not the dropped
     chosen: list[tuple[str, CaseResult]] = [("existing", results.urm)]
     rec = case_by_name(results, results.recommended)
     if rec is not None:
-        urm_ok = bool(results.urm.meets_target)
+        urm_ok = cell(results.urm, EN) == EN.t("verdict.cell.pass")
         if not results.input_code_compliant:
             label = "best ranked"
         else:
@@ -276,7 +222,7 @@ def summary_table(results: Results, n_alternatives: int = 3) -> TableData:
                 bound(fmt_acc(c.design_a_dyn), lb),
                 bound(fmt_ratio(c.improvement), lb),
                 bound(fmt_capacity(c, float(results.model.target)), lb),
-                yes_no(c.meets_target),
+                cell(c, EN),
             ]
         )
     return TableData(header, rows)
@@ -314,10 +260,7 @@ def case_summary_rows(results: Results, case: CaseResult) -> list[list[str]]:
             bound(fmt_capacity(case, float(results.model.target)), lb)
             + f" (FC = {case.fc:g}, demand a_g·S = {fmt_acc(results.demand.pga)} g)",
         ],
-        [
-            f"meets the target (≥ {results.model.target:g})",
-            yes_no(case.meets_target),
-        ],
+        ["deciding checks", f"{cell(case, EN)}: {governing(case, EN)}"],
     ]
     if case.design_a_dyn is not None and not results.design_is_mean:
         design = f"{fmt_acc(case.design_a_dyn)} g"
@@ -367,88 +310,4 @@ def comparison_table(results: Results) -> TableData:
             "satisfied" if k.passed else "NOT satisfied",
         ],
     ]
-    return TableData(header, rows)
-
-
-def design_table(results: Results) -> TableData:
-    cur = results.costs.currency
-    header = [
-        "material",
-        "position",
-        "smallest ρ [‰]",
-        "capacity / demand",
-        "FRP wall [kg]",
-        f"cost [{cur}]",
-        "note",
-    ]
-    rows = [
-        [
-            d.material,
-            d.position,
-            "none in range" if d.ratio is None else fmt_permille(d.ratio),
-            fmt_ratio(d.capacity_demand),
-            fmt_mass(d.frp_mass),
-            fmt_cost(d.frp_cost),
-            d.message or "",
-        ]
-        for d in results.design or []
-    ]
-    return TableData(header, rows)
-
-
-def a_dyn_matrix(results: Results) -> TableData:
-    """a_dyn [g] of every case and record, unreinforced wall first then by rank."""
-    names = [r.name for r in results.records]
-    header = ["option"] + names
-    cases: Sequence[CaseResult] = [results.urm] + ranked_options(results)
-    rows = []
-    for c in cases:
-        by_rec = {r.record: r for r in c.records}
-        cells = []
-        for n in names:
-            r = by_rec.get(n)
-            if r is None:
-                cells.append(DASH)
-            else:
-                cells.append("n.c." if r.a_dyn is None else fmt_acc(r.a_dyn))
-        rows.append([c.name, *cells])
-    return TableData(header, rows)
-
-
-def _fate(run: HistoryRun) -> str:
-    """A time history's fate and when it was decided."""
-    if run.decided_time is None:
-        return run.fate
-    return f"{run.fate} ({run.decided_time:.2f} s)"
-
-
-def governing_runs_table(results: Results) -> TableData:
-    header = [
-        "run",
-        "multiplier C",
-        "a = C·PGA [g]",
-        "fate (decided at)",
-        "peak θ/α [–]",
-        "peak ε [‰]",
-    ]
-    gov = results.governing
-    if gov is None:
-        return TableData(header, [])
-    pga = None
-    for r in results.records:
-        if r.name == gov.record:
-            pga = r.pga
-    rows = []
-    for run in gov.runs:
-        rows.append(
-            [
-                run.label,
-                fmt_mult(run.multiplier),
-                DASH if pga is None else fmt_acc(run.multiplier * pga),
-                _fate(run),
-                f"{run.peak_rotation_ratio:.2f}",
-                f"{1e3 * run.peak_strain:.2f}"
-                + (f", broke at {run.ruptures[0].time:.2f} s" if run.ruptures else ""),
-            ]
-        )
     return TableData(header, rows)

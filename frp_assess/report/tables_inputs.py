@@ -119,7 +119,16 @@ def model_rows(results: Results) -> list[list[str]]:
             f"cyclic strain factor c (ε_max = {rupture_strain_words(results)})",
             f"{m.strain_factor:g}",
         ],
-        ["free-vibration tail", f"{m.free_vibration_tail:g} s"],
+        [
+            "free-vibration tail",
+            f"{m.free_vibration_tail:g} s"
+            + (
+                " (the overturning rule follows the wall after the record until its fate is "
+                "certain, without a fixed tail)"
+                if m.collapse == "overturning"
+                else ""
+            ),
+        ],
         ["target capacity/demand", f"≥ {m.target:g}"],
     ]
     integ = m.integration

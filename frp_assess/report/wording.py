@@ -52,6 +52,8 @@ RULES: tuple[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]], ...] 
         lambda m: m.group(1).replace("_", " "),
     ),
     (re.compile(r"\(\s*\)"), ""),
+    # one spacing of the percent sign (SI, NTC): "5 %", never "5%", kept on one line
+    (re.compile(r"(\d)%"), "\\1\u00a0%"),
 )
 
 

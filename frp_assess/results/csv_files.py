@@ -1,11 +1,21 @@
-"""results.csv and spectra.csv, written from the typed results (docs/results-json.md)."""
+"""results.csv and spectra.csv, written from the typed results (docs/results-json.md).
+
+results.csv is read in a spreadsheet by an office: it starts with a UTF-8 byte-order mark (so
+that "‰" is not garbled), rounds as the report does (accelerations and multipliers 3
+decimals, ratios 2, masses 1, costs 0) and, when the report is Italian (results.json
+``report.language``), uses the Italian conventions: decimal comma, semicolon separator.  Its
+verdict columns are the decision's (:mod:`frp_assess.results.verdict_words`).
+"""
 
 from __future__ import annotations
 
 import csv
 import io
+from collections.abc import Callable
 
-from frp_assess.results.model import AssessmentResult
+from frp_assess.results.model import AssessmentResult, CaseResult
+from frp_assess.results.rounding import fmt_against
+from frp_assess.results.verdict_words import verdict_word
 
 #: results.csv columns: each names its statistic and its unit (g: acceleration in g)
 CSV_FIELDS = [
@@ -23,57 +33,102 @@ CSV_FIELDS = [
     "case_least_favourable_a_dyn_g",
     "case_design_a_dyn_g",
     "case_capacity_demand_design",
+    "case_capacity_demand_lower_bound",
     "case_improvement_design",
     "case_frp_mass_kg",
     "case_frp_cost",
-    "case_meets_target",
+    "case_verdict",
+    "case_governing_check",
+    "case_governing_margin",
     "case_rank",
     "case_failure_mode",
 ]
 
+#: the byte-order mark results.csv starts with (spreadsheets then read it as UTF-8)
+BOM = "\ufeff"
 
-def _g(x: float | None) -> str:
-    return "" if x is None else f"{x:.6g}"
+
+class CsvStyle:
+    """Separator, decimal mark and yes/no of a language: "," "." for English, ";" ","
+    for Italian (the report's language)."""
+
+    def __init__(self, language: str) -> None:
+        italian = language == "it"
+        self.delimiter = ";" if italian else ","
+        self.decimal = "," if italian else "."
+        self.yes, self.no = ("sì", "no") if italian else ("yes", "no")
+
+    def number(self, x: float | None, decimals: int) -> str:
+        """``x`` with ``decimals`` decimals ("" for None)."""
+        return "" if x is None else self.mark(f"{x:.{decimals}f}")
+
+    def mark(self, text: str) -> str:
+        """A number written with a point, in this style's decimal mark."""
+        return text.replace(".", self.decimal)
+
+    def flag(self, x: bool) -> str:
+        return self.yes if x else self.no
+
+
+def _case_columns(results: AssessmentResult, st: CsvStyle) -> Callable[[CaseResult], list[str]]:
+    """The ``case_*`` cells of a case (the same on every row of the case)."""
+    target = float(results.model.target)
+
+    def cells(c: CaseResult) -> list[str]:
+        margin = c.governing_margin
+        return [
+            st.number(c.mean_a_dyn, 3),
+            st.number(c.min_a_dyn, 3),
+            st.number(c.design_a_dyn, 3),
+            st.mark(fmt_against(c.capacity_demand, target, c.capacity_demand >= target)),
+            st.flag(c.lower_bound),
+            st.number(c.improvement, 2),
+            st.number(c.frp_mass, 1),
+            st.number(c.frp_cost, 0),
+            verdict_word(results, c),
+            c.governing_check or "",
+            "" if margin is None else st.mark(fmt_against(margin, 1.0, margin >= 1.0)),
+            "" if c.rank is None else str(c.rank),
+            c.failure_mode or "",
+        ]
+
+    return cells
 
 
 def results_csv(results: AssessmentResult) -> str:
-    """One row per (case, record); accelerations in g, mass kg, cost in the currency.
+    """One row per (case, record), after a byte-order mark; accelerations in g, mass kg,
+    cost in the currency (docs/results-json.md, "results.csv").
 
     ``record_*`` columns belong to the row's record, ``case_*`` ones to the whole case (the
     same on every row of the case): mean and least favourable over the records, and the
     design value (the mean with 7 or more records, else the least favourable) that the
-    capacity/demand ratio and the improvement use.
+    capacity/demand ratio and the improvement use; the decision's verdict, governing check
+    and margin.
     """
+    st = CsvStyle(results.report.language if results.report is not None else "en")
     buf = io.StringIO()
-    w = csv.writer(buf, lineterminator="\n")
+    w = csv.writer(buf, delimiter=st.delimiter, lineterminator="\n")
     w.writerow(CSV_FIELDS)
+    case_cells = _case_columns(results, st)
     for c in results.cases:
+        shared = case_cells(c)
         for r in c.records:
             w.writerow(
                 [
                     c.name,
                     c.material or "",
                     c.position or "",
-                    c.ratio,
+                    st.number(c.ratio, 2),
                     r.record,
-                    _g(r.pga),
-                    _g(r.collapse_multiplier),
-                    _g(r.a_dyn),
-                    _g(r.q),
+                    st.number(r.pga, 3),
+                    st.number(r.collapse_multiplier, 3),
+                    st.number(r.a_dyn, 3),
+                    st.number(r.q, 2),
                     r.failure_mode or "",
-                    _g(c.mean_a_dyn),
-                    _g(c.min_a_dyn),
-                    _g(c.design_a_dyn),
-                    _g(c.capacity_demand),
-                    _g(c.improvement),
-                    _g(c.frp_mass),
-                    _g(c.frp_cost),
-                    c.meets_target,
-                    "" if c.rank is None else c.rank,
-                    c.failure_mode or "",
+                    *shared,
                 ]
             )
-    return buf.getvalue()
+    return BOM + buf.getvalue()
 
 
 def spectra_csv(results: AssessmentResult) -> str:

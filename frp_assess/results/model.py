@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 
 from frp_assess.results.as_built import AsBuilt
 from frp_assess.results.checks import KinematicChecks
+from frp_assess.results.independent import IndependentCheck
 from frp_assess.results.pivot import MasonryResult, PivotResult
 from frp_assess.results.run_inputs import BuildingResult as BuildingResult  # re-export
 from frp_assess.results.run_inputs import (
@@ -376,6 +377,11 @@ class AssessmentResult:
     #: "sha256:<hex>" of what the results depend on (project file, record files, frp-assess
     #: version, --rtol/--verify: frp_assess/app/rerun.py); None (the key absent) when not known
     inputs_digest: str | None = field(default=None, metadata={"omit_if_none": True})
+    #: the independent checks of NTC 2018 §10.2 (frp_assess.assess.independent_checks); the
+    #: key is absent in files written before them
+    independent_checks: tuple[IndependentCheck, ...] | None = field(
+        default=None, metadata={"omit_if_none": True}
+    )
 
     @property
     def urm(self) -> CaseResult:

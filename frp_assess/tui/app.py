@@ -22,11 +22,11 @@ from textual.widget import Widget
 from textual.widgets import Button, Input, Select, TabbedContent, TabPane
 
 from frp_assess.app.assessment import UNREINFORCED, default_out_dir
-from frp_assess.app.report import export_folder_problem
 from frp_assess.app.rerun import project_changed
 from frp_assess.config.schema import Project
 from frp_assess.errors import InputError
 from frp_assess.numbers import numerical_check_text, recommendation_text
+from frp_assess.tui import run_folders as folders
 from frp_assess.tui.analysis_pane import AnalysisPane
 from frp_assess.tui.core.editor_state import Problem
 from frp_assess.tui.core.opening import opening_data
@@ -101,6 +101,7 @@ class FrpAssessApp(PaneLookupApp):
         self.pending_run = False  #: run once the new project is saved
         self.quitting = False
         self.previous_cancel = threading.Event()  #: stops rebuilding the last results
+        self.scratch: Path | None = None  #: where unsaved edits run (tui/run_folders.py)
 
     # ------------------------------------------------------------------------ layout
     def compose(self) -> ComposeResult:
@@ -229,13 +230,14 @@ class FrpAssessApp(PaneLookupApp):
         self.show_outcome(o)
 
     def show_outcome(self, outcome: RunOutcome) -> None:
-        """Show the results of a run in the Results and History tabs (once its views exist)."""
+        """Show the results of a run in the Results and Time history tabs (once its views exist)."""
         pane = self.query_one(ResultsPane)
         if not pane.when_ready(partial(self.show_outcome, outcome)):
             return
         self.outcome = outcome
         stale = self.project != outcome.project
-        pane.show(outcome.results, str(outcome.out_dir), stale, self.file_changed(outcome))
+        changed = self.file_changed(outcome)
+        pane.show(outcome.results, str(outcome.out_dir), stale, changed, self.is_scratch(outcome))
         self.query_one(HistoryPane).show_outcome(outcome)
         self.update_status()
 
@@ -337,6 +339,10 @@ class FrpAssessApp(PaneLookupApp):
         return True
 
     # -------------------------------------------------------------------------- run
+    def is_scratch(self, outcome: RunOutcome) -> bool:
+        """The run was of unsaved edits, in the scratch folder (tui/run_folders.py)."""
+        return self.scratch is not None and Path(outcome.out_dir) == self.scratch
+
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
         return self.running if action == "cancel_run" else True
 
@@ -360,8 +366,9 @@ class FrpAssessApp(PaneLookupApp):
         out_dir = default_out_dir(self.path)
         names = [UNREINFORCED, *(str(o.name) for o in project.expand_interventions())]
         saved = None if self.modified() else self.path  # the digest: only of what the file holds
-        if saved is None:
-            panel.log_line("note: running the project as edited (not saved yet)", "yellow")
+        if saved is None:  # the saved file's results folder holds only the saved file's results
+            self.scratch = out_dir = self.scratch or folders.scratch_folder()
+            panel.log_line(folders.unsaved_note(out_dir, self.path), "yellow")
         panel.start(names, record_count(project), str(out_dir))
         self.cancel_event = threading.Event()
         self.running = True
@@ -428,7 +435,7 @@ class FrpAssessApp(PaneLookupApp):
                 "nothing to export yet: run the assessment first (ctrl+r)", severity="warning"
             )
             return
-        outcome = self.outcome
+        outcome, scratch = self.outcome, self.is_scratch(self.outcome)
 
         def done(path: Path | None) -> None:
             if path is not None:
@@ -438,15 +445,7 @@ class FrpAssessApp(PaneLookupApp):
                     job, thread=True, exclusive=True, group="export", exit_on_error=False
                 )
 
-        self.push_screen(
-            PathPrompt(
-                "Export the reports (PDF and Word) and the results into the folder",
-                str(outcome.out_dir),
-                "report.pdf, report.docx, results.json, results.csv, spectra.csv, records/",
-                export_folder_problem,
-            ),
-            done,
-        )
+        self.push_screen(folders.export_prompt(self.path, outcome.out_dir, scratch), done)
 
     @on(ExportDone)
     def _export_done(self, message: ExportDone) -> None:
@@ -456,9 +455,7 @@ class FrpAssessApp(PaneLookupApp):
             self.notify(message.error, title="Export failed", severity="error")
             panel.log_line(f"export failed: {message.error}", "red")
             return
-        names = ", ".join(f.name for f in message.files)
-        pdf = next((f for f in message.files if f.name == "report.pdf"), None)
-        where = pdf.parent if pdf else (message.files[0].parent if message.files else "")
+        names, where = folders.exported(message.files)
         self.notify(f"wrote {names} into {where}/", title="Exported")
         panel.log_line(f"exported into {where}/: {names}")
 
@@ -483,11 +480,13 @@ class FrpAssessApp(PaneLookupApp):
         self.push_screen(ConfirmQuit(what), done)
 
     def quit_now(self) -> None:
-        """Stop the workers and leave."""
+        """Stop the workers, remove the scratch folder (unless a run writes there), leave."""
         self.quitting = True
         self.previous_cancel.set()
         if self.cancel_event is not None:
             self.cancel_event.set()
+        if self.scratch is not None and not self.running:
+            folders.remove_scratch(self.scratch)
         self.exit()
 
 

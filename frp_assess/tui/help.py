@@ -27,7 +27,7 @@ the field and the tab is marked **✗**. Derived values update as you type.
 | `esc` / `ctrl+c` | cancel the run (finished analyses are kept in the cache) |
 | `ctrl+e` | export the PDF report and the result files |
 | `F2` … `F10` | go to a tab: Wall, Site, Records, Materials, Retrofits, |
-|  | Analysis, Run, Results, History (also `ctrl+pageup/pagedown`) |
+|  | Analysis, Run, Results, Time history (also `ctrl+pageup/pagedown`) |
 | `tab` / `shift+tab` | next / previous field (the tab bar too: then ←/→) |
 | `?` / `F1` | this help (in a free-text field `?` is typed: use F1 there) |
 | `ctrl+p` | command palette (save as…, theme, keys) |
@@ -52,24 +52,35 @@ The line at the bottom shows the field's meaning and units.
 
 ## Results
 
+Its views (Ranking, Per record, FRP plot, Fragility, Bars & pivot, Checks, Design,
+Compliance): `]` next view, `[` previous view (anywhere in the Results tab); or
+`shift+tab` up to the views' tab bar, then ←/→.
+
 *Ranking*: ←/→ pick a column, `s` sorts by it (again: reverse), `enter` shows the IDA
-per record of the case. *FRP plot*: improvement or capacity/demand against the FRP
-mass. *Fragility*: P(collapse) against PGA of every case's lognormal fit, the demand
-a_g·S marked. *Bars & pivot*: per option the bars as built (count × diameter, spacing,
-ratio installed / asked, anchorage) and per case the compressed zone at the pivot (x/B,
+per record of the case; verdict, governing check ("TH SLV": the time history at SLV) and
+margin are the decision's, as in the console and results.csv. *FRP plot*: improvement or
+capacity/demand against the FRP mass. *Fragility*: P(collapse) against PGA of every
+case's lognormal fit, the demand FC·a_g·S (the decision's) marked and P(collapse) stated
+there. *Bars & pivot*: per option the bars as built (count × diameter, spacing, ratio
+installed / asked, anchorage) and per case the compressed zone at the pivot (x/B,
 dropped and why). *Checks*: the code's kinematic checks (ζ_E of the linear, SLV, SLC,
 time-history and IDA checks) and the sensitivity of the best option to the model
 conventions and to the IDA's hunt step (√s). *Design*: the smallest ratio per material
 and position (design mode).
 *Compliance*: the code checks of the records and their mean spectrum.
 
-*History*: pick a case and a record; `c` at collapse, `b` just below, `1` for C = 1, or
-type a multiplier and press `enter`.
+*Time history*: the rocking time history θ/α(t) and bar strain(t) of one case under
+one record at one multiplier C of it: pick a case and a record; `c` at collapse, `b`
+just below, `1` for C = 1, or type a multiplier and press `enter`.
 
 Runs write `results.json`, `results.csv`, `spectra.csv`, `records/`, `report.pdf` and
 `report.docx` (the editable Word report) into `<project>-results/` next to the project
-file and keep every finished analysis in its `.cache/`, as `frp-assess run` does;
-`ctrl+e` writes them all (both reports included) into another folder.
+file and keep every finished analysis in its `.cache/`, as `frp-assess run` does.  That
+folder only ever holds the results of the file as saved: `ctrl+r` on unsaved edits runs
+them in a scratch folder of their own (the run log and the Results tab say where; it is
+removed when you quit: `ctrl+e` exports its results before); save,
+then `ctrl+r`, to put them next to the project.  `ctrl+e` writes them all (both reports
+included) into another folder (proposed: `<project>-export/`).
 Opening a project that was run before shows that run's results again (rebuilt from the
 cache, nothing recomputed) when they match the project as it is.
 """

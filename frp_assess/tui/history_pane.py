@@ -1,4 +1,4 @@
-"""The History tab: θ/α(t) and bar strain(t) of a chosen case and record of the last run.
+"""The Time history tab: θ/α(t) and bar strain(t) of a chosen case and record of the last run.
 
 The multiplier C scales the record as in the IDA; by default it is just below the case's
 collapse multiplier for that record (the most demanding motion it survives).  Buttons (or

@@ -10,6 +10,7 @@ from pathlib import Path
 
 from textual.message import Message
 
+from frp_assess.app.kernel import compile_notice
 from frp_assess.config.schema import Project
 from frp_assess.errors import Cancelled, InputError
 from frp_assess.tui.core.session import (
@@ -53,6 +54,8 @@ def run_assessment_job(
             post(RunProgress(ev))
 
     try:
+        if (notice := compile_notice()) is not None:  # a cold numba cache: said in the log
+            post(RunProgress(RunEvent("records", 0, 0, message=notice)))
         outcome = execute_run(
             project,
             base_dir,

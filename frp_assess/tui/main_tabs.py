@@ -1,4 +1,4 @@
-"""The main tabs (Wall … History): which one is shown, the focus in it, its ✗ marks."""
+"""The main tabs (Wall … Time history): which one is shown, the focus in it, its ✗ marks."""
 
 from __future__ import annotations
 

@@ -11,8 +11,9 @@ from textual.binding import Binding, BindingType
 from textual.message import Message
 from textual.widgets import DataTable, TabbedContent
 
-from frp_assess.numbers import fmt_capacity, fmt_margin
-from frp_assess.results.model import CaseResult
+from frp_assess.numbers import fmt_capacity, margin_text
+from frp_assess.results.model import AssessmentResult, CaseResult
+from frp_assess.results.verdict_words import FAILS, UNDECIDED, governing_short, verdict_word
 from frp_assess.tui.core.text import printable
 from frp_assess.tui.literal import literal, safe
 
@@ -30,11 +31,12 @@ def rank_cell(case: CaseResult) -> Any:
     return Text("dropped", "red") if case.pivot is not None and case.pivot.dropped else "—"
 
 
-#: (header, sort key, cell) of the ranking table; the cell takes the case and the target C/D
-#: (C/D with "≥" before a lower bound, :func:`~frp_assess.numbers.fmt_capacity`; the verdict,
-#: governing check and margin of the decision, :mod:`frp_assess.assess.decision`)
+#: (header, sort key, cell) of the ranking table; the cell takes the case and the results it
+#: belongs to (C/D with "≥" before a lower bound, :func:`~frp_assess.numbers.fmt_capacity`
+#: against the target; the verdict, governing check and margin of the decision,
+#: :mod:`frp_assess.results.verdict_words`, the words of the console and results.csv)
 RANKING_COLUMNS: list[
-    tuple[str, Callable[[CaseResult], Any], Callable[[CaseResult, float], Any]]
+    tuple[str, Callable[[CaseResult], Any], Callable[[CaseResult, AssessmentResult], Any]]
 ] = [
     ("rank", lambda c: (c.rank is None, c.rank or 0), lambda c, _: rank_cell(c)),
     ("option", lambda c: c.name, lambda c, _: c.name),
@@ -44,29 +46,29 @@ RANKING_COLUMNS: list[
     ("a_dyn [g]", lambda c: c.design_a_dyn, lambda c, _: f"{c.design_a_dyn:.3f}"),
     ("q", lambda c: c.mean_q, lambda c, _: f"{c.mean_q:.2f}"),
     ("impr.", lambda c: c.improvement, lambda c, _: f"{c.improvement:.2f}"),
-    ("C/D", lambda c: c.capacity_demand, lambda c, t: fmt_capacity(c, t)),
-    ("verdict", lambda c: (c.passes is not True,), lambda c, _: verdict_cell(c)),
-    ("governing", lambda c: c.governing_check or "", lambda c, _: c.governing_check or "—"),
+    ("C/D", lambda c: c.capacity_demand, lambda c, r: fmt_capacity(c, float(r.model.target))),
+    ("verdict", lambda c: (c.passes is not True,), lambda c, r: verdict_cell(r, c)),
+    (
+        "governs",
+        lambda c: c.governing_check or "",
+        lambda c, _: governing_short(c.governing_check),
+    ),
     (
         "margin",
         lambda c: -1.0 if c.governing_margin is None else c.governing_margin,
-        lambda c, _: (
-            "—"
-            if c.governing_check is None
-            else fmt_margin(c.governing_margin, c.governing_lower_bound)
-        ),
+        lambda c, _: margin_text(c),
     ),
 ]
 
 
-def verdict_cell(case: CaseResult) -> Any:
-    """ "passes" (green, "recommended" for the recommendation) or "fails" (red); "—" for a
-    case not decided (an older results file)."""
-    if case.passes is None:
-        return "—"
-    if case.passes:
-        return Text("recommended" if case.recommended else "passes", "green")
-    return Text("fails", "red")
+def verdict_cell(results: AssessmentResult, case: CaseResult) -> Any:
+    """The decision's word (:func:`~frp_assess.results.verdict_words.verdict_word`):
+    "recommended" or "passes" in green, "fails" in red, "—" for a case not decided (an
+    older results file)."""
+    word = verdict_word(results, case)
+    if word == UNDECIDED:
+        return word
+    return Text(word, "red" if word == FAILS else "green")
 
 
 def sorted_order(cases: Sequence[CaseResult], column: int, reverse: bool) -> list[int]:
@@ -94,32 +96,30 @@ class RankingTable(DataTable[Any]):
     def __init__(self, **kw: Any) -> None:
         super().__init__(cursor_type="cell", zebra_stripes=True, **kw)
         self.cases: Sequence[CaseResult] = []
+        self.results: AssessmentResult | None = None
         self.order: list[int] = []
         self.sort_column = 0
         self.sort_reverse = False
-        self.currency = ""
-        self.target = 1.0
 
-    def show(self, cases: Sequence[CaseResult], currency: str, target: float) -> None:
-        """Show ``cases``; ``target`` is the C/D their ``meets_target`` is against [-]."""
-        self.cases = cases
-        self.currency = currency
-        self.target = target
+    def show(self, results: AssessmentResult) -> None:
+        """Show the cases of ``results`` with the decision on each."""
+        self.results = results
+        self.cases = results.cases
         self._fill()
 
     def _fill(self) -> None:
         row, col = self.cursor_coordinate
         self.clear(columns=True)
         for i, (header, _, _) in enumerate(RANKING_COLUMNS):
-            if header == "cost":
-                header = f"cost [{printable(self.currency)}]"
+            if header == "cost" and self.results is not None:
+                header = f"cost [{printable(self.results.costs.currency)}]"
             mark = (" ▼" if self.sort_reverse else " ▲") if i == self.sort_column else ""
             self.add_column(Text(header + mark))
         self.order = sorted_order(self.cases, self.sort_column, self.sort_reverse)
-        for i in self.order:
-            self.add_row(
-                *[_text(cell(self.cases[i], self.target)) for _, _, cell in RANKING_COLUMNS]
-            )
+        results = self.results
+        for i in self.order if results is not None else ():
+            assert results is not None
+            self.add_row(*[_text(cell(self.cases[i], results)) for _, _, cell in RANKING_COLUMNS])
         if self.cases:
             self.move_cursor(row=min(row, len(self.cases) - 1), column=col, animate=False)
 

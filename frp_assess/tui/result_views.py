@@ -15,10 +15,16 @@ from rich import box
 from rich.table import Table
 from rich.text import Text
 
-from frp_assess.numbers import fmt_zeta
+from frp_assess.numbers import (
+    fmt_against,
+    fmt_zeta,
+    recommendation_label,
+    recommendation_text,
+)
 from frp_assess.results.checks import TimeHistoryResult
 from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.tui.core.fragility import lognormal_cdf, pga_axis
+from frp_assess.tui.core.text import printable
 from frp_assess.tui.literal import literal
 from frp_assess.tui.plots import Rule, Series
 
@@ -52,13 +58,13 @@ def _ok(passed: bool | None, yes: str = "OK", no: str = "FAILS") -> Text:
 # ----------------------------------------------------------------------------- fragility
 def fragility_plot(r: AssessmentResult) -> tuple[list[Series], dict[str, Any]]:
     """P(collapse) against PGA of every case with a lognormal fit, and the plot options
-    (the demand a_g·S as a vertical rule).  No series when no case has a fit."""
+    (the decision's demand FC·a_g·S as a vertical rule).  No series when no case has a fit."""
     fitted = [
         (i, c, c.scatter.fragility)
         for i, c in enumerate(r.cases)
         if c.scatter is not None and c.scatter.fragility is not None
     ]
-    demand = r.demand.pga
+    demand = decision_demand(r)
     if not fitted:
         return [], {}
     xs = pga_axis([f.median for _, _, f in fitted], [f.beta for _, _, f in fitted], demand)
@@ -74,7 +80,7 @@ def fragility_plot(r: AssessmentResult) -> tuple[list[Series], dict[str, Any]]:
     options = {
         "x_range": (0.0, xs[-1]),
         "y_range": (0.0, 1.0),
-        "rules": [Rule(demand, "x", "red", f"demand a_g·S = {demand:.3f} g")],
+        "rules": [Rule(demand, "x", "red", f"demand FC·a_g·S = {demand:.3f} g")],
         "x_label": "PGA [g]",
         "y_label": "P(collapse)",
         "legend": len(series) <= LEGEND_MAX,
@@ -82,21 +88,30 @@ def fragility_plot(r: AssessmentResult) -> tuple[list[Series], dict[str, Any]]:
     return series, options
 
 
+def decision_demand(r: AssessmentResult) -> float:
+    """FC·a_g·S [g]: the demand of the decision's checks (the knowledge level's FC of the
+    unreinforced wall, the same for every case), at which P(collapse) is stated."""
+    return r.urm.fc * r.demand.pga
+
+
 def fragility_table(r: AssessmentResult) -> Table:
-    """Every case's lognormal fit: median, β, method and P(collapse) at the demand."""
-    t = _table(f"Lognormal fragility: P(collapse) at a_g·S = {r.demand.pga:.3f} g")
+    """Every case's lognormal fit: median, β, method and P(collapse) at the decision's
+    demand FC·a_g·S (from the fit's median and β: results.json's ``p_collapse_at_demand``
+    is at a_g·S)."""
+    demand = decision_demand(r)
+    t = _table(f"Lognormal fragility: P(collapse) at FC·a_g·S = {demand:.3f} g")
     t.add_column(Text("case"), ratio=3)
     for heading in ("median [g]", "β"):
         t.add_column(Text(heading), justify="right", no_wrap=True)
     t.add_column(Text("fit"), no_wrap=True)
-    t.add_column(Text("P(collapse) at demand"), justify="right", no_wrap=True)
+    t.add_column(Text("P(collapse) at FC·a_g·S"), justify="right", no_wrap=True)
     for i, c in enumerate(r.cases):
         fr = c.scatter.fragility if c.scatter is not None else None
         label = literal(f"━ {c.name}", case_style(i))
         if fr is None:
             t.add_row(label, "—", "—", Text("no fit (< 2 distinct collapses)", "dim"), "—")
             continue
-        p = fr.p_collapse_at_demand
+        p = lognormal_cdf(demand, fr.median, fr.beta)
         t.add_row(
             label,
             f"{fr.median:.4f}",
@@ -327,4 +342,35 @@ def sensitivity_table(r: AssessmentResult) -> Table | Text:
             ),
             f"{change:+.1%}",
         )
+    return t
+
+
+def summary_text(r: AssessmentResult) -> Text:
+    """The header of the Ranking view: the decision's demand FC·a_g·S, the wall, the
+    unreinforced case, the code check and the recommendation in words."""
+    w, urm, cc = r.wall, r.cases[0], r.code_check
+    demand = r.demand.pga
+    t = Text()
+    t.append(f"Demand FC·a_g·S = {urm.fc * demand:.3f} g (FC {urm.fc:g} × a_g·S ")
+    t.append(f"{demand:.3f} g);  wall α = {w.alpha_deg:.2f}°, ")
+    t.append(f"a_RM = {w.a_rm:.3f} g;  unreinforced a_dyn = {urm.design_a_dyn:.3f} g, ")
+    cd = fmt_against(urm.capacity_demand, r.model.target, urm.meets_target)
+    t.append(f"C/D = {cd}", "green" if urm.meets_target else "red")
+    t.append(f"\nDesign value: {r.model.design_value};  target C/D ≥ ")
+    t.append(f"{r.model.target:g};  code check (§C8.7.1): a0* = {cc.a0_star:.3f} g ")
+    t.append(f"vs {cc.demand:.3f} g → ")
+    t.append("satisfied" if cc.passed else "NOT satisfied", "green" if cc.passed else "red")
+    building = r.building
+    if building is not None:
+        t.append("\nShaken by: ", "bold")
+        t.append(printable(building.shaken_by))
+    if not r.input_code_compliant:
+        t.append(
+            "\nINPUT NOT CODE-COMPLIANT: the records fail the code's spectrum checks "
+            "(Compliance tab); no option is recommended",
+            "bold red",
+        )
+    t.append(f"\n{recommendation_label(r)}: ", "bold")
+    ok = r.recommended is not None or not r.retrofit_required
+    t.append(printable(recommendation_text(r)), "bold green" if ok else "red")
     return t

@@ -3,25 +3,26 @@ built and pivot check, code checks and sensitivity, design mode, spectrum compli
 
 Everything is read from the typed results of the run (:mod:`frp_assess.results.model`), as the PDF
 report does.  The ranking (:mod:`frp_assess.tui.ranking_table`): the highlighted row is the
-case shown in "Per record" and in the History tab.
+case shown in "Per record" and in the Time history tab.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 from functools import partial
-from typing import Any
+from typing import Any, ClassVar
 
 from rich import box
 from rich.table import Table
 from rich.text import Text
 from textual import on
 from textual.app import ComposeResult
+from textual.binding import Binding, BindingType
 from textual.containers import Horizontal, Vertical, VerticalScroll
-from textual.widgets import DataTable, Label, Select, Static, TabPane
+from textual.widgets import DataTable, Label, Select, Static, TabbedContent, TabPane, Tabs
 
-from frp_assess.numbers import fmt_against, recommendation_label, recommendation_text
 from frp_assess.results.model import AssessmentResult, CaseResult, RecordResult
+from frp_assess.tui.core.fragility import lognormal_cdf
 from frp_assess.tui.core.text import printable
 from frp_assess.tui.literal import literal
 from frp_assess.tui.plots import PlotView, Rule, Series
@@ -36,6 +37,7 @@ from frp_assess.tui.result_views import (
     kinematic_table,
     pivot_table,
     sensitivity_table,
+    summary_text,
 )
 from frp_assess.tui.tabbed import Tabbed
 
@@ -60,17 +62,39 @@ def _resurrection(rec: RecordResult) -> Text | str:
 #: before the note of the Results tab and in its title when the project file changed since
 #: the run shown (its digest is not the results', frp_assess/app/rerun.py)
 STALE_NOTE = "stale: the project changed since this run.  "
-STALE_TITLE = "Results (stale: the project changed since this run)"
+STALE_TITLE = "Results (stale)"  #: short: the tab bar holds every tab at 100 columns
+#: the note of the Results tab for a run of unsaved edits (tui/run_folders.py)
+SCRATCH_NOTE = (
+    "Results of unsaved edits (not the project file's: save, then ctrl+r, to keep them next "
+    "to it), in a scratch folder: "
+)
 
 
 class ResultsPane(Vertical):
-    """The results of the last run.
+    """The results of the last run; ``[`` and ``]`` show the previous and next view.
 
     Its views (eight tabs of tables and plots) are made the first time they are needed: its
     tab shown, or results to show (:meth:`build`); results given before they are mounted
     are shown once they are (:meth:`when_ready`).  Most sessions never show results: an
     app that does not make them opens faster.
     """
+
+    BINDINGS: ClassVar[list[BindingType]] = [
+        Binding("left_square_bracket", "view(-1)", "◀ View"),
+        Binding("right_square_bracket", "view(1)", "View ▶"),
+    ]
+
+    def action_view(self, step: int) -> None:
+        """Show the previous (``step`` -1) or next (1) view of the results, cyclically, and
+        put the focus on their tab bar (←/→ go on from there)."""
+        if not self.ready or self.results is None:
+            return
+        tabs = self.query_one("#results-tabs", TabbedContent)
+        ids = [pane.id for pane in tabs.query_children(TabPane) if pane.id]
+        ids = ids or [pane.id for pane in tabs.query(TabPane) if pane.id]
+        if tabs.active in ids:
+            tabs.active = ids[(ids.index(tabs.active) + step) % len(ids)]
+            tabs.query_one(Tabs).focus()
 
     def compose(self) -> ComposeResult:
         yield Static("No results yet: press ctrl+r to run the assessment.", id="results-note")
@@ -176,19 +200,24 @@ class ResultsPane(Vertical):
 
     # ------------------------------------------------------------------------- display
     def show(
-        self, results: AssessmentResult, out_dir: str, stale: bool = False, changed: bool = False
+        self,
+        results: AssessmentResult,
+        out_dir: str,
+        stale: bool = False,
+        changed: bool = False,
+        scratch: bool = False,
     ) -> None:
-        """Show a run's results (``changed``: the project file changed since the run)."""
-        if not self.when_ready(partial(self.show, results, out_dir, stale, changed)):
+        """Show a run's results (``changed``: the project file changed since the run;
+        ``scratch``: a run of unsaved edits, in a scratch folder)."""
+        if not self.when_ready(partial(self.show, results, out_dir, stale, changed, scratch)):
             return
         self.results = results
         self._out_dir = out_dir
+        self._scratch = scratch
         self.mark_stale(stale, changed)
         self.query_one("#results-tabs").display = True
         self._summary(results)
-        self.query_one(RankingTable).show(
-            results.cases, results.costs.currency, results.model.target
-        )
+        self.query_one(RankingTable).show(results)
         sel = self.query_one("#case-select", Select)
         with self.app.prevent(Select.Changed):
             sel.set_options([(literal(c.name), i) for i, c in enumerate(results.cases)])
@@ -223,40 +252,16 @@ class ResultsPane(Vertical):
         self.query_one("#results-note", Static).update(
             Text.assemble(
                 (STALE_NOTE if changed else "", "bold yellow"),
-                ("Results of the last run, in ", "dim"),
+                (SCRATCH_NOTE, "bold yellow")
+                if self._scratch
+                else ("Results of the last run, in ", "dim"),
                 (printable(f"{self._out_dir}/"), ""),
                 ("  (edited since: ctrl+r to rerun)" if stale else "", "yellow"),
             )
         )
 
     def _summary(self, r: AssessmentResult) -> None:
-        w, urm, cc = r.wall, r.cases[0], r.code_check
-        demand = r.demand.pga
-        rec = r.recommended
-        t = Text()
-        t.append(f"Demand a_g·S = {demand:.3f} g;  wall α = {w.alpha_deg:.2f}°, ")
-        t.append(f"a_RM = {w.a_rm:.3f} g;  unreinforced a_dyn = {urm.design_a_dyn:.3f} g, ")
-        cd = fmt_against(urm.capacity_demand, r.model.target, urm.meets_target)
-        t.append(f"C/D = {cd}", "green" if urm.meets_target else "red")
-        t.append(f"\nDesign value: {r.model.design_value};  target C/D ≥ ")
-        t.append(f"{r.model.target:g};  code check (§C8.7.1): a0* = {cc.a0_star:.3f} g ")
-        t.append(f"vs {cc.demand:.3f} g → ")
-        t.append("satisfied" if cc.passed else "NOT satisfied", "green" if cc.passed else "red")
-        building = r.building
-        if building is not None:
-            t.append("\nShaken by: ", "bold")
-            t.append(printable(building.shaken_by))
-        if not r.input_code_compliant:
-            t.append(
-                "\nINPUT NOT CODE-COMPLIANT: the records fail the code's spectrum checks "
-                "(Compliance tab); no option is recommended",
-                "bold red",
-            )
-        t.append(f"\n{recommendation_label(r)}: ", "bold")
-        t.append(
-            printable(recommendation_text(r)), "bold green" if rec or urm.meets_target else "red"
-        )
-        self.query_one("#results-summary", Static).update(t)
+        self.query_one("#results-summary", Static).update(summary_text(r))
 
     def show_case(self, index: int) -> None:
         """The IDA result per record of case ``index``."""
@@ -305,11 +310,12 @@ class ResultsPane(Vertical):
             t.append(")")
             fr = sc.fragility
             if fr:
-                p = fr.p_collapse_at_demand
+                demand = c.fc * r.demand.pga  # the decision's demand, FC·a_g·S
+                p = lognormal_cdf(demand, fr.median, fr.beta)
                 shown = "< 0.1 %" if p < 1e-3 else f"{p:.1%}"
                 t.append(
                     f"\nfragility (lognormal): median {fr.median:.4f} g, β = {fr.beta:.2f}; "
-                    f"P(collapse) at a_g·S = {shown}",
+                    f"P(collapse) at FC·a_g·S = {demand:.3f} g: {shown}",
                     "yellow" if p >= 0.1 else "",
                 )
         t.append_text(case_details(c))

@@ -150,6 +150,20 @@ def test_none_passes_names_the_closest():
     assert d.recommended is None and d.closest == 2 and d.order == (2, 1)
 
 
+def test_when_a_record_falls_everywhere_the_closest_is_the_strongest_not_the_cheapest():
+    """Every option's time history SLV has a record beyond d0 (peak inf: it fell), so each
+    governing margin is 0 and ties. Closest to passing means the largest IDA margin:
+    A (cheap) a_dyn 0.24 g → 0.24/0.3 = 0.8, B 0.27 g → 0.9, C (dearest) 0.285 g → 0.95.
+    The rule before issue 39 broke the tie by cost and named A, the weakest."""
+    fell = (0.02,) * 6 + (math.inf,)
+    a = ev("A", 10.0, 0.24, fell)
+    b = ev("B", 20.0, 0.27, fell)
+    c = ev("C", 30.0, 0.285, fell)
+    d = decide([ev("URM", 0.0, 0.1, unreinforced=True), a, b, c])
+    assert all(d.verdicts[i].governing_margin == 0.0 for i in (1, 2, 3))
+    assert d.recommended is None and d.closest == 3 and d.order == (3, 2, 1)
+
+
 def test_the_unreinforced_wall_is_decided_but_never_recommended():
     d = decide([ev("URM", 0.0, 0.45, unreinforced=True), ev("A", 10.0, 0.45)])
     assert d.verdicts[0].passes and d.recommended == 1 and 0 not in d.order

@@ -15,8 +15,9 @@ import pytest
 from reportlab.platypus import KeepTogether, Paragraph, Table
 
 from frp_assess.report.doc_model import Document, markup_text, plain_texts
-from frp_assess.report.document import build_document, build_docx, build_report, build_story
+from frp_assess.report.document import build_document, build_docx
 from frp_assess.report.lang import LANGUAGES, Lang
+from frp_assess.report.pdf_document import build_report, build_story
 from frp_assess.results.json_io import from_json
 from frp_assess.results.model import AssessmentResult, ReportSettings
 from tests.report.test_report import DATA

@@ -13,8 +13,8 @@ import pytest
 from frp_assess.report import build_report, build_story
 from frp_assess.report import tables as tb
 from frp_assess.report.charts import ratio_note
-from frp_assess.report.document import pdf_date
 from frp_assess.report.flow import PARAGRAPH_MAX_CHARS
+from frp_assess.report.pdf_document import pdf_date
 from frp_assess.text_safety import PDF_MAX_CHARS, PDF_MAX_WORD, PLACEHOLDER
 from tests.report.test_report import raw, story_text, typed
 
@@ -141,11 +141,18 @@ def test_capacity_shown_agrees_with_the_verdict(results: dict[str, Any]) -> None
     case = _first_option(r)
     case["capacity_demand"] = target * 0.997
     case["meets_target"] = False
+    case["passes"] = False
     case["lower_bound"] = False
     for rec in case["records"]:
         rec["collapse_multiplier"] = rec["collapse_multiplier"] or 1.0
     row = next(row for row in tb.ranking_table(typed(r)).rows if row[1] == case["name"])
-    assert float(row[11]) < target and row[12] == "no"
+    assert float(row[11]) < target and row[12] == "FAIL"
+    # the IDA above its target but a time-history check failing (issue 39: GFRP external
+    # 3 ‰ at 2.45): the verdict column is the decision's, not the IDA's
+    case["capacity_demand"] = target * 2.45
+    case["meets_target"] = True
+    row = next(row for row in tb.ranking_table(typed(r)).rows if row[1] == case["name"])
+    assert float(row[11]) > target and row[12] == "FAIL"
 
 
 def test_names_and_codes_wrap_inside_their_cells(results: dict[str, Any]) -> None:

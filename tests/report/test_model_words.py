@@ -54,7 +54,8 @@ def test_crushing_pivot_a_rm_is_labelled_with_its_formula(tmp_path: Path) -> Non
     x = int(m.group(1)) / 1000
     assert float(value.split()[0]) == pytest.approx((0.3 - x) / 3.0, abs=1e-3)
     text = story_text(build_story(r))
-    assert "crushed under its weight" in text
+    assert "half the compressed zone under its weight" in text
+    assert "crushed under its weight" not in text  # the base does not crush at rest
     assert "against g·tan α = 0.100 g about the edge" in text
 
 
@@ -63,7 +64,7 @@ def test_edge_pivot_a_rm_is_g_tan_alpha(tmp_path: Path) -> None:
     label, value = tb.wall_property_rows(r)[-1]
     assert label == "rocking activation a_RM = g·tan α"
     assert value == "0.100 g"
-    assert "crushed under its weight" not in story_text(build_story(r))
+    assert "half the compressed zone under its weight" not in story_text(build_story(r))
 
 
 def test_rupture_strain_words_follow_design_values(tmp_path: Path) -> None:
@@ -82,13 +83,16 @@ def test_rupture_strain_words_follow_design_values(tmp_path: Path) -> None:
 
 
 def test_pivot_paragraph_states_the_rule_the_model_ran(tmp_path: Path) -> None:
-    """docs/model.md §1.1: the crushing pivot is a constant shift x/2 (x of W + T_u) held for
-    the whole time history, not a pivot following the compression; the edge pivot drops an
-    option beyond x/B = 0.10 (DEFAULT_PIVOT_LIMIT), which the paragraph must state."""
+    """docs/model.md §1.1 (issue 39: the paragraph described a model that no longer ran): the
+    wall turns about its corner, the base reaction N = W + T(θ) acts at x/2 and follows the
+    bars at every instant, the toe crushes when x reaches the acting bar, nothing is dropped;
+    with the edge pivot the paragraph states the x/B = 0.10 limit (DEFAULT_PIVOT_LIMIT) at
+    which the edge model overstates the lever arm, without dropping anything."""
     r = small_result(tmp_path)
     text = as_built_section.masonry_text(r)
-    assert "held for the whole time history" in text
-    assert "as the compression grows" not in text
+    assert "follows the bars at every instant" in text
+    assert "the toe crushes" in text and "No option is dropped" in text
+    assert "held for the whole" not in text and "sized on" not in text
     edge = replace(
         r,
         cases=tuple(
@@ -98,7 +102,7 @@ def test_pivot_paragraph_states_the_rule_the_model_ran(tmp_path: Path) -> None:
     )
     text = as_built_section.masonry_text(edge)
     assert "deeper than x/B = 0.10" in text
-    assert "stated fraction" not in text
+    assert "dropped when" not in text and "stated fraction" not in text
 
 
 def test_record_files_are_not_called_recorded_records(tmp_path: Path) -> None:
@@ -144,4 +148,7 @@ def test_fc_sentence_does_not_contradict_its_knowledge_level(tmp_path: Path) -> 
     )
     assert "Knowledge level LC2, confidence factor FC = 1.2 " in text
     assert "divided by the same confidence factor, FC = 1.2:" in text
-    assert "1.35" not in text.split("For a rigid block")[0]
+    assert "1.35" not in text.split("Circolare 2019 §C8.7.1.2.1.3")[0]
+    # the LC1 rule is stated as not applying, with the FC that does apply (issue 39: "the FC
+    # sentence cites LC1 beside FC = 1.2")
+    assert "so the FC of the knowledge level reached applies: FC = 1.2 (LC2)" in text

@@ -23,10 +23,11 @@ from frp_assess.api import run_assessment
 from frp_assess.assess.inputs import DesignRequest
 from frp_assess.assess.results import case_failure_mode
 from frp_assess.assess.runner import design_search
-from frp_assess.cli.cmd_run import built_lines, dropped_lines, ranking_rows
-from frp_assess.report import as_built_section
-from frp_assess.report.document import build_report
-from frp_assess.report.tables import ranking_table
+from frp_assess.cli.cmd_run import built_lines
+from frp_assess.cli.ranking import dropped_lines, ranking_rows
+from frp_assess.report import as_built_section, pivot_section
+from frp_assess.report.pdf_document import build_report
+from frp_assess.report.tables import EN, ranking_table
 from frp_assess.results.json_io import from_json, to_json
 from frp_assess.results.model import AssessmentResult
 from tests.assess.test_as_built import RatioRunner, inputs_of
@@ -121,8 +122,13 @@ def test_a_file_with_a_dropped_option_still_reads_and_shows_why(tmp_path: Path) 
     assert dropped_lines(result) == ["B: x/B = 0.600; dropped: too deep"]
     assert [row[0] for row in ranking_table(result).rows] == ["—", "1", "dropped"]
     assert as_built_section.dropped_reasons(result) == ["B: x/B = 0.600; dropped: too deep"]
-    pivot_rows = as_built_section.pivot_table(result.cases).rows
-    assert [row[-1] for row in pivot_rows] == ["holds", "holds", "dropped"]
+    # the pivot table states how each record's collapse ended, not "holds"/"dropped"
+    # (issue 39: "holds" beside options whose every record fails by crushing)
+    pivot_rows = pivot_section.pivot_table(result, EN).rows
+    assert [row[0] for row in pivot_rows] == [c.name for c in result.cases]
+    for row, case in zip(pivot_rows, result.cases, strict=True):
+        assert row[-1] == pivot_section.modes_text(case, EN)
+        assert "holds" not in row[-1] and "dropped" not in row[-1]
 
 
 def test_new_fields_round_trip_and_old_files_still_read(tmp_path: Path) -> None:
@@ -179,7 +185,7 @@ def test_the_report_sections_render(tmp_path: Path) -> None:
     )
     flow = as_built_section.section(r)
     text = " ".join(getattr(f, "text", "") or getattr(f, "markup", "") for f in flow)
-    assert "The retrofit as built" in text and "The masonry at the pivot" in text
+    assert "The retrofit as built" in text and "The masonry at the base" in text
     assert "c·η_a·ε_fk/γ_f" in text or "mean producer values" in text
     assert len(as_built_section.layout_table(r).rows) == 2
     assert [row[0] for row in as_built_section.anchorage_table(r).rows] == [

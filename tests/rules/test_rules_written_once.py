@@ -57,6 +57,12 @@ ALLOWED: dict[tuple[str, str], str] = {
     ("tui/result_views.py", "0.85"): "a table title typed in the TUI, outside issue 37's "
     "rules branch (the brief keeps tui/ for its own change): build it from STRESS_BLOCK_FACTOR",
     ("tui/wall_pane.py", "0.85"): "as above, the x_W row of the wall pane",
+    # NTC 2018 §10.2's independent checks re-derive the model by another route on purpose: a
+    # check that called rules.impact would certify the rule by itself
+    ("assess/independent_checks.py", "1 - 1.5 * math.sin(a) ** 2"): "Housner's ratio written "
+    "out in the independent energy-balance check (NTC 2018 §10.2), not taken from rules/",
+    ("assess/independent_checks.py", "1 - 1.5 * math.cos(a) ** 2"): "as above, the restraint's "
+    "factor of Eq. 14",
 }
 
 

@@ -336,7 +336,9 @@ def test_export_pdf_and_help(small_project: Path, tmp_path: Path):
             await pilot.press("ctrl+e")
             await settle(pilot, lambda: bool(app.screen.query("#path-input")))
             box = app.screen.query_one("#path-input", Input)
-            assert box.value == str(default_out_dir(small_project))
+            # proposed: <stem>-export/ next to the project, never the results folder itself
+            assert box.value == str(small_project.with_name("small-export"))
+            assert box.value != str(default_out_dir(small_project))
             # the rule of `run --out`: the folder that holds the export must exist
             box.value = str(tmp_path / "missing" / "exported")
             await pilot.press("enter")

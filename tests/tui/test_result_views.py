@@ -115,13 +115,15 @@ def test_fragility_plot_has_every_fitted_case_and_the_demand(run: Run):
     series, options = fragility_plot(r)
     assert [s.label for s in series] == [c.name for c in fitted]
     (rule,) = options["rules"]
-    assert rule.axis == "x" and rule.value == r.demand.pga
+    # the decision's demand FC·a_g·S (tests/report/data, the small project: FC of LC2)
+    demand = r.urm.fc * r.demand.pga
+    assert rule.axis == "x" and rule.value == demand and "FC·a_g·S" in rule.label
     for s, c in zip(series, fitted, strict=True):
         fr = c.scatter.fragility
         assert fr is not None
         dist = stats.lognorm(s=fr.beta, scale=fr.median)
         assert list(s.y) == pytest.approx([dist.cdf(x) for x in s.x], abs=1e-12)
-        # the probability the run reports at the demand lies on the curve drawn
+        # the probability the run reports at a_g·S lies on the curve drawn
         assert lognormal_cdf(r.demand.pga, fr.median, fr.beta) == pytest.approx(
             fr.p_collapse_at_demand, rel=1e-9, abs=1e-12
         )
@@ -415,9 +417,10 @@ def test_ranking_cd_agrees_with_the_ida_check_and_shows_the_verdict():
         governing_check="time history SLV",
         governing_margin=0.22,
     )
-    cells = {header: cell(case, 1.0) for header, _, cell in RANKING_COLUMNS}
+    results = typed(raw())
+    cells = {header: cell(case, results) for header, _, cell in RANKING_COLUMNS}
     assert cells["C/D"] == "0.997"
     assert cells["verdict"].plain == "fails"
-    assert cells["governing"] == "time history SLV" and cells["margin"] == "0.22"
+    assert cells["governs"] == "TH SLV" and cells["margin"] == "0.22"
     passing = replace(case, capacity_demand=1.004, meets_target=True, lower_bound=True)
-    assert {h: cell(passing, 1.0) for h, _, cell in RANKING_COLUMNS}["C/D"] == "≥ 1.00"
+    assert {h: cell(passing, results) for h, _, cell in RANKING_COLUMNS}["C/D"] == "≥ 1.00"

@@ -14,7 +14,7 @@ TABS: tuple[tuple[str, str], ...] = (
     ("tab-analysis", "Analysis"),
     ("tab-run", "Run"),
     ("tab-results", "Results"),
-    ("tab-history", "History"),
+    ("tab-history", "Time history"),
 )
 
 

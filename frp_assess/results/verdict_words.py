@@ -1,0 +1,76 @@
+"""The words every output uses for the decision of a case (the console's ranking, results.csv,
+the TUI's ranking): read from results.json's decision only (``passes``, ``recommended``,
+``retrofit_required``, ``input_code_compliant``, ``governing_check``), never recomputed.
+
+- :func:`verdict_word`: "recommended", "passes", "fails" or "—" (a file written before the
+  decision);
+- :func:`governing_short`: the governing check's short name for a narrow column, with
+  :data:`GOVERNING_LEGEND` saying what each short name is.
+"""
+
+from __future__ import annotations
+
+from frp_assess.results.model import AssessmentResult, CaseResult
+
+__all__ = [
+    "FAILS",
+    "GOVERNING_LEGEND",
+    "PASSES",
+    "RECOMMENDED",
+    "UNDECIDED",
+    "governing_short",
+    "is_recommendation",
+    "verdict_word",
+]
+
+RECOMMENDED = "recommended"
+PASSES = "passes"
+FAILS = "fails"
+UNDECIDED = "—"
+
+#: short names of the deciding checks (results.json ``governing_check``) for narrow columns
+_SHORT = {
+    "IDA capacity/demand": "IDA",
+    "time history SLV": "TH SLV",
+    "time history SLC": "TH SLC",
+    "pivot check": "pivot",
+}
+
+#: what the short names of :func:`governing_short` stand for, one line
+GOVERNING_LEGEND = (
+    "IDA: design a_dyn/(FC·a_g·S) against the target; TH SLV, TH SLC: time-history check "
+    "of Circolare 2019 §C8.7.1.2.1.9 at SLV, SLC"
+)
+
+
+def is_recommendation(results: AssessmentResult, case: CaseResult) -> bool:
+    """``case`` is the option the decision tells the engineer to install: the recommended
+    option (results.json ``recommended``) of a wall that needs a retrofit
+    (``retrofit_required``), with code-compliant records.  The cheapest passing option of a
+    wall that passes unreinforced is optional margin, not a recommendation."""
+    return (
+        case.passes is True
+        and not case.is_unreinforced
+        and case.name == results.recommended
+        and results.retrofit_required
+        and results.input_code_compliant
+    )
+
+
+def verdict_word(results: AssessmentResult, case: CaseResult) -> str:
+    """The decision on ``case`` in one word: :data:`RECOMMENDED` (:func:`is_recommendation`),
+    :data:`PASSES` (every deciding check passes), :data:`FAILS`, or :data:`UNDECIDED` for a
+    file written before the decision (``passes`` null)."""
+    if case.passes is None:
+        return UNDECIDED
+    if not case.passes:
+        return FAILS
+    return RECOMMENDED if is_recommendation(results, case) else PASSES
+
+
+def governing_short(check: str | None) -> str:
+    """The governing check's short name (:data:`GOVERNING_LEGEND`); another name as it is,
+    "—" for none."""
+    if check is None:
+        return UNDECIDED
+    return _SHORT.get(check, check)
