@@ -1,4 +1,5 @@
-"""Small file helpers: every output is written atomically (temp file, then rename).
+"""Small file helpers: every output is written atomically (temp file, then rename), and every
+file the tool reads back is checked before it is read (:func:`read_regular`).
 
 Temporary files are created next to the target (same file system, so the rename is atomic)
 and get the permissions an ordinary ``open`` would give (0666 minus the umask), not the
@@ -8,11 +9,14 @@ and get the permissions an ordinary ``open`` would give (0666 minus the umask), 
 from __future__ import annotations
 
 import os
+import stat
 import tempfile
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
 from typing import TextIO
+
+from frp_assess.errors import InputError
 
 
 def _umask() -> int:
@@ -53,3 +57,49 @@ def atomic_write_text(path: str | Path, text: str) -> None:
     """Write ``text`` to ``path`` so that readers never see a half-written file."""
     with atomic_open(path) as fh:
         fh.write(text)
+
+
+def _kind(mode: int) -> str:
+    if stat.S_ISDIR(mode):
+        return "a folder"
+    if stat.S_ISFIFO(mode):
+        return "a pipe (FIFO)"
+    if stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
+        return "a device"
+    if stat.S_ISSOCK(mode):
+        return "a socket"
+    return "not a regular file"
+
+
+def read_regular(path: str | Path, what: str, max_bytes: int) -> bytes:
+    """The bytes of ``path`` if it is a regular file of at most ``max_bytes``, else one
+    :class:`~frp_assess.errors.InputError` naming the file (``what`` says what it is for).
+
+    The file is opened without blocking (``O_NONBLOCK``: opening a FIFO does not wait for a
+    writer) and checked on the open descriptor (``fstat``), so that a FIFO, a device
+    (``/dev/zero``), a folder or a file too large is refused before a byte is read, and a file
+    swapped between a check and the read cannot slip through.  At most ``max_bytes + 1``
+    bytes are ever read (a file growing while read).
+    """
+    name = str(path)
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | os.O_NOCTTY)
+    except FileNotFoundError:
+        raise InputError(f"no such {what}", file=name) from None
+    except OSError as exc:
+        raise InputError(f"cannot read the {what}: {exc.strerror or exc}", file=name) from None
+    with os.fdopen(fd, "rb") as handle:
+        info = os.fstat(fd)
+        if not stat.S_ISREG(info.st_mode):
+            raise InputError(f"is {_kind(info.st_mode)}, not a {what}", file=name)
+        if info.st_size > max_bytes:
+            raise InputError(
+                f"is {info.st_size} bytes; a {what} is at most {max_bytes} bytes", file=name
+            )
+        try:
+            raw = handle.read(max_bytes + 1)
+        except OSError as exc:
+            raise InputError(f"cannot read the {what}: {exc.strerror or exc}", file=name) from None
+    if len(raw) > max_bytes:  # grew since it was opened
+        raise InputError(f"is more than the {max_bytes} bytes a {what} can have", file=name)
+    return raw
