@@ -59,7 +59,8 @@ def atomic_write_text(path: str | Path, text: str) -> None:
         fh.write(text)
 
 
-def _kind(mode: int) -> str:
+def file_kind(mode: int) -> str:
+    """What a file of ``mode`` (``st_mode``) that is not a regular file is, in words."""
     if stat.S_ISDIR(mode):
         return "a folder"
     if stat.S_ISFIFO(mode):
@@ -91,7 +92,7 @@ def read_regular(path: str | Path, what: str, max_bytes: int) -> bytes:
     with os.fdopen(fd, "rb") as handle:
         info = os.fstat(fd)
         if not stat.S_ISREG(info.st_mode):
-            raise InputError(f"is {_kind(info.st_mode)}, not a {what}", file=name)
+            raise InputError(f"is {file_kind(info.st_mode)}, not a {what}", file=name)
         if info.st_size > max_bytes:
             raise InputError(
                 f"is {info.st_size} bytes; a {what} is at most {max_bytes} bytes", file=name
@@ -103,3 +104,17 @@ def read_regular(path: str | Path, what: str, max_bytes: int) -> bytes:
     if len(raw) > max_bytes:  # grew since it was opened
         raise InputError(f"is more than the {max_bytes} bytes a {what} can have", file=name)
     return raw
+
+
+#: the largest results.json read back (as frp_assess.report.document's limit) [bytes]
+MAX_RESULTS_BYTES = 64 * 1024 * 1024
+
+
+def read_results_text(path: str | Path) -> str:
+    """The UTF-8 text of a stored results.json (:func:`read_regular`: a FIFO, a device, a
+    folder or a file over :data:`MAX_RESULTS_BYTES` is one InputError naming it)."""
+    raw = read_regular(path, "results file", MAX_RESULTS_BYTES)
+    try:
+        return raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise InputError(f"is not UTF-8 text (byte {exc.start})", file=str(path)) from None

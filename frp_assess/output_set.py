@@ -58,6 +58,7 @@ from pathlib import Path
 from types import TracebackType
 
 from frp_assess.errors import InputError
+from frp_assess.io_utils import file_kind
 from frp_assess.output_record import (
     MANIFEST_NAME,
     REPORT_NAMES,
@@ -218,11 +219,20 @@ class FolderLock:
         refuse_links(d, self.key)
         try:
             d.mkdir(parents=True, exist_ok=True)
-            fd = os.open(d / LOCK_NAME, os.O_RDWR | os.O_CREAT | os.O_NOFOLLOW, 0o644)
+            flags = os.O_RDWR | os.O_CREAT | os.O_NOFOLLOW | os.O_NONBLOCK | os.O_NOCTTY
+            fd = os.open(d / LOCK_NAME, flags, 0o644)
         except OSError as exc:
             raise InputError(
                 f"cannot use {d} as the results folder: {exc.strerror}", key=self.key
             ) from None
+        mode = os.fstat(fd).st_mode
+        if not stat.S_ISREG(mode):  # a FIFO or a device: flock would fail with EINVAL
+            os.close(fd)
+            raise InputError(
+                f"{d / LOCK_NAME} is {file_kind(mode)}, not the lock file frp-assess makes "
+                "there; remove it or choose another folder",
+                key=self.key,
+            )
         try:
             fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except OSError as exc:

@@ -39,6 +39,7 @@ from frp_assess.assess.verdict_pipeline import assess_and_decide
 from frp_assess.assess.verification import verify
 from frp_assess.config import Project
 from frp_assess.errors import Cancelled, InputError
+from frp_assess.io_utils import read_results_text
 from frp_assess.motions import ComplianceReport
 from frp_assess.results.json_io import from_json
 from frp_assess.results.model import (
@@ -401,8 +402,8 @@ def load_previous(
     """
     stored = Path(out_dir) / "results.json"
     try:
-        previous = from_json(stored.read_text(encoding="utf-8"), file=str(stored))
-    except (OSError, UnicodeDecodeError, InputError):  # none, or not readable as this version
+        previous = from_json(read_results_text(stored), file=str(stored))
+    except InputError:  # none, or not readable as this version
         return None
     inputs = inputs_from_project(project, base_dir, input_file)
     seismic = prepare_records(inputs)

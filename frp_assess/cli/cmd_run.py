@@ -243,10 +243,11 @@ def run(args: argparse.Namespace) -> int:
 
 def _unchanged(out_dir: Path, created: str) -> int:
     """Nothing changed since the stored run: say so and print its summary (results.json)."""
+    from frp_assess.io_utils import read_results_text
     from frp_assess.results.json_io import from_json
 
     stored = out_dir / "results.json"
-    results = from_json(stored.read_text(encoding="utf-8"), file=str(stored))
+    results = from_json(read_results_text(stored), file=str(stored))
     console = make_console()
     console.print(f"unchanged since {user(created)}: nothing to recompute")
     print_summary(console, results)
