@@ -196,12 +196,14 @@ def check_out_dir(path: Path, key: str = "--out") -> Path:
 
 class FolderLock:
     """Exclusive lock of a results folder (see the module docstring); re-entrant within one
-    process.  Creates the folder if needed."""
+    process.  Creates the folder if needed, and removes it again on leaving when nothing but
+    its ``.lock`` was written there (a run that failed before writing leaves no folder)."""
 
     def __init__(self, directory: Path, key: str = "--out") -> None:
         self.directory = Path(directory)
         self.key = key
         self._fd: int | None = None
+        self._created = False  #: the lock made the folder (then it removes it if left empty)
 
     def __enter__(self) -> FolderLock:
         d = self.directory
@@ -217,6 +219,35 @@ class FolderLock:
                 key=self.key,
             )
         refuse_links(d, self.key)
+        created = not os.path.lexists(d)
+        for _ in range(3):
+            fd = self._open_locked(d)
+            try:  # the lock file a holder removed on leaving (an empty folder): lock again
+                same = os.path.samestat(os.fstat(fd), os.lstat(d / LOCK_NAME))
+            except OSError:
+                same = False
+            if same:
+                break
+            os.close(fd)
+        else:
+            raise InputError(f"cannot lock {d}: its lock file keeps being removed", key=self.key)
+        self._created = created
+        os.ftruncate(fd, 0)
+        os.write(fd, f"{os.getpid()}\n".encode())
+        self._fd = fd
+        with _held_guard:
+            _held[real] = threading.get_ident()
+        try:
+            refuse_links(d, self.key)  # a link made between the check and the lock
+        except InputError:
+            self.__exit__(None, None, None)
+            raise
+        remove_leftovers(d)
+        return self
+
+    def _open_locked(self, d: Path) -> int:
+        """The descriptor of ``d/.lock`` (a regular file, created if needed) with the
+        exclusive lock taken; one InputError line if it cannot be (another holder, ...)."""
         try:
             d.mkdir(parents=True, exist_ok=True)
             flags = os.O_RDWR | os.O_CREAT | os.O_NOFOLLOW | os.O_NONBLOCK | os.O_NOCTTY
@@ -245,18 +276,7 @@ class FolderLock:
                     key=self.key,
                 ) from None
             raise
-        os.ftruncate(fd, 0)
-        os.write(fd, f"{os.getpid()}\n".encode())
-        self._fd = fd
-        with _held_guard:
-            _held[real] = threading.get_ident()
-        try:
-            refuse_links(d, self.key)  # a link made between the check and the lock
-        except InputError:
-            self.__exit__(None, None, None)
-            raise
-        remove_leftovers(d)
-        return self
+        return fd
 
     def __exit__(
         self,
@@ -268,6 +288,13 @@ class FolderLock:
             return
         with _held_guard:
             _held.pop(Path(os.path.realpath(self.directory)), None)
+        if self._created:  # a folder this lock made and nothing else wrote into: not left
+            try:
+                if os.listdir(self.directory) == [LOCK_NAME]:
+                    os.unlink(self.directory / LOCK_NAME)
+                    os.rmdir(self.directory)
+            except OSError:
+                pass
         fcntl.flock(self._fd, fcntl.LOCK_UN)
         os.close(self._fd)
         self._fd = None

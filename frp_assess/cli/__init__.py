@@ -81,6 +81,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     command quietly (exit 0; stdout is pointed at /dev/null so the interpreter's final flush
     does not fail again).
     """
+    from frp_assess.cli.output import setup_streams
+
+    setup_streams()  # a console that is not UTF-8 prints what it can, never crashes
     try:
         words = sys.argv[1:] if argv is None else list(argv)
         parser = build_parser(words)  # imports the command's module: Ctrl-C may land here
