@@ -8,6 +8,7 @@ and get the permissions an ordinary ``open`` would give (0666 minus the umask), 
 
 from __future__ import annotations
 
+import datetime as _dt
 import os
 import stat
 import tempfile
@@ -118,3 +119,27 @@ def read_results_text(path: str | Path) -> str:
         return raw.decode("utf-8")
     except UnicodeDecodeError as exc:
         raise InputError(f"is not UTF-8 text (byte {exc.start})", file=str(path)) from None
+
+
+#: seconds since 1970-01-01 UTC that fix the date of a run (reproducible-builds.org)
+SOURCE_DATE_EPOCH = "SOURCE_DATE_EPOCH"
+
+
+def source_date() -> str | None:
+    """The ISO date (UTC) of ``SOURCE_DATE_EPOCH``, None when it is not set; one
+    :class:`~frp_assess.errors.InputError` when it is not whole seconds a date can have.
+    Checked by every command before it imports anything (a library may read the variable
+    too) and by the run that stamps the date (:func:`frp_assess.app.assessment.run_date`)."""
+    epoch = os.environ.get(SOURCE_DATE_EPOCH, "")
+    if not epoch:
+        return None
+    try:
+        if len(epoch) > 20:  # int() of thousands of digits is slow, and no date anyway
+            raise ValueError(epoch)
+        return _dt.datetime.fromtimestamp(int(epoch), tz=_dt.UTC).date().isoformat()
+    except (ValueError, OverflowError, OSError):
+        shown = epoch if len(epoch) <= 40 else f"{epoch[:40]}..."
+        raise InputError(
+            f"expected whole seconds since 1970-01-01 UTC, found {shown!r}",
+            key=SOURCE_DATE_EPOCH,
+        ) from None

@@ -12,7 +12,6 @@ cancellation are plain callables and :class:`threading.Event`, never UI objects.
 from __future__ import annotations
 
 import datetime as _dt
-import os
 import threading
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
@@ -39,7 +38,7 @@ from frp_assess.assess.verdict_pipeline import assess_and_decide
 from frp_assess.assess.verification import verify
 from frp_assess.config import Project
 from frp_assess.errors import Cancelled, InputError
-from frp_assess.io_utils import read_results_text
+from frp_assess.io_utils import SOURCE_DATE_EPOCH, read_results_text, source_date
 from frp_assess.motions import ComplianceReport
 from frp_assess.results.json_io import from_json
 from frp_assess.results.model import (
@@ -94,25 +93,11 @@ def _noop(stage: str, done: int, total: int) -> None:
     return None
 
 
-#: seconds since 1970-01-01 UTC that fix the date of a run (reproducible-builds.org)
-SOURCE_DATE_EPOCH = "SOURCE_DATE_EPOCH"
-
-
 def run_date() -> str:
     """The ISO date (``YYYY-MM-DD``, UTC) a run records as ``created``: the day of
     ``SOURCE_DATE_EPOCH`` [s since 1970-01-01 UTC] when that variable is set (the
     reproducible-builds convention: same input, same bytes), else today."""
-    epoch = os.environ.get(SOURCE_DATE_EPOCH, "")
-    if not epoch:
-        return _dt.date.today().isoformat()
-    try:
-        when = _dt.datetime.fromtimestamp(int(epoch), tz=_dt.UTC)
-    except (ValueError, OverflowError, OSError):
-        raise InputError(
-            f"expected whole seconds since 1970-01-01 UTC, found {epoch!r}",
-            key=SOURCE_DATE_EPOCH,
-        ) from None
-    return when.date().isoformat()
+    return source_date() or _dt.date.today().isoformat()
 
 
 def prepare_records(inputs: AssessmentInputs) -> SeismicInput:

@@ -1,0 +1,48 @@
+"""Inputs that `run` refused but other commands crashed on (issue 36 item 5): a YAML whole number
+beyond int()'s 4,300 digits (validate, run, study: the one YAML reader, config/yaml_source.py)
+and a malformed SOURCE_DATE_EPOCH, which numpy.f2py reads while scipy is imported (checked
+first by cli.main for every command, io_utils.source_date).  One line, exit 2."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from frp_assess.cli import main
+from tests.cli.outputs_helpers import ROOT, TINY, cli_command
+
+HUGE = "9" * 5000
+
+
+@pytest.mark.parametrize("command", ["validate", "run", "study"])
+def test_a_whole_number_of_5000_digits(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], command: str
+) -> None:
+    path = tmp_path / "p.yaml"
+    path.write_text(TINY.replace("count: 2", f"count: {HUGE}"), encoding="utf-8")
+    capsys.readouterr()
+    assert main([command, str(path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "5000 digits" in err and ":6:" in err, err
+    assert not (tmp_path / "p-results").exists()
+
+
+@pytest.mark.parametrize(
+    "epoch", ["abc", "1e99", "99999999999999999999", pytest.param(HUGE, id="5000-digits")]
+)
+def test_a_malformed_source_date_epoch_is_one_line_for_every_command(
+    tmp_path: Path, epoch: str
+) -> None:
+    path = tmp_path / "p.yaml"
+    path.write_text(TINY, encoding="utf-8")
+    env = dict(os.environ, PYTHONPATH=str(ROOT), SOURCE_DATE_EPOCH=epoch)
+    for args in (["validate", str(path)], ["run", str(path), "--jobs", "1"]):
+        done = subprocess.run(
+            cli_command(*args), env=env, capture_output=True, text=True, timeout=300
+        )
+        assert done.returncode == 2, done.stderr[-3000:]
+        assert done.stderr.count("\n") == 1 and "SOURCE_DATE_EPOCH: expected whole" in done.stderr
+    assert not (tmp_path / "p-results").exists()
