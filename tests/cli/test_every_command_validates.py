@@ -46,3 +46,37 @@ def test_a_malformed_source_date_epoch_is_one_line_for_every_command(
         assert done.returncode == 2, done.stderr[-3000:]
         assert done.stderr.count("\n") == 1 and "SOURCE_DATE_EPOCH: expected whole" in done.stderr
     assert not (tmp_path / "p-results").exists()
+
+
+STUDY = (ROOT / "projects" / "paper-study-small.yaml").read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize(
+    ("line", "expected"),
+    [
+        ("height: [1.0e-300]", "expected a number in [0.5, 50]"),
+        ("alpha_deg: [1e-300]", "a wall is 0.05-5 m thick"),
+        ("thickness: [1e-300]", "expected a number in [0.05, 5]"),
+        ("building: {height: 10, storeys: 3, wall_base: [3.0], period: 1e-300}", "0.02"),
+        ("building: {height: 10, storeys: 3, wall_base: [3.0], period: 1.0e-9}", "0.02"),
+        ("building: {height: 1.0e-300, storeys: 1, wall_base: [0.0]}", "2"),
+    ],
+)
+def test_a_study_refuses_what_a_project_refuses(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], line: str, expected: str
+) -> None:
+    """The ranges of a project's wall and building blocks, in a study (it crashed with a
+    ZeroDivisionError, or ran a period of 1e-9 s, leaving parts-*/ behind)."""
+    key = line.split(":")[0]
+    text = "\n".join(
+        ln for ln in STUDY.splitlines() if not ln.startswith(key) and not ln.startswith("alpha")
+    )
+    if key != "alpha_deg" and key != "thickness":
+        text += "\nalpha_deg: [7.5]"
+    path = tmp_path / "s.yaml"
+    path.write_text(f"{text}\n{line}\n", encoding="utf-8")
+    capsys.readouterr()
+    assert main(["study", str(path), "--out", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and expected in err, err
+    assert not (tmp_path / "out").exists()
