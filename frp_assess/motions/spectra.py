@@ -350,6 +350,12 @@ def preset_spectrum(name: str) -> ElasticSpectrum:
     )
 
 
+#: the largest period [s] and spectral acceleration [g] of a table spectrum (a project's
+#: seismic.spectrum of type table, a study's or `records generate`'s 'table:...')
+MAX_TABLE_PERIOD = 100.0
+MAX_TABLE_SE = 20.0
+
+
 def table_spectrum(
     periods: ArrayLike, accelerations: ArrayLike, name: str = "table"
 ) -> ElasticSpectrum:
@@ -370,6 +376,12 @@ def table_spectrum(
     if np.any(np.diff(T) <= 0) or T[0] < 0 or np.any(S <= 0):
         raise InputError(
             "table periods must increase from T >= 0 and accelerations be > 0", key="spectrum"
+        )
+    if T[-1] > MAX_TABLE_PERIOD or S.max() > MAX_TABLE_SE:
+        raise InputError(
+            f"expected periods of at most {MAX_TABLE_PERIOD:g} s and accelerations of at most "
+            f"{MAX_TABLE_SE:g} g, found T up to {T[-1]:g} s and Se up to {S.max():g} g",
+            key="spectrum",
         )
     return ElasticSpectrum(
         name=name,

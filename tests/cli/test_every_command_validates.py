@@ -80,3 +80,24 @@ def test_a_study_refuses_what_a_project_refuses(
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and expected in err, err
     assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("command", ["records", "study"])
+def test_a_table_spectrum_of_1e300_g(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], command: str
+) -> None:
+    """A project's table refuses Se > 20 g; `records generate` wrote a record of zeros with
+    exit 1, and a study ran it: the same range in the one reader of 'table:...' texts."""
+    table = "table:0/1e300,1/1e300,4/1e300"
+    out = tmp_path / "out"
+    if command == "records":
+        argv = ["records", "generate", "--spectrum", table, "--count", "1", "--out", str(out)]
+    else:
+        path = tmp_path / "s.yaml"
+        path.write_text(STUDY.replace("spectrum: [A2]", f"spectrum: ['{table}']"), "utf-8")
+        argv = ["study", str(path), "--out", str(out)]
+    capsys.readouterr()
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "at most 20 g" in err, err
+    assert not out.exists()
