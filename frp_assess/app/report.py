@@ -128,14 +128,18 @@ def build_pdf(results: AssessmentResult, path: Path) -> bool:
     except (OSError, MemoryError):  # a full disk is not the report's fault: the set fails
         raise
     except Exception as exc:  # reportlab's LayoutError, a table's negative width, ...
-        reason = plain(str(exc).splitlines()[0] if str(exc) else type(exc).__name__)[:160]
         print(
             f"frp-assess: warning: report.pdf not written: the report could not be laid out "
-            f"({reason}); the other results are complete",
+            f"({_first_line(exc)}); the other results are complete",
             file=sys.stderr,
         )
         return False
     return True
+
+
+def _first_line(exc: BaseException) -> str:
+    """The first line of ``exc`` (its type when it has no text), plain, at most 160 chars."""
+    return plain(str(exc).splitlines()[0] if str(exc) else type(exc).__name__)[:160]
 
 
 def build_word(results: AssessmentResult, path: Path) -> bool:
@@ -244,4 +248,12 @@ def _build_report(results_dir: Path, out: Path, *, docx: bool) -> Path:
             build_report(results, out, story=build_story(results))
     except CONTRACT_ERRORS as exc:  # nothing written: both write atomically
         raise contract_error(exc, results_dir / "results.json") from None
+    except (OSError, MemoryError, InputError):
+        raise
+    except Exception as exc:  # reportlab's LayoutError (a 100,000-character currency), ...
+        raise InputError(
+            f"{out.name} not written: the report could not be laid out ({_first_line(exc)}); "
+            "a value of results.json is far from what a run writes",
+            file=str(results_dir / "results.json"),
+        ) from None
     return out

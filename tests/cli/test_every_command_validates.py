@@ -101,3 +101,26 @@ def test_a_table_spectrum_of_1e300_g(
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "at most 20 g" in err, err
     assert not out.exists()
+
+
+def test_report_of_results_it_cannot_lay_out(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A results.json with a currency of 100,000 characters (a run writes at most 12): the
+    PDF cannot be laid out (reportlab's LayoutError crashed `report`); one line naming
+    results.json, exit 2, no report.pdf."""
+    import json
+    import shutil
+
+    d = tmp_path / "d"
+    d.mkdir()
+    shutil.copy(ROOT / "tests" / "report" / "data" / "results.json", d / "results.json")
+    data = json.loads((d / "results.json").read_text(encoding="utf-8"))
+    data["costs"]["currency"] = "E" * 100_000
+    (d / "results.json").write_text(json.dumps(data), encoding="utf-8")
+    capsys.readouterr()
+    assert main(["report", str(d)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "results.json: report.pdf not written" in err, err
+    assert not (d / "report.pdf").exists()
+    assert not [p for p in d.iterdir() if p.name.startswith(".report.pdf")]  # no temporary
