@@ -212,10 +212,17 @@ def rebuild_report(results_dir: Path, out: Path | None = None, *, docx: bool = F
     from frp_assess.report.document import load_results
 
     results_dir = Path(results_dir)
+    if not results_dir.is_dir():
+        load_results(results_dir)  # the one line of a folder that is not there, first
     default = results_dir / ("report.docx" if docx else "report.pdf")
     out = check_out_file(Path(out) if out is not None else default)
-    if not results_dir.is_dir():
-        load_results(results_dir)  # the one line of a folder that is not there
+    other = ".pdf" if docx else ".docx"
+    if out.suffix.lower() == other:  # a Word file named r.pdf opens nowhere
+        raise InputError(
+            f"a {'Word' if docx else 'PDF'} report cannot be named {out.name!r}; give a name "
+            f"ending in {'.docx' if docx else '.pdf'}",
+            key="--out",
+        )
     if out.parent.resolve() != results_dir.resolve():
         return _build_report(results_dir, out, docx=docx)
     # into the results folder: under its lock, as `run` writes it, from the results.json read

@@ -124,3 +124,17 @@ def test_report_of_results_it_cannot_lay_out(
     assert err.count("\n") == 1 and "results.json: report.pdf not written" in err, err
     assert not (d / "report.pdf").exists()
     assert not [p for p in d.iterdir() if p.name.startswith(".report.pdf")]  # no temporary
+
+
+def test_report_names_what_is_wrong(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """`report nope` names the missing results folder (it said "--out: the folder nope does
+    not exist"); `report --docx --out r.pdf` wrote a Word file named r.pdf (issue 36 item 8)."""
+    capsys.readouterr()
+    assert main(["report", str(tmp_path / "nope")]) == 2
+    err = capsys.readouterr().err
+    assert "nope: not a results directory" in err and "--out" not in err, err
+    data = ROOT / "tests" / "report" / "data"
+    assert main(["report", str(data), "--docx", "--out", str(tmp_path / "r.pdf")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "ending in .docx" in err, err
+    assert not (tmp_path / "r.pdf").exists()
