@@ -18,6 +18,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from frp_assess.errors import InputError
+from frp_assess.motions.table_limits import check_table_range
 
 # --- EN 1998-1:2004 §3.2.2.2 ----------------------------------------------------------------
 
@@ -350,12 +351,6 @@ def preset_spectrum(name: str) -> ElasticSpectrum:
     )
 
 
-#: the largest period [s] and spectral acceleration [g] of a table spectrum (a project's
-#: seismic.spectrum of type table, a study's or `records generate`'s 'table:...')
-MAX_TABLE_PERIOD = 100.0
-MAX_TABLE_SE = 20.0
-
-
 def table_spectrum(
     periods: ArrayLike, accelerations: ArrayLike, name: str = "table"
 ) -> ElasticSpectrum:
@@ -377,12 +372,7 @@ def table_spectrum(
         raise InputError(
             "table periods must increase from T >= 0 and accelerations be > 0", key="spectrum"
         )
-    if T[-1] > MAX_TABLE_PERIOD or S.max() > MAX_TABLE_SE:
-        raise InputError(
-            f"expected periods of at most {MAX_TABLE_PERIOD:g} s and accelerations of at most "
-            f"{MAX_TABLE_SE:g} g, found T up to {T[-1]:g} s and Se up to {S.max():g} g",
-            key="spectrum",
-        )
+    check_table_range(T, S)  # the range of a project's table
     return ElasticSpectrum(
         name=name,
         kind="table",

@@ -23,7 +23,7 @@ from frp_assess.config.schema.spec_base import (
 )
 from frp_assess.errors import InputError
 from frp_assess.motions.site import SiteHazard, site_hazard
-from frp_assess.motions.spectra import MAX_TABLE_PERIOD, MAX_TABLE_SE
+from frp_assess.motions.table_limits import MAX_TABLE_PERIOD, MAX_TABLE_SE
 
 #: the hazard of a site, computed once per (latitude, longitude, V_N, use class)
 site_hazard_cached = functools.lru_cache(maxsize=64)(site_hazard)
