@@ -40,6 +40,7 @@ from frp_assess.config import Project
 from frp_assess.errors import Cancelled, InputError
 from frp_assess.io_utils import SOURCE_DATE_EPOCH, read_results_text, source_date
 from frp_assess.motions import ComplianceReport
+from frp_assess.output_set import check_out_dir
 from frp_assess.results.json_io import from_json
 from frp_assess.results.model import (
     AssessmentResult,
@@ -341,6 +342,7 @@ def run_prepared(
     """
     if cancel.is_set():
         raise Cancelled("cancelled")
+    check_out_dir(Path(out_dir), key="results folder")  # as `run --out`, before any work
     digest = None
     if project_file is not None:
         digest = project_digest(project_file, prepared.project)
