@@ -30,8 +30,8 @@ from frp_assess.dynamics.ida_search import (  # noqa: E402
     quiet_intervals,
     running_max_abs,
 )
+from frp_assess.dynamics.kernel import Buffers, Ground, simulate  # noqa: E402
 from frp_assess.dynamics.kernel import params as kp  # noqa: E402
-from frp_assess.dynamics.kernel import simulate  # noqa: E402
 from frp_assess.study import StudyPlan, load_study, study_records  # noqa: E402
 
 _COLLAPSE = (kp.FATE_FELL, kp.FATE_EXCEEDED, kp.FATE_CRUSHED)
@@ -46,8 +46,7 @@ def profile(study: Path, stride: int) -> dict[str, np.ndarray]:
     records = study_records(plan)
     settings = plan.ida_settings
     h = np.empty(1)
-    r_time = np.zeros(2)
-    r_side = np.zeros(2, dtype=np.int64)
+    buf = Buffers(h, h, h, np.zeros(2), np.zeros(2, dtype=np.int64))
     rows: list[tuple[float, ...]] = []
     warm = True
     for case in list(plan.cases(0, len(plan)))[::stride]:
@@ -69,7 +68,7 @@ def profile(study: Path, stride: int) -> dict[str, np.ndarray]:
             ):
                 start = quiet_intervals(peak_so_far, c, prm)
                 a = acc[start:]
-                args = (a, rec.dt, c, n_tail, prm, 0.0, 0.0, False, h, h, h, r_time, r_side)
+                args = (Ground(a, rec.dt, c, n_tail), prm, 0.0, 0.0, False, buf)
                 if warm:  # compile before timing
                     simulate(*args)
                     warm = False

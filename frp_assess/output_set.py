@@ -29,6 +29,16 @@ the IDA cache ``.cache/``.  The rules:
   ``results.json`` last.  ``results.json`` therefore only ever sits beside the files of its
   own run: a failure while writing (disk full, an exception in the PDF) leaves the old set
   untouched, and a kill during the swap leaves no ``results.json`` (no set) until the next run.
+- **Only its own files replaced** (:func:`refuse_foreign`): the tool records in
+  :data:`MANIFEST_NAME` the size and SHA-256 of every member it wrote (``records/`` file by
+  file).  A member in the folder that is not on that record (a project's own ``records/``
+  with the user's record files when ``--out`` is the project's folder, a report.pdf signed or
+  edited since, a ``results.csv`` of the user's) is never replaced nor deleted: the run, the
+  export or ``report`` is refused with one line before any work, and again under the lock
+  just before the swap.  A folder of an older version (no record, but the inputs sidecar
+  that holds the SHA-256 of its results.json) is taken as the tool's once.  During the
+  swap the record holds the old and the new members, so a kill at any moment leaves nothing
+  the next run would refuse.
 - **Stale leftovers** of a killed run (staging folders, temporary ``.*.tmp`` files of an
   atomic write) are removed by the next run once it holds the lock.
 """
@@ -42,29 +52,44 @@ import secrets
 import shutil
 import stat
 import threading
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from pathlib import Path
 from types import TracebackType
 
 from frp_assess.errors import InputError
-
-#: the members of a run's output set, ``results.json`` (the one that validates the set) last
-SET_NAMES: tuple[str, ...] = (
-    "results.csv",
-    "spectra.csv",
-    "records",
-    "report.pdf",
-    "report.docx",
-    "results.json",
+from frp_assess.io_utils import file_kind
+from frp_assess.output_record import (
+    MANIFEST_NAME,
+    REPORT_NAMES,
+    SET_NAMES,
+    SIDECAR_NAME,
+    known_members,
+    member_digests,
+    refuse_foreign,
+    write_record,
 )
+
+__all__ = [
+    "CACHE_NAME",
+    "LOCK_NAME",
+    "OWN_NAMES",
+    "SET_NAMES",
+    "FolderLock",
+    "check_out_dir",
+    "check_out_file",
+    "refuse_foreign",
+    "refuse_inputs_inside",
+    "refuse_links",
+    "staged_set",
+]
+
 LOCK_NAME = ".lock"
 STAGING_PREFIX = ".staging-"
 #: the IDA cache folder inside a results folder (as frp_assess.api.CACHE_DIR)
 CACHE_NAME = ".cache"
 #: every entry the tool makes in a results folder (beside staging folders and temporary files)
-OWN_NAMES: tuple[str, ...] = (LOCK_NAME, CACHE_NAME, *SET_NAMES)
-
+OWN_NAMES: tuple[str, ...] = (LOCK_NAME, CACHE_NAME, MANIFEST_NAME, SIDECAR_NAME, *SET_NAMES)
 #: folders locked by this process -> the thread holding the lock (re-entrant in that thread)
 _held: dict[Path, int] = {}
 _held_guard = threading.Lock()
@@ -165,17 +190,20 @@ def check_out_dir(path: Path, key: str = "--out") -> Path:
         raise InputError(f"{shown}{where} is not writable", key=key)
     check_parent(path, key)
     refuse_links(path, key)
+    refuse_foreign(path, key)
     return path
 
 
 class FolderLock:
     """Exclusive lock of a results folder (see the module docstring); re-entrant within one
-    process.  Creates the folder if needed."""
+    process.  Creates the folder if needed, and removes it again on leaving when nothing but
+    its ``.lock`` was written there (a run that failed before writing leaves no folder)."""
 
     def __init__(self, directory: Path, key: str = "--out") -> None:
         self.directory = Path(directory)
         self.key = key
         self._fd: int | None = None
+        self._created = False  #: the lock made the folder (then it removes it if left empty)
 
     def __enter__(self) -> FolderLock:
         d = self.directory
@@ -191,25 +219,19 @@ class FolderLock:
                 key=self.key,
             )
         refuse_links(d, self.key)
-        try:
-            d.mkdir(parents=True, exist_ok=True)
-            fd = os.open(d / LOCK_NAME, os.O_RDWR | os.O_CREAT | os.O_NOFOLLOW, 0o644)
-        except OSError as exc:
-            raise InputError(
-                f"cannot use {d} as the results folder: {exc.strerror}", key=self.key
-            ) from None
-        try:
-            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except OSError as exc:
-            holder = os.read(fd, 32).decode("ascii", "replace").strip() or "?"
+        created = not os.path.lexists(d)
+        for _ in range(3):
+            fd = self._open_locked(d)
+            try:  # the lock file a holder removed on leaving (an empty folder): lock again
+                same = os.path.samestat(os.fstat(fd), os.lstat(d / LOCK_NAME))
+            except OSError:
+                same = False
+            if same:
+                break
             os.close(fd)
-            if exc.errno in (errno.EWOULDBLOCK, errno.EACCES, errno.EAGAIN):
-                raise InputError(
-                    f"another frp-assess process (pid {holder}) is writing {d}; wait for it "
-                    "to finish or choose another folder",
-                    key=self.key,
-                ) from None
-            raise
+        else:
+            raise InputError(f"cannot lock {d}: its lock file keeps being removed", key=self.key)
+        self._created = created
         os.ftruncate(fd, 0)
         os.write(fd, f"{os.getpid()}\n".encode())
         self._fd = fd
@@ -223,6 +245,39 @@ class FolderLock:
         remove_leftovers(d)
         return self
 
+    def _open_locked(self, d: Path) -> int:
+        """The descriptor of ``d/.lock`` (a regular file, created if needed) with the
+        exclusive lock taken; one InputError line if it cannot be (another holder, ...)."""
+        try:
+            d.mkdir(parents=True, exist_ok=True)
+            flags = os.O_RDWR | os.O_CREAT | os.O_NOFOLLOW | os.O_NONBLOCK | os.O_NOCTTY
+            fd = os.open(d / LOCK_NAME, flags, 0o644)
+        except OSError as exc:
+            raise InputError(
+                f"cannot use {d} as the results folder: {exc.strerror}", key=self.key
+            ) from None
+        mode = os.fstat(fd).st_mode
+        if not stat.S_ISREG(mode):  # a FIFO or a device: flock would fail with EINVAL
+            os.close(fd)
+            raise InputError(
+                f"{d / LOCK_NAME} is {file_kind(mode)}, not the lock file frp-assess makes "
+                "there; remove it or choose another folder",
+                key=self.key,
+            )
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError as exc:
+            holder = os.read(fd, 32).decode("ascii", "replace").strip() or "?"
+            os.close(fd)
+            if exc.errno in (errno.EWOULDBLOCK, errno.EACCES, errno.EAGAIN):
+                raise InputError(
+                    f"another frp-assess process (pid {holder}) is writing {d}; wait for it "
+                    "to finish or choose another folder",
+                    key=self.key,
+                ) from None
+            raise
+        return fd
+
     def __exit__(
         self,
         exc_type: type[BaseException] | None,
@@ -233,6 +288,13 @@ class FolderLock:
             return
         with _held_guard:
             _held.pop(Path(os.path.realpath(self.directory)), None)
+        if self._created:  # a folder this lock made and nothing else wrote into: not left
+            try:
+                if os.listdir(self.directory) == [LOCK_NAME]:
+                    os.unlink(self.directory / LOCK_NAME)
+                    os.rmdir(self.directory)
+            except OSError:
+                pass
         fcntl.flock(self._fd, fcntl.LOCK_UN)
         os.close(self._fd)
         self._fd = None
@@ -281,7 +343,14 @@ def staged_set(out_dir: Path) -> Iterator[Path]:
 
 def swap_in(staging: Path, out_dir: Path) -> None:
     """Move the set written in ``staging`` into ``out_dir``, ``results.json`` removed first and
-    put back last (see the module docstring)."""
+    put back last (see the module docstring); refused (:func:`refuse_foreign`) if a member in
+    ``out_dir`` is not one the tool wrote.  The record of the members holds the old and the
+    new ones while they are swapped, the new ones only once done."""
+    refuse_foreign(out_dir)
+    known = known_members(out_dir) or {}
+    written = {rel: [d] for rel, d in member_digests(staging).items()}
+    both = {rel: sorted({*known.get(rel, []), *written.get(rel, [])}) for rel in {*known, *written}}
+    write_record(out_dir, both, {})
     (out_dir / "results.json").unlink(missing_ok=True)
     for name in SET_NAMES:
         new = staging / name
@@ -300,6 +369,8 @@ def swap_in(staging: Path, out_dir: Path) -> None:
                 shutil.rmtree(target)
             os.replace(new, target)
     _fsync_dir(out_dir)
+    results = written.get("results.json", [""])[0]
+    write_record(out_dir, written, {n: results for n in REPORT_NAMES if n in written})
 
 
 def _fsync_dir(directory: Path) -> None:
@@ -313,6 +384,22 @@ def _fsync_dir(directory: Path) -> None:
         pass
     finally:
         os.close(fd)
+
+
+def refuse_inputs_inside(out_dir: Path, inputs: Sequence[Path], key: str = "--out") -> None:
+    """One :class:`InputError` line if one of the project's ``inputs`` (its file, its record
+    files) is, or lies in, a member of the output set in ``out_dir``, which a run replaces
+    (a project's ``records/`` when ``--out`` is the project's own folder)."""
+    for path in inputs:
+        real = os.path.realpath(path)
+        for name in SET_NAMES:
+            member = os.path.realpath(Path(out_dir) / name)
+            if real == member or real.startswith(member + os.sep):
+                raise InputError(
+                    f"{path}, an input of the project, lies in {Path(out_dir) / name}, which "
+                    "a run replaces; choose another folder for the results",
+                    key=key,
+                )
 
 
 def check_out_file(path: Path, key: str = "--out") -> Path:

@@ -63,6 +63,20 @@ def test_prepare_run_reports_the_records_stage_and_a_cancelled_run_writes_nothin
     assert not out.exists()
 
 
+def test_a_tui_run_refuses_a_folder_with_a_users_file_before_any_work(tmp_path: Path) -> None:
+    """The TUI's run (run_prepared) checks its results folder as ``run --out`` does (issue 36
+    item 1): a user's results.csv there is refused before any IDA, and left as it was."""
+    project = load_project_text(SMALL, "small.yaml").project
+    prepared = prepare_run(project, tmp_path, "small.yaml")
+    out = tmp_path / "small-results"
+    out.mkdir()
+    (out / "results.csv").write_text("mine", encoding="utf-8")
+    with pytest.raises(InputError, match="results.csv is not a file frp-assess wrote"):
+        run_prepared(prepared, out, cancel=threading.Event(), jobs=1)
+    assert sorted(p.name for p in out.iterdir()) == ["results.csv"]  # no .cache, no .lock
+    assert (out / "results.csv").read_text(encoding="utf-8") == "mine"
+
+
 def test_export_follows_the_missing_parent_rule_of_run_out(tmp_path: Path) -> None:
     """The TUI's export folder is checked as ``run --out`` is (frp_assess/output_set.py,
     "Missing parent folder"): a new folder is fine, a new folder under a missing one is

@@ -57,7 +57,8 @@ INTERNAL: dict[str, set[str]] = {
     "text_safety": set(),
     "libm": set(),  # elementwise C-library functions of arrays (the same bits on every CPU)
     "io_utils": {"errors"},
-    "output_set": {"errors", "io_utils"},
+    "output_record": {"errors", "io_utils"},  # what the tool wrote in a results folder
+    "output_set": {"errors", "io_utils", "output_record"},
     "dynamics": {"errors", "libm", "motions", "rules"},
     "motions": {"errors", "io_utils", "libm", "rules"},
     "config": {"errors", "io_utils", "rules", "dynamics", "motions"},
@@ -72,8 +73,8 @@ INTERNAL: dict[str, set[str]] = {
     },
     # the application service: everything below it, and nothing imports it but the interfaces
     "app": {
-        "", "errors", "io_utils", "output_set", "text_safety", "dynamics", "motions", "config",
-        "assess", "report", "study", "results", "rules",
+        "", "errors", "io_utils", "output_record", "output_set", "text_safety", "dynamics",
+        "motions", "config", "assess", "report", "study", "results", "rules",
     },
     "api": {"app"},  # the former application API: a re-export of app, kept for old imports
     # the interfaces: the one door (app) and the leaves above, nothing else

@@ -14,7 +14,6 @@ project being edited (the TUI).  Progress and cancellation are plain callables a
 from __future__ import annotations
 
 import datetime as _dt
-import os
 import threading
 from collections.abc import Callable
 from dataclasses import dataclass, replace
@@ -31,7 +30,9 @@ from frp_assess.assess.runner import IdaRunner
 from frp_assess.assess.seismic import SeismicInput, build_records
 from frp_assess.config import Project
 from frp_assess.errors import Cancelled, InputError
+from frp_assess.io_utils import SOURCE_DATE_EPOCH, read_results_text, source_date
 from frp_assess.motions import ComplianceReport
+from frp_assess.output_set import check_out_dir
 from frp_assess.results.json_io import from_json
 from frp_assess.results.model import AssessmentResult
 
@@ -81,25 +82,11 @@ def _noop(stage: str, done: int, total: int) -> None:
     return None
 
 
-#: seconds since 1970-01-01 UTC that fix the date of a run (reproducible-builds.org)
-SOURCE_DATE_EPOCH = "SOURCE_DATE_EPOCH"
-
-
 def run_date() -> str:
     """The ISO date (``YYYY-MM-DD``, UTC) a run records as ``created``: the day of
     ``SOURCE_DATE_EPOCH`` [s since 1970-01-01 UTC] when that variable is set (the
     reproducible-builds convention: same input, same bytes), else today."""
-    epoch = os.environ.get(SOURCE_DATE_EPOCH, "")
-    if not epoch:
-        return _dt.date.today().isoformat()
-    try:
-        when = _dt.datetime.fromtimestamp(int(epoch), tz=_dt.UTC)
-    except (ValueError, OverflowError, OSError):
-        raise InputError(
-            f"expected whole seconds since 1970-01-01 UTC, found {epoch!r}",
-            key=SOURCE_DATE_EPOCH,
-        ) from None
-    return when.date().isoformat()
+    return source_date() or _dt.date.today().isoformat()
 
 
 def prepare_records(inputs: AssessmentInputs) -> SeismicInput:
@@ -240,6 +227,7 @@ def run_prepared(
     """
     if cancel.is_set():
         raise Cancelled("cancelled")
+    check_out_dir(Path(out_dir), key="results folder")  # as `run --out`, before any work
     digest = None
     if project_file is not None:
         digest = project_digest(project_file, prepared.project)
@@ -286,8 +274,8 @@ def load_previous(
     """
     stored = Path(out_dir) / "results.json"
     try:
-        previous = from_json(stored.read_text(encoding="utf-8"), file=str(stored))
-    except (OSError, UnicodeDecodeError, InputError):  # none, or not readable as this version
+        previous = from_json(read_results_text(stored), file=str(stored))
+    except InputError:  # none, or not readable as this version
         return None
     inputs = inputs_from_project(project, base_dir, input_file)
     seismic = prepare_records(inputs)

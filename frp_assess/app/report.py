@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 from frp_assess.errors import InputError
 from frp_assess.io_utils import atomic_write_text
 from frp_assess.motions import write_at2
+from frp_assess.output_record import record_report, refuse_foreign, report_belongs
 from frp_assess.output_set import FolderLock, check_out_dir, check_out_file, staged_set
 from frp_assess.results.csv_files import results_csv, spectra_csv
 from frp_assess.results.json_io import to_json
@@ -83,10 +84,13 @@ def write_outputs(
 
 def _keep_report(out_dir: Path, results_json: str, name: str, target: Path) -> bool:
     """Put the stored report ``name`` at ``target`` when the stored results.json is
-    ``results_json`` byte for byte (a report is made from it alone: nothing to rebuild);
-    returns whether it did."""
+    ``results_json`` byte for byte and the report is, on the tool's record, made from it
+    (:func:`~frp_assess.output_record.report_belongs`: a report is made from results.json
+    alone, nothing to rebuild); returns whether it did."""
     old = out_dir / name
     try:
+        if not report_belongs(out_dir, name):
+            return False
         same = (out_dir / "results.json").read_bytes() == results_json.encode("utf-8")
         if not same or not old.is_file() or old.is_symlink():
             return False
@@ -124,14 +128,18 @@ def build_pdf(results: AssessmentResult, path: Path) -> bool:
     except (OSError, MemoryError):  # a full disk is not the report's fault: the set fails
         raise
     except Exception as exc:  # reportlab's LayoutError, a table's negative width, ...
-        reason = plain(str(exc).splitlines()[0] if str(exc) else type(exc).__name__)[:160]
         print(
             f"frp-assess: warning: report.pdf not written: the report could not be laid out "
-            f"({reason}); the other results are complete",
+            f"({_first_line(exc)}); the other results are complete",
             file=sys.stderr,
         )
         return False
     return True
+
+
+def _first_line(exc: BaseException) -> str:
+    """The first line of ``exc`` (its type when it has no text), plain, at most 160 chars."""
+    return plain(str(exc).splitlines()[0] if str(exc) else type(exc).__name__)[:160]
 
 
 def build_word(results: AssessmentResult, path: Path) -> bool:
@@ -196,9 +204,40 @@ def rebuild_report(results_dir: Path, out: Path | None = None, *, docx: bool = F
     same language (results.json ``report.language``).
 
     A results.json that breaks the report's contract is one located
-    :class:`~frp_assess.errors.InputError` and nothing is written; report.pdf inside the
-    results folder is a member of the run's output set and is replaced under its lock.
+    :class:`~frp_assess.errors.InputError` and nothing is written.  A report written into
+    the results folder (report.pdf and report.docx are members of the run's output set) is
+    made under the folder's lock, as `run` writes it: never beside results it was not made
+    from, never over a report the tool did not write (:mod:`frp_assess.output_record`).
     """
+    from frp_assess.report.document import load_results
+
+    results_dir = Path(results_dir)
+    if not results_dir.is_dir():
+        load_results(results_dir)  # the one line of a folder that is not there, first
+    default = results_dir / ("report.docx" if docx else "report.pdf")
+    out = check_out_file(Path(out) if out is not None else default)
+    other = ".pdf" if docx else ".docx"
+    if out.suffix.lower() == other:  # a Word file named r.pdf opens nowhere
+        raise InputError(
+            f"a {'Word' if docx else 'PDF'} report cannot be named {out.name!r}; give a name "
+            f"ending in {'.docx' if docx else '.pdf'}",
+            key="--out",
+        )
+    if out.parent.resolve() != results_dir.resolve():
+        return _build_report(results_dir, out, docx=docx)
+    # into the results folder: under its lock, as `run` writes it, from the results.json read
+    # under that lock (never a report older than the results beside it); a member of the
+    # output set never over a file the tool did not write, and put on its record
+    with FolderLock(results_dir, key="RESULTS_DIR"):
+        if out.name in REPORT_FILES:
+            refuse_foreign(results_dir, key="RESULTS_DIR", names=(out.name,))
+        _build_report(results_dir, out, docx=docx)
+        if out.name in REPORT_FILES:
+            record_report(results_dir, out.name)
+    return out
+
+
+def _build_report(results_dir: Path, out: Path, *, docx: bool) -> Path:
     from frp_assess.report.document import (
         CONTRACT_ERRORS,
         build_docx,
@@ -207,23 +246,20 @@ def rebuild_report(results_dir: Path, out: Path | None = None, *, docx: bool = F
     )
     from frp_assess.report.pdf_document import build_report, build_story
 
-    results_dir = Path(results_dir)
-    default = results_dir / ("report.docx" if docx else "report.pdf")
-    out = check_out_file(Path(out) if out is not None else default)
     results = load_results(results_dir)  # InputError -> one line, exit 2
-    if docx:
-        try:
-            build_docx(results, out)  # atomic: nothing written on an error
-        except CONTRACT_ERRORS as exc:
-            raise contract_error(exc, results_dir / "results.json") from None
-        return out
     try:
-        story = build_story(results)  # a value that breaks the contract fails here
-        if out.parent.resolve() == results_dir.resolve():  # never follow a linked report.pdf
-            with FolderLock(results_dir, key="RESULTS_DIR"):
-                build_report(results, out, story=story)
+        if docx:
+            build_docx(results, out)  # atomic: nothing written on an error
         else:
-            build_report(results, out, story=story)
-    except CONTRACT_ERRORS as exc:  # nothing written: build_report writes atomically
+            build_report(results, out, story=build_story(results))
+    except CONTRACT_ERRORS as exc:  # nothing written: both write atomically
         raise contract_error(exc, results_dir / "results.json") from None
+    except (OSError, MemoryError, InputError):
+        raise
+    except Exception as exc:  # reportlab's LayoutError (a 100,000-character currency), ...
+        raise InputError(
+            f"{out.name} not written: the report could not be laid out ({_first_line(exc)}); "
+            "a value of results.json is far from what a run writes",
+            file=str(results_dir / "results.json"),
+        ) from None
     return out

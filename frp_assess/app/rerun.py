@@ -23,6 +23,9 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from frp_assess import __version__
+from frp_assess.errors import InputError
+from frp_assess.io_utils import read_regular
+from frp_assess.output_record import REPORT_NAMES, SIDECAR_NAME, set_on_record
 
 if TYPE_CHECKING:
     from frp_assess.config.schema import Project
@@ -40,16 +43,22 @@ __all__ = [
 
 #: the sidecar file in the output folder: {"digest", "created", "files", "pdf", "results"}
 #: ("results": the SHA-256 of the results.json it belongs to)
-SIDECAR = ".inputs-digest.json"
+SIDECAR = SIDECAR_NAME
 #: the members of a complete output set (report.pdf and report.docx besides, unless
 #: --no-pdf)
 _SET_FILES = ("results.json", "results.csv", "spectra.csv")
+#: the largest file hashed (a record file is at most 50 MB, a project file 2 MB) [bytes]
+_MAX_HASHED_BYTES = 64_000_000
+#: the largest sidecar read [bytes]
+_MAX_SIDECAR_BYTES = 4_000_000
 
 
 def _file_hash(path: Path) -> str:
+    """SHA-256 of a regular file; ``"missing"`` for anything that cannot be read as one (a
+    FIFO, a device, a folder, a file too large is never read: :func:`read_regular`)."""
     try:
-        return hashlib.sha256(path.read_bytes()).hexdigest()
-    except OSError:
+        return hashlib.sha256(read_regular(path, "file", _MAX_HASHED_BYTES)).hexdigest()
+    except InputError:
         return "missing"
 
 
@@ -134,12 +143,12 @@ def unchanged_run(
     missing or broken sidecar: that is simply "not unchanged"."""
     out_dir = Path(out_dir)
     try:
-        data = json.loads((out_dir / SIDECAR).read_text(encoding="utf-8"))
+        data = json.loads(read_regular(out_dir / SIDECAR, "sidecar", _MAX_SIDECAR_BYTES))
         digest, created, files = data["digest"], data["created"], data["files"]
         ok = isinstance(digest, str) and isinstance(created, str) and isinstance(files, list)
         if not ok or not all(isinstance(f, str) for f in files):
             return None
-    except (OSError, ValueError, KeyError, TypeError):
+    except (InputError, ValueError, KeyError, TypeError):
         return None
     needed = [*_SET_FILES, *(("report.pdf", "report.docx") if pdf else ())]
     if not all(os.path.isfile(out_dir / n) for n in needed) or not (out_dir / "records").is_dir():
@@ -148,6 +157,8 @@ def unchanged_run(
         return None
     if _file_hash(out_dir / "results.json") != data.get("results"):
         return None
+    if not set_on_record(out_dir, REPORT_NAMES if pdf else ()):
+        return None  # a member changed by hand, a report not made from these results
     return Unchanged(out_dir, digest, created)
 
 

@@ -191,7 +191,33 @@ def parse_entry(text: str) -> IdaResult:
     collapsed = [data[k] is not None for k in ("collapse_multiplier", "a_dyn", "q")]
     if any(collapsed) and not all(collapsed):
         raise DamagedEntry("collapse_multiplier, a_dyn and q are not all set or all null")
-    return IdaResult(**values)  # type: ignore[arg-type]  # each value checked above
+    result = IdaResult(**values)  # type: ignore[arg-type]  # each value checked above
+    _consistent(result)
+    return result
+
+
+def _consistent(r: IdaResult) -> None:
+    """What :func:`frp_assess.dynamics.ida` makes true of every result, checked as strictly
+    as an input (an entry edited by hand, C, a_dyn and q scaled together, is damaged):
+    a_dyn = C·PGA; on the IDA curve, C is the least multiplier that collapsed (none collapsed
+    without C) and the survivor the largest that stood (q is not checked: above the ground
+    floor it is of the floor motion's a_RM)."""
+    c = r.collapse_multiplier
+    if c is not None and r.a_dyn is not None and not math.isclose(r.a_dyn, c * r.pga, rel_tol=1e-9):
+        raise DamagedEntry(f"a_dyn = {r.a_dyn!r} is not C·PGA = {c * r.pga!r}")
+    if not r.curve:
+        return
+    fell = [p.multiplier for p in r.curve if p.collapsed]
+    stood = [p.multiplier for p in r.curve if not p.collapsed]
+    first = min(fell) if fell else None
+    if first != c:
+        raise DamagedEntry(
+            f"collapse_multiplier = {c!r} is not the curve's first collapse {first!r}"
+        )
+    if (max(stood) if stood else None) != r.survivor_multiplier:
+        raise DamagedEntry(
+            f"survivor_multiplier = {r.survivor_multiplier!r} is not the curve's last survivor"
+        )
 
 
 class IdaCache:

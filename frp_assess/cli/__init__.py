@@ -17,6 +17,7 @@ from typing import NoReturn
 
 from frp_assess import __version__
 from frp_assess.errors import Cancelled, InputError, NumericalError
+from frp_assess.io_utils import source_date
 from frp_assess.text_safety import plain
 
 #: The subcommands, in the order `--help` lists them, with their one-line help: a command's
@@ -81,6 +82,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     command quietly (exit 0; stdout is pointed at /dev/null so the interpreter's final flush
     does not fail again).
     """
+    from frp_assess.cli.output import setup_streams
+
+    setup_streams()  # a console that is not UTF-8 prints what it can, never crashes
+    try:
+        source_date()  # malformed: one line, before a library (numpy.f2py) reads it on import
+    except InputError as exc:
+        return _fail(str(exc))
     try:
         words = sys.argv[1:] if argv is None else list(argv)
         parser = build_parser(words)  # imports the command's module: Ctrl-C may land here

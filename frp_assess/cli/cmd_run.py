@@ -158,26 +158,34 @@ def run(args: argparse.Namespace) -> int:
         if same is not None:
             return _unchanged(same.out_dir, same.created)
     from frp_assess.app.assessment import load_inputs
-    from frp_assess.output_set import FolderLock, check_out_dir  # not needed when unchanged
+    from frp_assess.app.project import load_project
+    from frp_assess.output_set import (  # not needed when unchanged
+        FolderLock,
+        check_out_dir,
+        refuse_inputs_inside,
+    )
 
     inputs = load_inputs(path)  # InputError -> one line, exit 2, nothing written
+    files = referenced_paths(load_project(path).project)
     if args.jobs is not None and args.jobs < 1:
         raise InputError(f"expected at least 1 job, found {args.jobs}", key="--jobs")
     if args.rtol is not None:
         inputs = replace(inputs, model=replace(inputs.model, tolerance=args.rtol))
     if args.verify:
         inputs = replace(inputs, verify=True)
-    out_dir = check_out_dir(out)
+    out_dir = check_out_dir(out)  # nothing of the user's replaced: output_set's rules
+    refuse_inputs_inside(out_dir, [path, *(path.parent / f for f in files)])
     with FolderLock(out_dir):  # a second run into the same folder refuses here, exit 2
-        return _run(args, inputs, out_dir)
+        return _run(args, inputs, out_dir, files)
 
 
 def _unchanged(out_dir: Path, created: str) -> int:
     """Nothing changed since the stored run: say so and print its summary (results.json)."""
+    from frp_assess.io_utils import read_results_text
     from frp_assess.results.json_io import from_json
 
     stored = out_dir / "results.json"
-    results = from_json(stored.read_text(encoding="utf-8"), file=str(stored))
+    results = from_json(read_results_text(stored), file=str(stored))
     console = make_console()
     console.print(f"unchanged since {user(created)}: nothing to recompute")
     print_summary(console, results)
@@ -196,7 +204,9 @@ def activation_text(results: AssessmentResult) -> str:
     return text
 
 
-def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> int:
+def _run(
+    args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path, files: list[str]
+) -> int:
     from rich.progress import (
         BarColumn,
         MofNCompleteColumn,
@@ -207,10 +217,8 @@ def _run(args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path) -> i
 
     from frp_assess.app.assessment import prepare_records, run_assessment
     from frp_assess.app.kernel import compile_notice
-    from frp_assess.app.project import load_project
 
     path = Path(args.file)
-    files = referenced_paths(load_project(path).project)
     digest = inputs_digest(path, files, rtol=args.rtol, verify=args.verify)
     console = make_console()
     if (notice := compile_notice()) is not None:  # a cold numba cache: say why it waits

@@ -7,26 +7,93 @@
   (:func:`frp_assess.text_safety.console`); :func:`plain_line` for ``print``;
 - :func:`print_table`: a table whose numbers are never truncated: in a console too narrow for
   it (a narrow terminal, or a log, which rich treats as 80 columns) the rows are printed as
-  stacked records, one "header: value" line each.
+  stacked records, one "header: value" line each;
+- :func:`setup_streams`: stdout and stderr print what their encoding can hold (a Windows
+  redirect's cp1252, ``PYTHONIOENCODING=ascii``, latin-1): a character it cannot encode is
+  written as its ASCII spelling (``≥`` as ``>=``, ``θ`` as ``theta``, ``‰`` as ``per mille``),
+  never an exception.
 """
 
 from __future__ import annotations
 
+import codecs
+import sys
+import unicodedata
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import IO
+from typing import IO, Any
 
 from rich import box
 from rich.console import Console
 from rich.table import Table
+from rich.text import Text
 
 from frp_assess.text_safety import console as _console_text
 from frp_assess.text_safety import plain
 
+#: the error handler of the standard streams (:func:`setup_streams`)
+STREAM_ERRORS = "frp-assess-ascii"
+#: ASCII spellings of the characters the outputs use that NFKD does not reduce to ASCII
+_ASCII: dict[str, str] = {
+    "≥": ">=", "≤": "<=", "≈": "~", "‰": " per mille", "×": "x", "·": "*", "°": " deg",
+    "±": "+/-", "∓": "-/+", "−": "-", "–": "-", "—": "-", "…": "...", "→": "->", "←": "<-",
+    "↑": "^", "↓": "v", "√": "sqrt", "∞": "inf", "∂": "d", "∈": " in ", "∫": "int",
+    "µ": "u", "§": "par. ", "Ø": "dia ", "ø": "o", "†": "+", "✓": "ok", "✗": "x",
+    "‘": "'", "’": "'", "“": '"', "”": '"', "─": "-", "━": "-", "│": "|", "┄": "-",
+    "└": "+", "┤": "+", "■": "#", "▲": "^", "▼": "v", "▶": ">", "●": "*", "○": "o",
+}  # fmt: skip
+
+
+def ascii_spelling(char: str) -> str:
+    """``char`` in ASCII: its spelling in :data:`_ASCII`, a Greek letter's name (``theta``),
+    the ASCII of its compatibility decomposition (``²`` as ``2``, ``à`` as ``a``), else
+    ``?``."""
+    if char in _ASCII:
+        return _ASCII[char]
+    name = unicodedata.name(char, "")
+    for prefix, case in (("GREEK SMALL LETTER ", str.lower), ("GREEK CAPITAL LETTER ", str.title)):
+        if name.startswith(prefix) and " " not in name[len(prefix) :]:
+            return case(name[len(prefix) :])
+    plain_ascii = unicodedata.normalize("NFKD", char).encode("ascii", "ignore").decode("ascii")
+    return plain_ascii or "?"
+
+
+def _encode_fallback(exc: UnicodeError) -> tuple[str, int]:
+    if not isinstance(exc, UnicodeEncodeError):
+        raise exc
+    return "".join(ascii_spelling(c) for c in exc.object[exc.start : exc.end]), exc.end
+
+
+codecs.register_error(STREAM_ERRORS, _encode_fallback)
+
+
+def setup_streams() -> None:
+    """Make stdout and stderr write what their encoding cannot hold in ASCII
+    (:func:`ascii_spelling`) instead of raising UnicodeEncodeError: the one setup of every
+    command's output (:func:`frp_assess.cli.main`)."""
+    for stream in (sys.stdout, sys.stderr):
+        reconfigure = getattr(stream, "reconfigure", None)
+        if reconfigure is None:
+            continue
+        try:
+            reconfigure(errors=STREAM_ERRORS)
+        except (OSError, ValueError):  # a closed or detached stream: nothing to set
+            pass
+
 
 class _Console(Console):
     """A rich console that lets a closed pipe reach :func:`frp_assess.cli.main` (rich itself
-    exits with status 1)."""
+    exits with status 1) and, on a stream that is not UTF-8, lays out the text it can write
+    (:func:`ascii_spelling` before the layout, so that the columns of a table still line up)."""
+
+    def render_str(self, text: str, *args: Any, **kwargs: Any) -> Text:
+        encoding = self.encoding
+        if not encoding.startswith("utf"):
+            try:
+                text = text.encode(encoding, STREAM_ERRORS).decode(encoding)
+            except LookupError:  # an encoding Python does not know: as it is
+                pass
+        return super().render_str(text, *args, **kwargs)
 
     def on_broken_pipe(self) -> None:
         raise BrokenPipeError

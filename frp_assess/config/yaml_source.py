@@ -44,6 +44,8 @@ from frp_assess.errors import InputError
 MAX_FILE_BYTES = 2_000_000
 #: deepest nesting of lists and mappings (a project file needs 5 levels)
 MAX_DEPTH = 50
+#: the most digits of a whole number (Python's int() refuses more: sys.get_int_max_str_digits)
+MAX_INT_DIGITS = 4300
 #: most values (scalars, lists, mappings) once aliases are expanded
 MAX_VALUES = 100_000
 
@@ -268,7 +270,17 @@ class ProjectYamlLoader(yaml.SafeLoader):
                 node.value = text
             self._check_text(text, path, line)
         elif not node.style and node.tag in (_INT_TAG, _FLOAT_TAG):  # plain: None or ""
-            if node.tag == _INT_TAG and not _DECIMAL_INT_RE.match(text):
+            digits = sum(c.isdigit() for c in text)
+            if node.tag == _INT_TAG and digits > MAX_INT_DIGITS:  # int() would refuse it
+                self.problems.append(
+                    (
+                        line,
+                        path,
+                        f"a whole number of {digits} digits; a number here has at most "
+                        f"{MAX_INT_DIGITS} digits",
+                    )
+                )
+            elif node.tag == _INT_TAG and not _DECIMAL_INT_RE.match(text):
                 if _OCTAL_RE.match(text):
                     value = yaml.safe_load(text)
                     plain = text.lstrip("+-").lstrip("0_") or "0"

@@ -21,7 +21,7 @@ import math
 import numpy as np
 from numba import njit
 
-from frp_assess.dynamics.kernel import KernelParams, simulate
+from frp_assess.dynamics.kernel import Buffers, Ground, KernelParams, simulate
 from frp_assess.dynamics.kernel import params as kp
 
 #: Relative margin of the quiet-start test [-]: an interval is skipped only when both its
@@ -104,8 +104,7 @@ def search(
     """
     quiet = running_max_abs(acc)
     h = np.empty(1)  # the history arrays of the driver: not written (no history here)
-    r_time = np.zeros(2)
-    r_side = np.zeros(2, dtype=np.int64)
+    out = Buffers(h, h, h, np.zeros(2), np.zeros(2, dtype=np.int64))
     n = 0
     c_lo = 0.0
     c_hi = math.nan
@@ -120,15 +119,15 @@ def search(
         # without the history for it (a version of its own, beside the one of
         # RockingModel.run: 8 CPU-s more on a cold cache), 1.3-9 % faster per IDA than with
         # a flag known only at run time (docs/model.md §4.2)
-        out = simulate(acc[start:], dt, c, n_tail, prm, 0.0, 0.0, False, h, h, h, r_time, r_side)
+        res = simulate(Ground(acc[start:], dt, c, n_tail), prm, 0.0, 0.0, False, out)
         multiplier[n] = c
-        fate[n] = out.fate
-        peak[n] = out.peak
-        ruptures[n] = out.ruptures
+        fate[n] = res.fate
+        peak[n] = res.peak
+        ruptures[n] = res.ruptures
         n += 1
-        if out.status != kp.STATUS_OK:
-            return n, out.status
-        if collapse_fate[out.fate]:
+        if res.status != kp.STATUS_OK:
+            return n, res.status
+        if collapse_fate[res.fate]:
             c_hi = c
         else:
             c_lo = c

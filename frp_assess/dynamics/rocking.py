@@ -11,7 +11,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from frp_assess.dynamics.base_reaction import PIVOT_RULES, BaseReaction, PivotRule
-from frp_assess.dynamics.kernel import history_length, simulate
+from frp_assess.dynamics.kernel import Buffers, Ground, history_length, simulate
 from frp_assess.dynamics.kernel import params as kp
 from frp_assess.dynamics.kernel.fate import loaded_tipping_angle, tipping_angle
 from frp_assess.dynamics.loads import NO_LOADS, Loads, side_terms
@@ -394,15 +394,11 @@ class RockingModel:
         prm = self.params
         n_tail = self.tail_samples(dt)
         size = history_length(acc.size + n_tail, dt, prm.collapse_mode) if history else 1
-        h_theta = np.empty(size)
-        h_omega = np.empty(size)
-        h_bar = np.empty(size)
-        r_time = np.zeros(2)
-        r_side = np.zeros(2, dtype=np.int64)
-        out = simulate(
-            acc, float(dt), float(scale), n_tail, prm, float(theta0), float(omega0),
-            history, h_theta, h_omega, h_bar, r_time, r_side,
-        )  # fmt: skip
+        buf = Buffers(
+            np.empty(size), np.empty(size), np.empty(size), np.zeros(2), np.zeros(2, np.int64)
+        )
+        ground = Ground(acc, float(dt), float(scale), n_tail)
+        out = simulate(ground, prm, float(theta0), float(omega0), history, buf)
         if out.status != kp.STATUS_OK:
             raise NumericalError(
                 f"time history at multiplier C = {scale:.6g}: {_STATUS_MESSAGES[out.status]} "
@@ -413,14 +409,15 @@ class RockingModel:
         hist = None
         if history:
             n = out.samples
-            theta = h_theta[:n].copy()
+            theta = buf.theta[:n].copy()
             strain = np.zeros(n)
             if self.rebars is not None:
-                strain = self.rebars.strain(self.wall, theta) * h_bar[:n]
+                strain = self.rebars.strain(self.wall, theta) * buf.bar[:n]
             time = np.arange(n, dtype=np.float64) * dt
-            hist = History(time, theta, h_omega[:n].copy(), strain)
+            hist = History(time, theta, buf.omega[:n].copy(), strain)
         ruptures = tuple(
-            Rupture(float(r_time[i]), int(r_side[i])) for i in range(min(out.ruptures, 2))
+            Rupture(float(buf.rupture_time[i]), int(buf.rupture_side[i]))
+            for i in range(min(out.ruptures, 2))
         )
         bars = self.rebars
         return RockingResult(

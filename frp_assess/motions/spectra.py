@@ -18,6 +18,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from frp_assess.errors import InputError
+from frp_assess.motions.table_limits import check_table_range
 from frp_assess.rules import spectrum as rule
 
 # the code's tables, written once in rules/ (re-exported)
@@ -334,6 +335,7 @@ def table_spectrum(
         raise InputError(
             "table periods must increase from T >= 0 and accelerations be > 0", key="spectrum"
         )
+    check_table_range(T, S)  # the range of a project's table
     return ElasticSpectrum(
         name=name,
         kind="table",

@@ -18,8 +18,9 @@ class StudyBuilding(BaseModel):
 
     model_config = ConfigDict(extra="forbid", frozen=True)
 
+    # the ranges of a project's building block (config.schema.wall_spec.BuildingSpec)
     height: Number = Field(
-        gt=0, le=200, description="H_b [m], height of the building above the foundation, 0-200"
+        ge=2, le=200, description="H_b [m], height of the building above the foundation, 2-200"
     )
     storeys: WholeNumber = Field(ge=1, le=60, description="n, number of storeys, 1-60")
     wall_base: list[Number] = Field(
@@ -28,12 +29,12 @@ class StudyBuilding(BaseModel):
     )
     period: Number | None = Field(
         None,
-        gt=0,
+        ge=0.02,
         le=5,
-        description="T1 [s] of the building, 0-5; default 0.05*H_b^0.75 (Circolare eq. C7.3.2)",
+        description="T1 [s] of the building, 0.02-5; default 0.05*H_b^0.75 (Circolare eq. C7.3.2)",
     )
     damping: Number = Field(
-        0.05, gt=0, le=0.3, description="xi of the building's first mode [-], 0-0.3 (0.05)"
+        0.05, ge=0.005, le=0.3, description="xi of the building's first mode [-], 0.005-0.3"
     )
 
     @field_validator("wall_base")

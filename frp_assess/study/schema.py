@@ -32,11 +32,13 @@ from frp_assess.config.library import MASONRY, did_you_mean
 from frp_assess.config.messages import Loc, schema_problems
 from frp_assess.config.problems import raise_all
 from frp_assess.config.schema import (
+    HEIGHT_RANGE,
     MAX_NAME_CHARS,
     MAX_NOTES_CHARS,
     MAX_RECORD_DURATION,
     MAX_SEED,
     MIN_TIME_STEP,
+    THICKNESS_RANGE,
     IdaSpec,
     ModelOptionsSpec,
     Number,
@@ -150,13 +152,16 @@ class StudyFile(_Strict):
         min_length=1, max_length=MAX_NAME_CHARS, description="study name (output labels)"
     )
     description: str = Field("", max_length=MAX_NOTES_CHARS)
-    height: list[Annotated[Number, Field(le=50)]] = Field(description="wall heights H [m], <= 50")
+    # the ranges of a project's wall.height and wall.thickness (config.schema.spec_base)
+    height: list[Annotated[Number, Field(ge=HEIGHT_RANGE[0], le=HEIGHT_RANGE[1])]] = Field(
+        description="wall heights H [m], 0.5-50"
+    )
     alpha_deg: list[Number] | None = Field(
         default=None, description="slenderness α [°], tan α = B/H (give this or thickness)"
     )
-    thickness: list[Annotated[Number, Field(le=5)]] | None = Field(
-        default=None, description="wall thickness B [m], <= 5 (give this or alpha_deg)"
-    )
+    thickness: (
+        list[Annotated[Number, Field(ge=THICKNESS_RANGE[0], le=THICKNESS_RANGE[1])]] | None
+    ) = Field(default=None, description="wall thickness B [m], 0.05-5 (give this or alpha_deg)")
     ratio: list[Annotated[Number, Field(le=20)]] = Field(
         default_factory=list, description="ρ [‰] of the active bars, <= 20"
     )
@@ -242,6 +247,14 @@ class StudyFile(_Strict):
                 for h in self.height:
                     if (problem := slenderness_problem(b, h)) is not None:
                         raise ValueError(problem)
+        for a in self.alpha_deg or ():  # B = H tan α: a project's wall.thickness range
+            for h in self.height:
+                b = h * math.tan(math.radians(a))
+                if not THICKNESS_RANGE[0] <= b <= THICKNESS_RANGE[1]:
+                    raise ValueError(
+                        f"alpha_deg: α = {a:g}° with H = {h:g} m gives B = {b:.3g} m; a wall "
+                        f"is {THICKNESS_RANGE[0]:g}-{THICKNESS_RANGE[1]:g} m thick"
+                    )
         reinforced = [bool(self.ratio), bool(self.material), bool(self.position)]
         if any(reinforced[:2]) and not all(reinforced):
             raise ValueError(

@@ -16,8 +16,9 @@ from frp_assess.cli import main
 from frp_assess.dynamics import IdaPoint, IdaResult
 from tests.cli.outputs_helpers import tiny_project
 
+#: a_dyn = C·PGA, as every IDA result (frp_assess.assess.cache._consistent)
 GOOD = IdaResult(
-    pga=1.2, c0=0.8, collapse_multiplier=4.1, a_dyn=4.9, q=5.0, runs=23, survivor_multiplier=4.0
+    pga=1.5, c0=0.8, collapse_multiplier=4.0, a_dyn=6.0, q=5.0, runs=23, survivor_multiplier=3.8
 )
 HAS_CURVE = "curve" in {f.name for f in fields(IdaResult)}
 KEY = "k" * 64
@@ -37,9 +38,9 @@ DAMAGE: list[tuple[str, Callable[[Path], None]]] = [
     ("bool for the count", _write(_entry(runs=False))),
     ("string for a number", _write(_entry(c0="0.8"))),
     ("null for a required number", _write(_entry(pga=None))),
-    ("NaN", _write(_entry().replace("4.9", "NaN"))),
-    ("Infinity", _write(_entry().replace("4.9", "Infinity"))),
-    ("negative", _write(_entry(a_dyn=-4.9))),
+    ("NaN", _write(_entry().replace("6.0", "NaN"))),
+    ("Infinity", _write(_entry().replace("6.0", "Infinity"))),
+    ("negative", _write(_entry(a_dyn=-6.0))),
     ("half collapsed", _write(_entry(a_dyn=None))),
     ("float count", _write(_entry(runs=23.0))),
     ("missing key", _write(json.dumps({"pga": 1.2}))),
@@ -149,8 +150,8 @@ def test_damaged_curve_point(tmp_path: Path, point: object) -> None:
             a_dyn=None,
             q=None,
             runs=3,
-            survivor_multiplier=None,
-            curve=(IdaPoint(1.1, False, 0.25), IdaPoint(1.21, True, 1.0e300)),
+            survivor_multiplier=1.21,
+            curve=(IdaPoint(1.1, False, 0.25), IdaPoint(1.21, False, 1.0e300)),
             failure_mode=None,
         ),
         IdaResult(
@@ -176,3 +177,39 @@ def test_entry_text_is_the_json_of_asdict(result: IdaResult, tmp_path: Path) -> 
     cache.put(KEY, result)
     assert cache_file(tmp_path, KEY).read_text(encoding="utf-8") == text
     assert cache.get(KEY) == result
+
+
+@pytest.mark.slow
+def test_entries_edited_consistently_by_hand_are_recomputed(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Issue 36 item 6: C, a_dyn and q of every entry multiplied by 3 (each still a positive
+    number, a_dyn still C·PGA) were reused without a word once the inputs sidecar was gone.
+    The IDA curve says what C is (its first collapse): such an entry is damaged, named, and
+    computed again; the results are the first run's bytes.  Untouched entries of the same run
+    are all reused (what a run writes passes the same checks)."""
+    project = tiny_project(tmp_path)
+    out = tmp_path / "out"
+    assert main(["run", str(project), "--out", str(out), "--jobs", "1", "--no-pdf"]) == 0
+    first = (out / "results.json").read_bytes()
+    (out / SIDECAR).unlink()
+    capsys.readouterr()
+    assert main(["run", str(project), "--out", str(out), "--jobs", "1", "--no-pdf"]) == 0
+    assert " 0 IDAs computed" in " " + " ".join(capsys.readouterr().out.split())
+    tampered = []
+    for p in sorted((out / ".cache").glob("*.json")):
+        data = json.loads(p.read_text(encoding="utf-8"))
+        if data["collapse_multiplier"] is None:
+            continue
+        for key in ("collapse_multiplier", "a_dyn", "q"):
+            data[key] *= 3
+        p.write_text(json.dumps(data), encoding="utf-8")
+        tampered.append(p.name)
+    assert tampered
+    (out / SIDECAR).unlink()
+    assert main(["run", str(project), "--out", str(out), "--jobs", "1", "--no-pdf"]) == 0
+    err = capsys.readouterr().err
+    warned = [line for line in err.splitlines() if "damaged cache entry" in line]
+    assert len(warned) == len(tampered) and all("first collapse" in w for w in warned), err
+    assert all(any(name in w for w in warned) for name in tampered)
+    assert (out / "results.json").read_bytes() == first

@@ -205,6 +205,7 @@ def test_full_disk_in_other_writers(tmp_path: Path, command: str) -> None:
     assert res.returncode == 2, res.stderr
     assert res.stderr.count("\n") == 1 and "File too large" in res.stderr, res.stderr
     assert "Traceback" not in res.stderr
+    assert f"error: {watch}" in res.stderr, res.stderr  # which file (issue 36 item 8)
     after = tree(watch)
     after.pop(".lock", None)  # the report took the results folder's lock (a run may write it)
     assert not [k for k in after if k.endswith(".tmp")]  # no half-written file left

@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 
 from frp_assess.dynamics import IdaSettings, Rebars, RockingModel, ida
-from frp_assess.dynamics.kernel import history_length, simulate
+from frp_assess.dynamics.kernel import Buffers, Ground, history_length, simulate
 from frp_assess.dynamics.kernel.jumps import (
     CHATTER_SAFETY,
     CHATTER_SAMPLES,
@@ -39,9 +39,8 @@ def _run(
 ) -> tuple[Any, list[np.ndarray]]:
     size = history_length(acc.size + n_tail, DT, prm.collapse_mode) if history else 1
     hist = [np.zeros(size) for _ in range(3)]
-    out = simulate(
-        acc, DT, c, n_tail, prm, 0.0, 0.0, history, *hist, np.zeros(2), np.zeros(2, np.int64)
-    )
+    buf = Buffers(*hist, np.zeros(2), np.zeros(2, np.int64))
+    out = simulate(Ground(acc, DT, c, n_tail), prm, 0.0, 0.0, history, buf)
     return out, hist
 
 
@@ -81,7 +80,8 @@ def test_bounces_last_what_the_closed_form_says_and_the_bound_holds(
     acc = kernel_record(np.full(400, u * prm.g))  # 2 s of constant input, in m/s²
     size = history_length(acc.size, DT, prm.collapse_mode)
     hist = [np.zeros(size) for _ in range(3)]
-    out = simulate(acc, DT, 1.0, 0, prm, 0.0, v, True, *hist, np.zeros(2), np.zeros(2, np.int64))
+    buf = Buffers(*hist, np.zeros(2), np.zeros(2, np.int64))
+    out = simulate(Ground(acc, DT, 1.0, 0), prm, 0.0, v, True, buf)
     theta = hist[0][: out.samples]
     moving = np.flatnonzero(theta != 0.0)
     t_rest = (moving[-1] + 1) * DT  # the first sample from which the wall stays at rest

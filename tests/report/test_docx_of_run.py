@@ -26,17 +26,25 @@ def _no_records() -> SeismicInput:
 
 
 def test_the_set_holds_both_reports_kept_while_the_results_are_the_same(
-    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
 ) -> None:
     results = load_results(DATA)
     out = tmp_path / "out"
     write_outputs(results, _no_records(), out, pdf=True)
     assert (out / "report.pdf").read_bytes().startswith(b"%PDF")
     assert (out / "report.docx").read_bytes().startswith(b"PK")
+    stored = (out / "report.docx").read_bytes()
     # the same results again: the stored reports are copied, not rebuilt
-    (out / "report.docx").write_bytes(b"stored")
-    write_outputs(results, _no_records(), out, pdf=True)
-    assert (out / "report.docx").read_bytes() == b"stored"
+    import frp_assess.app.report as app_report
+
+    def not_rebuilt(*args: object) -> bool:
+        raise AssertionError("a report of the same results was rebuilt")
+
+    with monkeypatch.context() as m:
+        m.setattr(app_report, "build_word", not_rebuilt)
+        m.setattr(app_report, "build_pdf", not_rebuilt)
+        write_outputs(results, _no_records(), out, pdf=True)
+    assert (out / "report.docx").read_bytes() == stored
     # other results whose DOCX cannot be made: no report.docx (not the stale one), the rest
     bad = tmp_path / "firm.docx"
     bad.write_text("not a zip", encoding="utf-8")

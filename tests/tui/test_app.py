@@ -225,7 +225,29 @@ def test_run_to_the_end_matches_batch_mode(small_project: Path, tmp_path: Path):
 
 
 @pytest.mark.slow
-def test_cancel_a_run_keeps_the_ui_responsive(big_project: Path):
+def test_cancel_a_run_keeps_the_ui_responsive(big_project: Path, monkeypatch: pytest.MonkeyPatch):
+    """The cancel always lands mid-run: the run's first IDA stage is held at a gate (its
+    runner waits on an event after the first finished pair) until the test has pressed
+    escape, so the run cannot finish first however fast or slow the machine is (it waits for
+    a state, never for a time)."""
+    import threading
+
+    import frp_assess.app.assessment as assessment
+
+    first_pair, gate = threading.Event(), threading.Event()
+
+    class GatedRunner(assessment.IdaRunner):
+        def run(self, models, progress=None, on_pair=None, settings=None):  # type: ignore[no-untyped-def]
+            def held(m_i: int, r_i: int) -> None:
+                if on_pair is not None:
+                    on_pair(m_i, r_i)
+                first_pair.set()
+                gate.wait()  # released once escape is pressed
+
+            return super().run(models, progress, held, settings)
+
+    monkeypatch.setattr(assessment, "IdaRunner", GatedRunner)
+
     async def body() -> None:
         app = FrpAssessApp(big_project, jobs=1)
         async with app.run_test(size=SIZE) as pilot:
@@ -234,7 +256,7 @@ def test_cancel_a_run_keeps_the_ui_responsive(big_project: Path):
             derived = app.query_one("#derived-wall", Static)
             app.action_run()  # ctrl+r (the key itself is tested with the small project)
             assert app.running
-            await settle(pilot, lambda: panel.last_stage == "ida")
+            await settle(pilot, lambda: panel.last_stage == "ida" and first_pair.is_set())
             # the editor works while the run goes on: a new height, derived values follow
             app.action_tab(0)
             box = app.query_one("#f-wall-height-control", Input)
@@ -242,6 +264,7 @@ def test_cancel_a_run_keeps_the_ui_responsive(big_project: Path):
             await settle(pilot, lambda: "4.289°" in plain(derived))
             assert app.running
             await pilot.press("escape")
+            gate.set()
             await after_workers(pilot, lambda: not app.running)
             assert "cancelled" in plain(app.query_one("#run-state", Static))
             assert app.outcome is None
@@ -254,7 +277,10 @@ def test_cancel_a_run_keeps_the_ui_responsive(big_project: Path):
             await type_into(pilot, "#f-wall-height-control", "3")
             assert "5.711°" in plain(derived)
 
-    run_async(body)
+    try:
+        run_async(body)
+    finally:
+        gate.set()  # never leave a worker thread waiting
 
 
 @pytest.mark.slow

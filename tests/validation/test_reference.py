@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from frp_assess.dynamics import IdaSettings, RockingModel, ida
-from frp_assess.dynamics.kernel import simulate
+from frp_assess.dynamics.kernel import Buffers, Ground, simulate
 from frp_assess.dynamics.kernel.params import kernel_record
 from tests.conftest import synthetic_record
 from tests.validation.configs import CASES, model_for
@@ -69,10 +69,8 @@ def impacts_of_every_bounce(model: RockingModel, acc: np.ndarray, c: float) -> i
     prm = model.params._replace(settle_chatter=False)
     h = np.empty(1)
     rec = kernel_record(acc)
-    out = simulate(
-        rec, DT, c, model.tail_samples(DT), prm, 0.0, 0.0, False, h, h, h, np.zeros(2),
-        np.zeros(2, np.int64),
-    )  # fmt: skip
+    buf = Buffers(h, h, h, np.zeros(2), np.zeros(2, np.int64))
+    out = simulate(Ground(rec, DT, c, model.tail_samples(DT)), prm, 0.0, 0.0, False, buf)
     return int(out.impacts)
 
 

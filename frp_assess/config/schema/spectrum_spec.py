@@ -23,6 +23,7 @@ from frp_assess.config.schema.spec_base import (
 )
 from frp_assess.errors import InputError
 from frp_assess.motions.site import SiteHazard, site_hazard
+from frp_assess.motions.table_limits import MAX_TABLE_PERIOD, MAX_TABLE_SE
 
 #: the hazard of a site, computed once per (latitude, longitude, V_N, use class)
 site_hazard_cached = functools.lru_cache(maxsize=64)(site_hazard)
@@ -177,12 +178,12 @@ class TableSpectrum(_Model):
     """A user table of (T, Se) points, linear between them."""
 
     type: Literal["table"] = Field(description="Spectrum kind.")
-    periods: list[Annotated[Number, Field(ge=0, le=100)]] = Field(
+    periods: list[Annotated[Number, Field(ge=0, le=MAX_TABLE_PERIOD)]] = Field(
         min_length=2,
         max_length=MAX_TABLE_POINTS,
         description=f"Periods T [s], increasing, 0-100, 2 to {MAX_TABLE_POINTS} points.",
     )
-    accelerations: list[Annotated[Number, Field(ge=0, le=20)]] = Field(
+    accelerations: list[Annotated[Number, Field(ge=0, le=MAX_TABLE_SE)]] = Field(
         min_length=2,
         max_length=MAX_TABLE_POINTS,
         description="Spectral accelerations Se(T) [g], 0-20, one per period.",

@@ -8,6 +8,17 @@ inliner copies a function's code into the callers named here, before types are i
 Each copy costs compilation time (the whole kernel is compiled once per cache), so a
 function is inlined only into the callers on the path of every step, nowhere else.
 Inlining changes no arithmetic: the results are the same bit for bit.
+
+The driver's own pieces, written as functions a reader can follow against MODEL.md §3–4,
+are inlined with ``inline="always"`` (they are called from the driver and from each other
+only): :func:`.step_control.try_step` and :func:`.step_scan.scan_step` on the path of every
+step, :func:`.collapse_rule.verdict`, the regime's helpers of :mod:`.state`.  The jumps at an
+event or an uplift (:func:`.jumps.jump`, :func:`.jumps.uplift_from_rest`) are compiled on
+their own instead, with the jumps inlined into them: one call per event, as before the
+split, and compiled once for both versions of the driver.  Measured on 2026-11-28 against
+the driver before the split (benchmarks/bench_kernel_against.py, every 20th case of the
+paper's grid): the same results bit for bit, the same speed; the first IDA's compilation
+0.2–0.4 CPU-s (2–3 %) longer (docs/model.md §4.6).
 """
 
 from __future__ import annotations

@@ -1,5 +1,10 @@
 """The jumps of the state at the events of Eq. 10 (docs/model.md §3.2–3.4): uplift from rest,
-impact at θ = 0 (and when the bounces after it surely die out), rupture of a bar at θ_max."""
+impact at θ = 0 (and when the bounces after it surely die out), rupture of a bar at θ_max.
+
+The driver (:mod:`.simulate`) calls :func:`uplift_from_rest` while the wall rests and
+:func:`jump` at every event it located inside a step; each returns the new (θ, θ') and
+:class:`~.state.Regime`.  A new kind of event adds its branch to :func:`jump`.
+"""
 
 from __future__ import annotations
 
@@ -15,9 +20,11 @@ from frp_assess.dynamics.kernel.params import (
     RUPTURE_ENERGY_TRANSFER,
     KernelParams,
 )
+from frp_assess.dynamics.kernel.state import Ground, Regime, acting_bar, rocking_on, with_bars
+from frp_assess.dynamics.kernel.step_scan import CRUSH, IMPACT, NO_EVENT, RUPTURE
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, nogil=True, inline="always")
 def uplift(
     ua: float, slope: float, x: float, x_end: float, prm: KernelParams
 ) -> tuple[float, float]:
@@ -42,7 +49,7 @@ def uplift(
     return x_end, 0.0
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, nogil=True, inline="always")
 def impact(omega: float, s: float, prm: KernelParams) -> tuple[float, float, bool]:
     """Jump at θ = 0: (θ'₊, new s, at rest).  Two-sided: the pivot changes; one-sided: rebound."""
     if prm.one_sided:
@@ -56,7 +63,7 @@ def impact(omega: float, s: float, prm: KernelParams) -> tuple[float, float, boo
     return omega_new, s_new, False
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, nogil=True, inline="always")
 def rupture(
     omega: float, s: float, intact_pos: bool, intact_neg: bool, prm: KernelParams
 ) -> tuple[float, bool, bool]:
@@ -177,3 +184,74 @@ def chatter_ends(
         u_b = u_c
         rest += dt
         j += 1
+
+
+@njit(cache=True, nogil=True)
+def uplift_from_rest(
+    r: Regime, ua: float, slope: float, x: float, x_end: float, prm: KernelParams
+) -> tuple[float, Regime, int]:
+    """The wall at rest at x [s] into a sample interval whose input is ua + slope·τ [g]:
+    (the instant it uplifts, or x_end; the regime then; the event there: CRUSH when the toe
+    crushes as it uplifts, x_W already reaching the acting intact bar (θ_cr ≤ 0), else
+    NO_EVENT).  See :func:`uplift`."""
+    x, side = uplift(ua, slope, x, x_end, prm)
+    if side == 0.0:
+        return x, r, NO_EVENT
+    r = rocking_on(r, side, False)
+    return x, r, CRUSH if prm.theta_cr <= 0.0 and acting_bar(r) else NO_EVENT
+
+
+@njit(cache=True, nogil=True)
+def jump(
+    event: int, level: float, omega: float, r: Regime, prm: KernelParams
+) -> tuple[float, float, Regime]:
+    """(θ, θ', regime) just after ``event`` (a step_scan code) located at s·θ = ``level`` with
+    θ' = ``omega``: the impact's and the rupture's jumps; at the toe crushing and the collapse
+    level the state is kept (the verdict ends the time history there)."""
+    if event == IMPACT:
+        omega, s, resting = impact(omega, r.s, prm)
+        return 0.0, omega, rocking_on(r, s, resting)
+    theta = r.s * level
+    if event == RUPTURE:
+        omega, intact_pos, intact_neg = rupture(omega, r.s, r.intact_pos, r.intact_neg, prm)
+        return theta, omega, with_bars(r, intact_pos, intact_neg)
+    return theta, omega, r
+
+
+@njit(cache=True, nogil=True, inline="always")
+def bounces_die_out(
+    omega: float,
+    r: Regime,
+    free: bool,
+    ground: Ground,
+    i: int,
+    x: float,
+    last: int,
+    peak: float,
+    bar_level: float,
+    limit: float,
+    prm: KernelParams,
+) -> bool:
+    """Right after an impact at x [s] into the interval from sample i (θ' = ``omega``, regime
+    r): whether the wall is put at rest now, because the bounces surely die out where the
+    input cannot uplift it, before sample ``last`` (:func:`chatter_ends`; never during the
+    free vibration, nor when ``prm.settle_chatter`` is off).  ``peak``, ``bar_level`` and
+    ``limit`` bound the height a bounce may reach: below the peak so far and every event
+    level."""
+    if not prm.settle_chatter or r.resting or free:
+        return False
+    any_bar = r.intact_pos or r.intact_neg
+    return chatter_ends(
+        omega,
+        r.s,
+        ground.acc,
+        i,
+        x,
+        ground.dt,
+        ground.scale / prm.g,
+        ground.acc.shape[0],
+        last,
+        min(peak, bar_level) if any_bar else min(peak, limit),
+        prm.k_bar if any_bar else 0.0,
+        prm,
+    )

@@ -1,5 +1,6 @@
-"""Step-size control of the time-stepping driver (docs/model.md §4): how long the next step
-is, whether a step is accepted, and whether an accepted step is quiet (no event, no new peak).
+"""The integrator of the time-stepping driver (docs/model.md §4.2): one step and its error
+control (:func:`try_step`), how long the next step is, whether a step is accepted, and whether an
+accepted step is quiet (no event, no new peak).
 
 Called by :mod:`.simulate`; numbers only.
 """
@@ -7,10 +8,20 @@ Called by :mod:`.simulate`; numbers only.
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 from numba import njit
 
-from frp_assess.dynamics.kernel.params import STEP_GROWTH_MAX, STEP_SAFETY, STEP_SHRINK_MIN
+from frp_assess.dynamics.kernel.params import (
+    METHOD_DOPRI5,
+    METHOD_RK4,
+    MIN_STEP_FRACTION,
+    STEP_GROWTH_MAX,
+    STEP_SAFETY,
+    STEP_SHRINK_MIN,
+    KernelParams,
+)
+from frp_assess.dynamics.kernel.steppers import acceleration, step
 
 #: A step that would leave less than this fraction of itself before the next sample is
 #: stretched to the sample; shorter steps divide the rest of the interval equally.
@@ -90,3 +101,76 @@ def quiet(y0: float, y1: float, m0: float, m1: float, top: float) -> bool:
     b1 = y0 + m0 / 3.0
     b2 = y1 - m1 / 3.0
     return y0 >= 0.0 and min(min(y1, b1), b2) > 0.0 and max(max(y0, y1), max(b1, b2)) < top
+
+
+class Stepping(NamedTuple):
+    """The constants of the step control of one time history (:func:`stepping`)."""
+
+    adaptive: bool  #: an embedded pair with error control (else RK4 at ``h_fixed``)
+    order: int  #: q + 1, q the order of the embedded error estimate
+    exponent: float  #: −1/order, the step-size exponent
+    err_grow_max: float  #: :func:`grow_threshold` of the exponent
+    h_enough: float  #: a proposal this long reaches the next sample [s] (:func:`step_size`)
+    h_fixed: float  #: RK4's step: dt divided into equal steps no longer than fixed_step [s]
+    h_start: float  #: the first proposal of every rocking phase [s]
+    h_min: float  #: below this step the error control gives up [s]
+
+
+@njit(cache=True, nogil=True, inline="always")
+def stepping(dt: float, prm: KernelParams) -> Stepping:
+    """The step control's constants for records sampled every dt [s].
+
+    The first proposal of a rocking phase, min(dt, 0.05/p), is made at the start and again at
+    every uplift from rest, so that a phase does not depend on how the one before it came to
+    rest.
+    """
+    adaptive = prm.method != METHOD_RK4
+    order = 5 if prm.method == METHOD_DOPRI5 else 3
+    exponent = -1.0 / order
+    h_fixed = dt / max(1, int(math.ceil(dt / prm.fixed_step - 1e-9))) if not adaptive else dt
+    return Stepping(
+        adaptive,
+        order,
+        exponent,
+        grow_threshold(exponent),
+        (1.0 - SLIVER) * dt,  # every step ends at a sample, at most dt away
+        h_fixed,
+        h_fixed if not adaptive else min(dt, 0.05 / prm.p),
+        MIN_STEP_FRACTION * dt,
+    )
+
+
+@njit(cache=True, nogil=True, inline="always")
+def try_step(
+    theta: float,
+    omega: float,
+    a1: float,
+    need_a: bool,
+    h: float,
+    u0: float,
+    slope: float,
+    rest: float,
+    s: float,
+    k_s: float,
+    ctl: Stepping,
+    prm: KernelParams,
+) -> tuple[float, float, float, float, float, float, bool]:
+    """One step of the integrator and its error control, from (θ, θ') with θ'' = a1 (computed
+    here when ``need_a``), the proposal h [s] and ``rest`` [s] left to the next sample, under
+    the ground u0 + slope·τ [g] in the regime (s, K_s), frozen for the step.
+
+    Returns (θ, θ', θ'' at the end, a1, the step taken hh [s], the next proposal [s],
+    accepted): the driver retries a rejected step with the shorter proposal
+    (:func:`step_size`) until one is accepted or the proposal falls below ``ctl.h_min``.
+    The retry loop is the driver's: inside this function it made the IDAs 2.5 % slower
+    (benchmarks/bench_kernel_against.py, 2026-11-28).  numba inlines it into the driver
+    (:mod:`.inlining`).
+    """
+    if need_a:
+        a1 = acceleration(theta, s, u0, k_s, prm)
+    hh = step_length(h if ctl.adaptive else ctl.h_fixed, rest, ctl.adaptive)
+    th1, om1, a_end, err = step(theta, omega, hh, u0, slope, s, k_s, a1, prm)
+    accepted = True
+    if ctl.adaptive:
+        accepted, h = step_size(err, hh, h, ctl.exponent, ctl.err_grow_max, ctl.h_enough, ctl.order)
+    return th1, om1, a_end, a1, hh, h, accepted

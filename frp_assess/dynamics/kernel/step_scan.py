@@ -1,10 +1,15 @@
 """The events and the peak of one accepted step of the driver (:mod:`.simulate`).
 
 A step's dense output of y = s·θ is the cubic Hermite through (0, y0), (1, y1) with slopes
-m0 = s·θ'·h, m1; the driver tests first whether the step is quiet (the cubic stays inside
-(0, top): :func:`.step_control.quiet`, most steps) and calls :func:`search_step` only for
-the others: the first event on the cubic (impact, rupture, toe crushing, the collapse level),
-located on the integrator by :mod:`.events`, and the largest s·θ before it.
+m0 = s·θ'·h, m1.  :func:`scan_step` tests first whether the step is quiet (the cubic stays
+inside (0, top): :func:`.step_control.quiet`, most steps) and calls :func:`search_step` only
+for the others: the first event on the cubic, located on the integrator by :mod:`.events`,
+and the largest s·θ before it.
+
+The event kinds are the codes below; :func:`first_event` finds each one's crossing, the
+driver locates the earliest (:func:`.events.locate_level`), :func:`.jumps.jump` applies its
+jump and :func:`.collapse_rule.verdict` judges it.  A new kind of event (a tie that yields or is
+lost: MODEL.md §12) is a code here, its level in :func:`first_event` and its jump.
 """
 
 from __future__ import annotations
@@ -15,6 +20,8 @@ from numba import njit
 
 from frp_assess.dynamics.kernel import events as ev
 from frp_assess.dynamics.kernel.params import KernelParams
+from frp_assess.dynamics.kernel.state import Regime, acting_bar
+from frp_assess.dynamics.kernel.step_control import quiet
 
 NO_EVENT = 0
 IMPACT = 1
@@ -132,3 +139,49 @@ def search_step(
         turning_peak(theta, omega, a1, hh, u_end, u0, slope, s, k_s, floor, c, r1, r2, prm),
     )
     return event, u_event, level, step_max
+
+
+@njit(cache=True, nogil=True, inline="always")
+def scan_step(
+    theta: float,
+    omega: float,
+    a1: float,
+    th1: float,
+    om1: float,
+    hh: float,
+    u0: float,
+    slope: float,
+    r: Regime,
+    k_s: float,
+    peak: float,
+    peak_bar: float,
+    bar_level: float,
+    limit: float,
+    prm: KernelParams,
+) -> tuple[int, float, float, float, float, float, float]:
+    """The first event of the accepted step hh [s] from (θ, θ', θ'' = a1) to (th1, om1) in the
+    regime r, and the peaks up to it: (kind, u ∈ (0, 1] or 2.0, level, peak |θ|, peak |θ| with
+    an intact bar, y0 = s·θ, y1 = s·th1).
+
+    ``limit``: the collapse level (:func:`.collapse_rule.collapse_level`); ``bar_level``: the lowest
+    level with the bar intact, min(θ_max, θ_cr, limit).  numba inlines it into the driver.
+    """
+    s = r.s
+    bar_on = acting_bar(r)
+    y0 = s * theta
+    y1 = s * th1
+    floor = peak_bar if bar_on else peak
+    top = min(floor, bar_level) if bar_on else min(floor, limit)
+    m0 = s * omega * hh
+    m1 = s * om1 * hh
+    if quiet(y0, y1, m0, m1, top):
+        # the dense output stays inside (0, top): no event, no new peak
+        event, u_event, level, step_max = NO_EVENT, 2.0, 0.0, max(y0, y1)
+    else:
+        event, u_event, level, step_max = search_step(
+            theta, omega, a1, hh, u0, slope, s, k_s, bar_on, limit, floor, prm, y0, y1, m0, m1
+        )
+    peak = max(peak, step_max)
+    if bar_on:
+        peak_bar = max(peak_bar, step_max)
+    return event, u_event, level, peak, peak_bar, y0, y1
