@@ -17,6 +17,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from frp_assess.results.as_built import AsBuilt
+from frp_assess.results.carried_loads import LoadsResult
 from frp_assess.results.checks import KinematicChecks
 from frp_assess.results.pivot import MasonryResult, PivotResult
 from frp_assess.results.run_inputs import BuildingResult as BuildingResult  # re-export
@@ -376,6 +377,9 @@ class AssessmentResult:
     #: "sha256:<hex>" of what the results depend on (project file, record files, frp-assess
     #: version, --rtol/--verify: frp_assess/app/rerun.py); None (the key absent) when not known
     inputs_digest: str | None = field(default=None, metadata={"omit_if_none": True})
+    #: the loads the wall carries and α₀ with them (docs/model.md §12); the key is absent
+    #: without loads
+    loads: LoadsResult | None = field(default=None, metadata={"omit_if_none": True})
 
     @property
     def urm(self) -> CaseResult:
