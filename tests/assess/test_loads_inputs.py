@@ -79,3 +79,18 @@ def test_results_record_of_the_loads_round_trips() -> None:
     data = json.loads(json.dumps(to_data(record)))
     assert from_data(LoadsResult, data) == record
     assert loads_result(load_inputs(LAQUILA, warn=None)) is None
+
+
+def test_validate_summary_names_every_load(capsys: pytest.CaptureFixture[str]) -> None:
+    """`validate` prints one line with every load, its lever and whether its mass is carried;
+    the tie's F_y = 314.16 mm²·235 MPa/3 m = 24.6 kN/m, ductile (no anchorage given)."""
+    from frp_assess.cli import main
+
+    assert main(["validate", str(FIXTURE)]) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert out[2] == (
+        "  loads: first floor 10 kN/m at d = 0.3 m (carried); roof 4 kN/m at d = 0.2 m "
+        "(restrained); rafters 1 kN/m outward at h = 5.5 m; catena A_s = 314.2 mm2 every 3 m "
+        "at h_t = 5.8 m (F_y = 24.6 kN/m, ductile)"
+    )
+    assert out[3].startswith("  spectrum:")
