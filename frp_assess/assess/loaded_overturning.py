@@ -17,7 +17,12 @@ from frp_assess.assess.load_inputs import LoadsInput
 from frp_assess.dynamics import RockingModel
 from frp_assess.dynamics.loads import Loads
 from frp_assess.dynamics.units import N_PER_KN
-from frp_assess.results.carried_loads import MomentTerm, OverturningResult
+from frp_assess.results.carried_loads import (
+    BASE_REACTION,
+    WALL_WEIGHT,
+    MomentTerm,
+    OverturningResult,
+)
 from frp_assess.rules.constants import G
 from frp_assess.rules.masonry import compressed_zone_depth
 from frp_assess.rules.tie_rods import tie_capacity
@@ -77,14 +82,14 @@ def moment_terms(model: RockingModel, names: LoadsInput) -> tuple[MomentTerm, ..
     """Every term of α₀ (kN/m, m, kNm/m), named as the project names the loads."""
     w = model.wall
     loads = model.loads
-    terms = [_term("wall weight W", "stabilising", w.weight, w.thickness / 2.0)]
+    terms = [_term(WALL_WEIGHT, "stabilising", w.weight, w.thickness / 2.0)]
     terms += [
         _term(n.name, "stabilising", p.force, p.distance)
         for n, p in zip(names.top, loads.top, strict=True)
     ]
     if (m := base_moment(model)) > 0.0:
         n0 = w.weight + loads.vertical
-        terms.append(_term("base reaction N0 (pivot inside the wall)", "stabilising", n0,
+        terms.append(_term(BASE_REACTION, "stabilising", n0,
                            m / n0, -1.0))  # fmt: skip
     terms += [
         _term(n.name, "overturning", f.force, f.height)
@@ -94,7 +99,7 @@ def moment_terms(model: RockingModel, names: LoadsInput) -> tuple[MomentTerm, ..
         _term(n.name, "internal work", tie_capacity(t.yield_force, t.anchorage_force), t.height)
         for n, t in zip(names.ties, loads.ties, strict=True)
     ]
-    terms.append(_term("wall weight W", "inertia", w.weight, w.height / 2.0))
+    terms.append(_term(WALL_WEIGHT, "inertia", w.weight, w.height / 2.0))
     terms += [
         _term(n.name, "inertia", p.force, w.height)
         for n, p in zip(names.top, loads.top, strict=True)

@@ -11,6 +11,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+#: the names of the two terms of α₀ that are not the project's loads (the report words them)
+WALL_WEIGHT = "wall weight W"
+BASE_REACTION = "base reaction N0 (pivot inside the wall)"
+
 
 @dataclass(frozen=True)
 class TopLoadResult:
