@@ -94,3 +94,44 @@ def test_validate_summary_names_every_load(capsys: pytest.CaptureFixture[str]) -
         "at h_t = 5.8 m (F_y = 24.6 kN/m, ductile)"
     )
     assert out[3].startswith("  spectrum:")
+
+
+def _schema_text() -> str:
+    """What `frp-assess schema` prints."""
+    import contextlib
+    import io
+
+    from frp_assess.cli import main
+
+    buffer = io.StringIO()
+    with contextlib.redirect_stdout(buffer):
+        assert main(["schema"]) == 0
+    return buffer.getvalue()
+
+
+def test_the_template_documents_wall_loads(tmp_path: Path) -> None:
+    """templates/wall.yaml's commented `wall.loads` example, uncommented, is a valid project
+    with a floor, a thrust and a tie (and the JSON Schema of `frp-assess schema` has the block,
+    from the pydantic model)."""
+    import frp_assess
+
+    template = Path(frp_assess.__file__).parent / "templates" / "wall.yaml"
+    lines = template.read_text(encoding="utf-8").splitlines()
+    start = lines.index(
+        "  # loads:                     # optional: what bears on and pushes the wall, per metre of"
+    )
+    out = list(lines)
+    i = start
+    while lines[i].startswith("  #"):
+        out[i] = "  " + lines[i][4:]
+        i += 1
+    path = tmp_path / "p.yaml"
+    path.write_text("\n".join(out) + "\n", encoding="utf-8")
+    inputs = load_inputs(path, warn=None)
+    assert [p.name for p in inputs.loads.top] == ["first floor"]
+    assert [t.anchorage for t in inputs.loads.ties] == [40.0]
+    assert len(inputs.loads.thrusts) == 1
+    capsys_text = _schema_text()
+    text = json.dumps(json.loads(capsys_text))
+    for key in ("TopLoadSpec", "ThrustSpec", "TieSpec", "WallLoadsSpec"):
+        assert key in text, key
