@@ -56,11 +56,7 @@ def simple_overturning_check(
 
 
 def overturning_check(
-    alpha0: float,
-    e_star: float,
-    ag_s: float,
-    knowledge_level: str = "LC1",
-    behaviour_factor: float = 2.0,
+    alpha0: float, e_star: float, ag_s: float, knowledge_level: str, behaviour_factor: float
 ) -> KinematicCheck:
     """The linear check a0* = α0·g/(e*·FC) ≥ a_g·S/q of any α0 and e* (Circolare 2019
     eqs. C8.7.1.1, C8.7.1.3, C8.7.1.9): :func:`simple_overturning_check` for the wall alone,

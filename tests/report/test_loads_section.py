@@ -83,12 +83,7 @@ def test_no_loads_no_part() -> None:
 @pytest.mark.parametrize("code", LANGUAGES)
 def test_pdf_and_docx_show_the_loads_alike(code: str, tmp_path: Path) -> None:
     """The loads part reads the same in the PDF story, the Word file and the document model."""
-    from frp_assess.report.document import build_docx
-    from tests.report.test_document_model import _squash, docx_texts, pdf_texts
+    from tests.report.test_document_model import renderers_agree
 
-    results = _results(code)
-    model = [_squash(t) for t in plain_texts(build_document(results))]
-    out = tmp_path / "report.docx"
-    build_docx(results, out)
-    assert docx_texts(out) == model
-    assert pdf_texts(results) == model
+    texts = renderers_agree(_results(code), tmp_path)
+    assert any(t.endswith(("Loads on the wall", "Carichi sulla parete")) for t in texts)
