@@ -7,7 +7,9 @@ clause functions of :mod:`frp_assess.assess.kinematic_nonlinear` and
 Every check uses the wall model the IDA runs (docs/model.md §1.1): its α0 = a_RM/g (the
 moment balance about the pivot, the base reaction included), its restraint term K and its
 bar rupture rotation θ_max; the block turns about its base corner, so displacements keep the
-wall's geometry.
+wall's geometry.  A wall carrying loads (docs/model.md §12.1) has α0, e* and the capacity curve
+with them (:mod:`~frp_assess.assess.loaded_overturning`,
+:mod:`~frp_assess.assess.loaded_capacity`).
 
 * the linear check a0* ≥ demand/q (§C8.7.1.2.1.7), with α0 of the model: the bars, unstressed
   at rest, do not change α0, so it differs between options only where their models' α0 do;
