@@ -26,12 +26,15 @@ import numpy as np
 from frp_assess import __version__
 from frp_assess.assess.inputs import BuildingSettings
 from frp_assess.dynamics import FAILURE_MODES, IdaPoint, IdaResult, IdaSettings, RockingModel
+from frp_assess.dynamics.options import CAPACITY_RULES
 from frp_assess.io_utils import atomic_write_text
 from frp_assess.text_safety import plain
 
 #: Bump when the numerics change in a way that changes results.
 #: 4: the base reaction of docs/model.md §1.1 and IdaResult.failure_mode
-CACHE_VERSION = 4  # 2: IdaResult.survivor_multiplier; 3: keyed on every ModelOptions field
+#: 5: the effective collapse intensity (docs/model.md §11): IdaSettings.capacity and .offset,
+#: IdaResult.capacity, first_collapse, windows_below and bound_multiplier
+CACHE_VERSION = 5  # 2: IdaResult.survivor_multiplier; 3: keyed on every ModelOptions field
 
 
 def record_digest(acc: np.ndarray, dt: float) -> str:
@@ -69,7 +72,8 @@ def task_key(
         ],
         # every field of the model options, whatever they are (integrator settings included)
         "model": {f.name: getattr(o, f.name) for f in fields(o)},
-        "ida": [settings.step_ratio, settings.tolerance, settings.max_multiplier],
+        # every field of the IDA settings (the capacity rule and the ladder's offset included)
+        "ida": {f.name: getattr(settings, f.name) for f in fields(settings)},
         "record": record_hash,
     }
     if building is not None:
@@ -148,6 +152,13 @@ def _failure_mode(key: str, v: object) -> object:
     return v
 
 
+def _capacity(key: str, v: object) -> object:
+    """One of :data:`~frp_assess.dynamics.options.CAPACITY_RULES`."""
+    if v not in CAPACITY_RULES:
+        raise DamagedEntry(f"{key} = {v!r} is not a capacity rule")
+    return v
+
+
 #: how each field of an IdaResult is checked (every field must have one: see the tests)
 FIELD_CHECKS: dict[str, Callable[[str, Any], object]] = {
     "pga": _positive,
@@ -159,6 +170,10 @@ FIELD_CHECKS: dict[str, Callable[[str, Any], object]] = {
     "survivor_multiplier": lambda k, v: _positive(k, v, optional=True),
     "curve": _curve,
     "failure_mode": _failure_mode,
+    "capacity": _capacity,
+    "first_collapse": lambda k, v: _positive(k, v, optional=True),
+    "windows_below": _count,
+    "bound_multiplier": lambda k, v: _positive(k, v, optional=True),
 }
 
 

@@ -40,7 +40,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 def run(args: argparse.Namespace) -> int:
     model = build_model(args)
     try:
-        settings = IdaSettings(args.step_ratio, args.tolerance, args.max_multiplier)
+        settings = IdaSettings(**{key: getattr(args, key) for key in IDA_OPTIONS})
     except ValueError as exc:
         raise InputError(str(exc)) from None
     if args.jobs is not None and args.jobs < 1:
