@@ -16,9 +16,13 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
+
+if TYPE_CHECKING:
+    from frp_assess.dynamics.ida import IdaPoint
 
 #: The early stop of the sampling (docs/model.md §11): once the ladder points have collapsed
 #: without a break over this ratio of multipliers, the wall is taken as collapsed up to C_max.
@@ -71,3 +75,14 @@ def effective_capacity(
         fell_before = fell
     first = next((c for c, fell in pts if fell), None)
     return EffectiveCapacity(a_c, not last_fell, first, windows)
+
+
+def collapse_and_below(curve: Sequence[IdaPoint], capacity: float) -> tuple[float, float | None]:
+    """The lowest C of ``curve`` that collapsed at or above ``capacity`` (else the highest that
+    collapsed, else ``capacity``) and the largest C below it that stood (None: none): the
+    time histories that show a record's collapse at its effective capacity."""
+    fell = [p.multiplier for p in curve if p.collapsed]
+    above = [c for c in fell if c >= capacity]
+    c = min(above) if above else (max(fell) if fell else capacity)
+    stood = [p.multiplier for p in curve if not p.collapsed and p.multiplier < c]
+    return c, (max(stood) if stood else None)

@@ -243,7 +243,7 @@ IDA_MAX_MULTIPLIER: Option[float] = Option(
 IDA_CAPACITY: Option[CapacityRule] = Option(
     key="capacity",
     flag="--capacity",
-    default="first-collapse",
+    default="effective",
     help="The capacity of a record: effective (the effective collapse intensity, every "
     "collapse window counted by its width, docs/model.md §11) or first-collapse (the first "
     "collapse the hunt meets, the paper's convention, §5)",

@@ -14,6 +14,7 @@ from frp_assess.dynamics import IdaSettings, RockingModel, Wall, ida
 from frp_assess.dynamics.effective import effective_capacity, ladder
 from tests.conftest import synthetic_record
 from tests.dynamics.test_ida import ACC, StubModel
+from tests.validation.corpus import ROOT
 
 C0 = Wall(thickness=0.4, height=3.0, unit_weight=18e3).a_rm / 2.0  # ACC's PGA is 2 m/s²
 EFFECTIVE = IdaSettings(capacity="effective")
@@ -146,3 +147,19 @@ def test_compiled_sampling_is_the_python_one() -> None:
         (p.multiplier, p.collapsed) for p in b.curve
     ]
     assert a.collapse_multiplier == b.collapse_multiplier
+
+
+def test_the_project_file_sets_every_ida_field(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    """analysis.ida.capacity, ladder_ratio and offset reach the run's IdaSettings."""
+    from frp_assess.assess.from_project import load_inputs
+
+    text = (ROOT / "projects" / "paper-case.yaml").read_text(encoding="utf-8")
+    text = text.replace(
+        "    capacity: first-collapse",
+        "    capacity: first-collapse\n    ladder_ratio: 1.2\n    offset: 0.25",
+    )
+    (tmp_path / "p.yaml").write_text(text, encoding="utf-8")
+    ida_settings = load_inputs(tmp_path / "p.yaml").ida
+    assert ida_settings.capacity == "first-collapse"
+    assert ida_settings.ladder_ratio == 1.2 and ida_settings.offset == 0.25
+    assert load_inputs(ROOT / "projects" / "facade-laquila.yaml").ida.capacity == "effective"
