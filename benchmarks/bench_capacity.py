@@ -7,14 +7,16 @@ The project (default projects/facade-laquila.yaml: 19 cases x 7 records and its 
 is copied twice into a temporary folder with ``analysis.ida.capacity`` set to each rule; after
 one run of each to compile the kernels (numba's cache), the two are run alternately, N rounds
 (default 2), each time by the command line into a fresh ``--out`` folder (its IDA cache empty).
-Printed: every wall time, the medians, their ratio and the load average before and after.
-Not collected by pytest.
+Printed: every wall and CPU time (user + system of the run's process), the medians, their
+ratios and the load average before and after.
+Not collected by pytest; the run of 2026-11-28 is kept beside this file (bench_capacity.txt).
 """
 
 from __future__ import annotations
 
 import argparse
 import os
+import resource
 import statistics
 import subprocess
 import sys
@@ -40,12 +42,19 @@ def project_with(src: Path, rule: str, folder: Path) -> Path:
     return out
 
 
-def run(project: Path, out: Path) -> float:
+def children_cpu() -> float:
+    """CPU time [s] of the finished child processes so far, user + system."""
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
+def run(project: Path, out: Path) -> tuple[float, float]:
+    """(wall time, CPU time) [s] of one run by the command line."""
     env = {**os.environ, "PYTHONPATH": str(ROOT)}
     cmd = [sys.executable, "-m", "frp_assess", "run", str(project), "--out", str(out), "--no-pdf"]
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), children_cpu()
     subprocess.run(cmd, check=True, env=env, stdout=subprocess.DEVNULL)
-    return time.perf_counter() - t0
+    return time.perf_counter() - t0, children_cpu() - c0
 
 
 def main() -> int:
@@ -55,6 +64,7 @@ def main() -> int:
     args = ap.parse_args()
     print(f"load before: {os.getloadavg()}")
     times: dict[str, list[float]] = {r: [] for r in RULES}
+    cpus: dict[str, list[float]] = {r: [] for r in RULES}
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)
         projects = {r: project_with(Path(args.project), r, folder) for r in RULES}
@@ -62,14 +72,20 @@ def main() -> int:
             run(projects[r], folder / f"warm-{r}")
         for k in range(args.rounds):
             for r in RULES:
-                t = run(projects[r], folder / f"out-{r}-{k}")
+                t, c = run(projects[r], folder / f"out-{r}-{k}")
                 times[r].append(t)
-                print(f"round {k + 1}: {r:<15} {t:7.2f} s  (load {os.getloadavg()[0]:.1f})")
-    med = {r: statistics.median(v) for r, v in times.items()}
-    print(
-        f"median: first-collapse {med['first-collapse']:.2f} s, effective {med['effective']:.2f} s,"
-        f" ratio {med['effective'] / med['first-collapse']:.2f}; load after: {os.getloadavg()}"
-    )
+                cpus[r].append(c)
+                print(
+                    f"round {k + 1}: {r:<15} {t:7.2f} s wall, {c:7.2f} s CPU "
+                    f"(load {os.getloadavg()[0]:.1f})"
+                )
+    for label, values in (("wall", times), ("CPU", cpus)):
+        med = {r: statistics.median(v) for r, v in values.items()}
+        print(
+            f"median {label}: first-collapse {med['first-collapse']:.2f} s, effective "
+            f"{med['effective']:.2f} s, ratio {med['effective'] / med['first-collapse']:.2f}"
+        )
+    print(f"load after: {os.getloadavg()}")
     return 0
 
 
