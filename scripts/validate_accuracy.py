@@ -56,7 +56,8 @@ PERTURBATION = 1e-6  #: relative change of the record that defines ill-condition
 #: (a peak that a change of a few 1e-6 sends to another branch is not determined by the data
 #: either, and ± 1e-6 alone can miss the branch: docs/model.md §4.5)
 CURVE_PERTURBATIONS = (1e-6, -1e-6, 2e-6, -2e-6, 4e-6, -4e-6)
-SETTINGS = IdaSettings(tolerance=1e-3)
+#: the first collapse of docs/model.md §5: its bracket is what the bars below are stated for
+SETTINGS = IdaSettings(tolerance=1e-3, capacity="first-collapse")
 
 
 def rel(a: float | None, b: float | None) -> float:

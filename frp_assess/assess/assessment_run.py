@@ -30,6 +30,7 @@ from frp_assess.assess.seismic import SeismicInput
 from frp_assess.assess.verdict_pipeline import assess_and_decide
 from frp_assess.assess.verification import verify
 from frp_assess.dynamics import RockingModel
+from frp_assess.dynamics.effective import collapse_and_below
 from frp_assess.results.model import AssessmentResult, CaseResult, Governing
 
 #: progress(stage, done, total); stages: "ida", "verify", "sensitivity", "design", "checks"
@@ -78,9 +79,14 @@ def governing_histories(
     if not failing:
         return None
     c, k = min(failing)
+    survivor = res[k].survivor_multiplier
+    if res[k].capacity == "effective":
+        # the effective capacity is no sample (docs/model.md §11): show the first time history
+        # that collapsed at or above it, and the largest one below that stood
+        c, survivor = collapse_and_below(res[k].curve, c)
     model = inputs.model_for(None if idx == 0 else inputs.options[idx - 1])
     rec = floor_record(records[k], inputs.building)  # the motion the IDA ran
-    below = below_collapse(c, res[k].survivor_multiplier, inputs.ida.tolerance)
+    below = below_collapse(c, survivor, inputs.ida.tolerance)
     alpha = model.alpha  # θ/α_x: α_x = atan((B − x_W)/H), the edge's α with pivot: edge
     runs = (
         history_run("collapse", c, model.run(rec.acc, rec.dt, c, history=True), alpha),

@@ -26,13 +26,17 @@ import numpy as np
 from frp_assess import __version__
 from frp_assess.assess.inputs import BuildingSettings
 from frp_assess.dynamics import FAILURE_MODES, IdaPoint, IdaResult, IdaSettings, RockingModel
+from frp_assess.dynamics.effective import effective_capacity
 from frp_assess.dynamics.loads import Loads
+from frp_assess.dynamics.options import CAPACITY_RULES
 from frp_assess.io_utils import atomic_write_text
 from frp_assess.text_safety import plain
 
 #: Bump when the numerics change in a way that changes results.
 #: 4: the base reaction of docs/model.md §1.1 and IdaResult.failure_mode
-CACHE_VERSION = 4  # 2: IdaResult.survivor_multiplier; 3: keyed on every ModelOptions field
+#: 5: the effective collapse intensity (docs/model.md §11): IdaSettings.capacity and .offset,
+#: IdaResult.capacity, first_collapse, windows_below and bound_multiplier
+CACHE_VERSION = 5  # 2: IdaResult.survivor_multiplier; 3: keyed on every ModelOptions field
 
 
 def record_digest(acc: np.ndarray, dt: float) -> str:
@@ -88,7 +92,8 @@ def task_key(
         ],
         # every field of the model options, whatever they are (integrator settings included)
         "model": {f.name: getattr(o, f.name) for f in fields(o)},
-        "ida": [settings.step_ratio, settings.tolerance, settings.max_multiplier],
+        # every field of the IDA settings (the capacity rule and the ladder's offset included)
+        "ida": {f.name: getattr(settings, f.name) for f in fields(settings)},
         "record": record_hash,
     }
     if model.loads:  # docs/model.md §12; without loads the key it had before loads existed
@@ -169,6 +174,13 @@ def _failure_mode(key: str, v: object) -> object:
     return v
 
 
+def _capacity(key: str, v: object) -> object:
+    """One of :data:`~frp_assess.dynamics.options.CAPACITY_RULES`."""
+    if v not in CAPACITY_RULES:
+        raise DamagedEntry(f"{key} = {v!r} is not a capacity rule")
+    return v
+
+
 #: how each field of an IdaResult is checked (every field must have one: see the tests)
 FIELD_CHECKS: dict[str, Callable[[str, Any], object]] = {
     "pga": _positive,
@@ -180,6 +192,10 @@ FIELD_CHECKS: dict[str, Callable[[str, Any], object]] = {
     "survivor_multiplier": lambda k, v: _positive(k, v, optional=True),
     "curve": _curve,
     "failure_mode": _failure_mode,
+    "capacity": _capacity,
+    "first_collapse": lambda k, v: _positive(k, v, optional=True),
+    "windows_below": _count,
+    "bound_multiplier": lambda k, v: _positive(k, v, optional=True),
 }
 
 
@@ -220,17 +236,22 @@ def parse_entry(text: str) -> IdaResult:
 def _consistent(r: IdaResult) -> None:
     """What :func:`frp_assess.dynamics.ida` makes true of every result, checked as strictly
     as an input (an entry edited by hand, C, a_dyn and q scaled together, is damaged):
-    a_dyn = C·PGA; on the IDA curve, C is the least multiplier that collapsed (none collapsed
-    without C) and the survivor the largest that stood (q is not checked: above the ground
-    floor it is of the floor motion's a_RM)."""
+    a_dyn = C·PGA; on the IDA curve, the first collapse is the least multiplier that collapsed;
+    C is that first collapse (``first-collapse``) or the effective collapse intensity of the
+    curve's samples (``effective``, docs/model.md §11), and the survivor the largest C that
+    stood (at or below the capacity with ``effective``).  q is not checked: above the ground
+    floor it is of the floor motion's a_RM."""
     c = r.collapse_multiplier
     if c is not None and r.a_dyn is not None and not math.isclose(r.a_dyn, c * r.pga, rel_tol=1e-9):
         raise DamagedEntry(f"a_dyn = {r.a_dyn!r} is not C·PGA = {c * r.pga!r}")
     if not r.curve:
         return
     fell = [p.multiplier for p in r.curve if p.collapsed]
-    stood = [p.multiplier for p in r.curve if not p.collapsed]
     first = min(fell) if fell else None
+    if r.capacity == "effective":
+        _consistent_effective(r, first)
+        return
+    stood = [p.multiplier for p in r.curve if not p.collapsed]
     if first != c:
         raise DamagedEntry(
             f"collapse_multiplier = {c!r} is not the curve's first collapse {first!r}"
@@ -238,6 +259,29 @@ def _consistent(r: IdaResult) -> None:
     if (max(stood) if stood else None) != r.survivor_multiplier:
         raise DamagedEntry(
             f"survivor_multiplier = {r.survivor_multiplier!r} is not the curve's last survivor"
+        )
+
+
+def _consistent_effective(r: IdaResult, first: float | None) -> None:
+    """:func:`_consistent` for the effective collapse intensity: recomputed from the curve."""
+    if r.first_collapse != first:
+        raise DamagedEntry(f"first_collapse = {r.first_collapse!r} is not the curve's {first!r}")
+    c = r.collapse_multiplier
+    if c is None:  # a lower bound: the wall stood at the last sample
+        return
+    eff = effective_capacity(
+        [(p.multiplier, p.collapsed) for p in r.curve], r.c0, max(p.multiplier for p in r.curve)
+    )
+    if not math.isclose(eff.multiplier, c, rel_tol=1e-12):
+        raise DamagedEntry(
+            f"collapse_multiplier = {c!r} is not the effective intensity of the curve "
+            f"{eff.multiplier!r}"
+        )
+    below = [p.multiplier for p in r.curve if not p.collapsed and p.multiplier <= c]
+    if (max(below) if below else None) != r.survivor_multiplier:
+        raise DamagedEntry(
+            f"survivor_multiplier = {r.survivor_multiplier!r} is not the curve's last survivor "
+            "below the capacity"
         )
 
 

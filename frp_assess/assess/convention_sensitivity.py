@@ -1,11 +1,13 @@
 """How the assessed option depends on the model conventions (issue 16 §3; docs/model.md §3).
 
-The conventions the paper leaves open — the impact rule, the collapse rule, the IDA's hunt
-step, the rupture rule, the cyclic strain factor — and a ±10 % change of the bars' elastic
+The conventions the paper leaves open — the impact rule, the collapse rule, the IDA's
+sampling, the rupture rule, the cyclic strain factor — and a ±10 % change of the bars' elastic
 modulus are varied one at a time on one case (the recommended option, else the best ranked
 one, else the unreinforced wall), through the same cached runner as the assessment, so a
-rerun costs nothing.  The hunt step is tried at √s: the same grid with one more multiplier
-between each pair, which can meet a collapse window that s steps over (docs/model.md §5.1).
+rerun costs nothing.  The sampling: with the effective collapse intensity (docs/model.md
+§11) its ladder shifted by half a step, the "numerical spread" of the design value; with the
+first collapse (§5) the hunt at √s, the same grid with one more multiplier between each pair,
+which can meet a collapse window that s steps over (§5.1).
 """
 
 from __future__ import annotations
@@ -36,11 +38,27 @@ class SensitivityRow:
     lower_bound: bool  #: some record did not collapse up to C_max
 
 
+def sampling_variant(model: RockingModel, settings: IdaSettings) -> Variant:
+    """The numerical one: with the effective collapse intensity (docs/model.md §11) its
+    ladder shifted by half a step, the "numerical spread"; with the first collapse (§5) the
+    hunt at √s."""
+    if settings.capacity == "effective":
+        shifted = replace(settings, offset=(settings.offset + 0.5) % 1.0)
+        return Variant(
+            f"numerical spread: IDA ladder shifted by half a step (offset {shifted.offset:g})",
+            model,
+            shifted,
+        )
+    finer = replace(settings, step_ratio=settings.step_ratio**0.5)
+    return Variant(f"IDA step ratio s = {finer.step_ratio:.4g}", model, finer)
+
+
 def convention_variants(model: RockingModel, settings: IdaSettings) -> list[Variant]:
     """The case itself, then one variant per convention: a different value of each option,
-    the hunt at √s (``settings``: the run's IDA search), and with bars the rupture rule, the
-    strain factor set to 1 or 0.5 and E ∓ 10 %.  The variants every case has come first, in
-    the same order, so that the i-th variant of two cases is the same convention."""
+    the sampling (:func:`sampling_variant`; ``settings``: the run's IDA search), and with
+    bars the rupture rule, the strain factor set to 1 or 0.5 and E ∓ 10 %.  The variants
+    every case has come first, in the same order, so that the i-th variant of two cases is
+    the same convention."""
     o = model.options
     out = [Variant("as assessed", model)]
     other_restitution = "velocity" if o.restitution == "energy" else "energy"
@@ -52,8 +70,7 @@ def convention_variants(model: RockingModel, settings: IdaSettings) -> list[Vari
     for rule in COLLAPSE_RULES:
         if rule != o.collapse:
             out.append(Variant(f"collapse: {rule}", model.with_options(collapse=rule)))
-    finer = replace(settings, step_ratio=settings.step_ratio**0.5)
-    out.append(Variant(f"IDA step ratio s = {finer.step_ratio:.4g}", model, finer))
+    out.append(sampling_variant(model, settings))
     bars = model.rebars
     if bars is None:
         return out

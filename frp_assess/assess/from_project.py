@@ -50,7 +50,6 @@ from frp_assess.config.schema import (
     TableSpectrum,
 )
 from frp_assess.config.schema.loads_spec import WallLoadsSpec
-from frp_assess.dynamics import IdaSettings
 from frp_assess.errors import InputError
 from frp_assess.motions import (
     ElasticSpectrum,
@@ -297,9 +296,7 @@ def inputs_from_project(
         model=analysis.model_options(analysis.integration.tolerance),
         verify=analysis.integration.verify,
         strain_factor=analysis.strain_factor,
-        ida=IdaSettings(
-            analysis.ida.step_ratio, analysis.ida.tolerance, analysis.ida.max_multiplier
-        ),
+        ida=analysis.ida.settings(),
         target=analysis.target,
         costs=CostSettings(str(project.costs.currency), project.costs.installation_per_metre),
         design=design,

@@ -16,6 +16,7 @@ import numpy as np
 from frp_assess import __version__
 from frp_assess.assess.bars_as_built import design_as_built, option_as_built
 from frp_assess.assess.code_check import KinematicCheck
+from frp_assess.assess.collapse_fraction import collapse_fractions, fraction_fragility
 from frp_assess.assess.decision import RANKING_RULE
 from frp_assess.assess.floor_input import FloorSpectra
 from frp_assess.assess.inputs import (
@@ -39,9 +40,13 @@ from frp_assess.assess.recorded_inputs import (
 from frp_assess.assess.runner import CaseSummary, DesignResult, design_value_rule
 from frp_assess.assess.seismic import SeismicInput
 from frp_assess.assess.site_result import site_result
-from frp_assess.assess.statistics import fit_lognormal_fragility, record_statistics
+from frp_assess.assess.statistics import (
+    LognormalFragility,
+    fit_lognormal_fragility,
+    record_statistics,
+)
 from frp_assess.assess.verification import NumericalCheck
-from frp_assess.dynamics import RockingModel
+from frp_assess.dynamics import IdaSettings, RockingModel
 from frp_assess.motions import G
 from frp_assess.results.checks import KinematicChecks
 from frp_assess.results.model import (
@@ -79,18 +84,30 @@ def _finite(x: float | None) -> float | None:
     return None if x is None or not math.isfinite(x) else float(x)
 
 
-def scatter_result(summary: CaseSummary, names: Sequence[str], demand: float) -> Scatter:
+def scatter_result(
+    summary: CaseSummary, names: Sequence[str], demand: float, settings: IdaSettings
+) -> Scatter:
     """How far the case's number can be trusted: record-to-record statistics of a_dyn [g]
-    (records without collapse at their C_max lower bound) and a lognormal fragility fitted
-    to the collapse accelerations (those records right-censored), with P(collapse) at the
-    demand a_g·S."""
+    (records without collapse at their lower bound) and a lognormal fragility with
+    P(collapse) at the demand a_g·S: with the effective collapse intensity (docs/model.md
+    §11) fitted by binomial maximum likelihood to the collapse fraction of the records at each
+    sampled intensity (:mod:`frp_assess.assess.collapse_fraction`); with the first collapse,
+    to the collapse accelerations (the records without collapse right-censored)."""
     collapsed = [a is not None for a in summary.a_dyn]
     st = record_statistics(summary.a_dyn_bound, collapsed)
+    fractions = collapse_fractions(summary.results, settings)
+    fit: LognormalFragility | None = None
+    if fractions:
+        fit = fraction_fragility(fractions)
+    else:
+        exact = [a for a in summary.a_dyn if a is not None]
+        if len(set(exact)) >= 2:
+            censored = [
+                b for a, b in zip(summary.a_dyn, summary.a_dyn_bound, strict=True) if a is None
+            ]
+            fit = fit_lognormal_fragility(exact, censored)
     fragility = None
-    exact = [a for a in summary.a_dyn if a is not None]
-    if len(set(exact)) >= 2:
-        censored = [b for a, b in zip(summary.a_dyn, summary.a_dyn_bound, strict=True) if a is None]
-        fit = fit_lognormal_fragility(exact, censored)
+    if fit is not None:
         fragility = Fragility(
             median=fit.median,
             beta=fit.beta,
@@ -104,6 +121,7 @@ def scatter_result(summary: CaseSummary, names: Sequence[str], demand: float) ->
         least_favourable_record=names[st.least_favourable_index],
         records_without_collapse=st.censored,
         fragility=fragility,
+        collapse_fraction=fractions,
     )
 
 
@@ -147,6 +165,11 @@ def case_result(
             curve=tuple((p.multiplier, p.collapsed, p.peak_ratio) for p in res.curve),
             floor_pga=fp,
             failure_mode=res.failure_mode,
+            first_collapse_multiplier=res.first_collapse,
+            windows_below=res.windows_below,
+            lower_bound_multiplier=res.bound_multiplier
+            if res.collapse_multiplier is None
+            else None,
         )
         for name, res, a, fp in zip(names, summary.results, summary.a_dyn, pgas, strict=True)
     )
@@ -174,7 +197,7 @@ def case_result(
         lower_bound=summary.lower_bound,
         capacity_demand=cd,
         improvement=summary.design_a_dyn / urm_design,
-        scatter=scatter_result(summary, names, demand),
+        scatter=scatter_result(summary, names, demand, inputs.ida),
         frp_mass_per_m=q_mass_m,
         frp_mass=q_mass,
         frp_cost=cost,
@@ -371,6 +394,9 @@ def build_results(
                 step_ratio=inputs.ida.step_ratio,
                 tolerance=inputs.ida.tolerance,
                 max_multiplier=inputs.ida.max_multiplier,
+                capacity=inputs.ida.capacity,
+                ladder_ratio=inputs.ida.ladder_ratio,
+                offset=inputs.ida.offset,
             ),
             target=inputs.target,
             design_value=design_value_rule(len(seismic.records)),

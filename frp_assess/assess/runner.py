@@ -53,8 +53,12 @@ def summarise(results: Sequence[IdaResult], settings_max: float, a_rm_g: float) 
     (:attr:`RockingModel.a_rm_g`, about its pivot: the edge, or moved inward by x/2 with
     ``pivot: crushing``), so that mean q = mean a_dyn / a_RM is the IDA's q."""
     a_dyn = tuple(None if r.a_dyn is None else r.a_dyn / G for r in results)
+    # without a capacity: its lower bound, C_max (the first collapse) or the effective
+    # intensity counted up to C_max (docs/model.md §11)
     bound = tuple(
-        a if a is not None else settings_max * r.c0 * r.pga / G
+        a
+        if a is not None
+        else (settings_max * r.c0 if r.bound_multiplier is None else r.bound_multiplier) * r.pga / G
         for a, r in zip(a_dyn, results, strict=True)
     )
     mean = sum(bound) / len(bound)

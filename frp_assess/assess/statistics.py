@@ -13,7 +13,10 @@ statistics then count it in ``censored`` and the mean is a lower bound too.
 collapse intensities (the IDA fragility of Baker 2015, Earthquake Spectra 31(1), "Efficient
 analytical fragility function fitting using dynamic structural analysis").  Without
 non-collapsing records the estimate is closed-form: ln θ = mean of ln a_i, β = their standard
-deviation with divisor n (the same as ``scipy.stats.lognorm.fit(a, floc=0)``).  Rule for the
+deviation with divisor n (the same as ``scipy.stats.lognorm.fit(a, floc=0)``).
+With the effective collapse intensity (docs/model.md §11) the fit is instead to the collapse
+outcomes of the records at each sampled intensity, by binomial maximum likelihood
+(:func:`fit_binomial_fragility`, Baker 2015's multiple-stripe form).  Rule for the
 records that did not collapse up to C_max: they are **right-censored** at a_dyn(C_max) — all
 that is known is that their collapse intensity is larger — and enter the likelihood through
 the survival 1 − Φ(ln(c_j/θ)/β).  Dropping them would bias θ low; counting them as collapses
@@ -102,9 +105,13 @@ class LognormalFragility:
     Attributes:
         median: θ [unit of the input].
         beta: dispersion β, the standard deviation of ln IM at collapse [-].
-        collapsed: records that collapsed (exact observations).
-        censored: records that did not collapse up to C_max (right-censored).
-        method: ``mle`` (closed form) or ``censored-mle`` (numerical).
+        collapsed: records that collapsed (exact observations); ``binomial-mle``: the
+            collapsed outcomes over the sampled intensities.
+        censored: records that did not collapse up to C_max (right-censored);
+            ``binomial-mle``: the standing outcomes.
+        method: ``mle`` (closed form), ``censored-mle`` (numerical), both on per-record
+            capacities, or ``binomial-mle`` (:func:`fit_binomial_fragility`, on the collapse
+            outcomes at each sampled intensity).
     """
 
     median: float
@@ -166,4 +173,51 @@ def fit_lognormal_fragility(
     mu, log_beta = result.x
     return LognormalFragility(
         math.exp(mu), math.exp(log_beta), int(x.size), int(c.size), "censored-mle"
+    )
+
+
+def _binomial_negative_log_likelihood(
+    params: np.ndarray, ln_im: np.ndarray, fell: np.ndarray, stood: np.ndarray
+) -> float:
+    mu, log_beta = params
+    z = (ln_im - mu) / math.exp(log_beta)
+    return float(-(np.sum(fell * log_ndtr(z)) + np.sum(stood * log_ndtr(-z))))
+
+
+def fit_binomial_fragility(
+    intensities: Sequence[float], collapsed: Sequence[int], runs: Sequence[int]
+) -> LognormalFragility | None:
+    """Lognormal fragility fitted by binomial maximum likelihood to the collapse outcomes at
+    each sampled intensity (Baker 2015, Earthquake Spectra 31(1), eq. 11: the product over the
+    intensities x_j of C(n_j, z_j)·p_j^z_j·(1 − p_j)^(n_j − z_j), p_j = Φ(ln(x_j/θ)/β)),
+    ``collapsed[j]`` of ``runs[j]`` records having fallen at ``intensities[j]``.
+
+    None when the outcomes are separated (every collapse at or above every survival): the
+    likelihood then grows without bound as β → 0 and no lognormal is determined.
+    """
+    x = _positive_array(intensities, "intensities")
+    z = np.asarray(collapsed, dtype=float)
+    n = np.asarray(runs, dtype=float)
+    if not (x.shape == z.shape == n.shape) or np.any(z < 0) or np.any(z > n):
+        raise ValueError("one count of collapses (0..runs) per intensity")
+    ln_x = libm.log(x)
+    fell_at = ln_x[z > 0]
+    stood_at = ln_x[z < n]
+    if fell_at.size == 0 or stood_at.size == 0 or fell_at.min() >= stood_at.max():
+        return None
+    # start: the median between the lowest collapse and the highest survival, β from their span
+    mu0 = 0.5 * (float(fell_at.min()) + float(stood_at.max()))
+    beta0 = max(0.05, 0.5 * (float(stood_at.max()) - float(fell_at.min())))
+    result = minimize(
+        _binomial_negative_log_likelihood,
+        np.array([mu0, math.log(beta0)]),
+        args=(ln_x, z, n - z),
+        method="Nelder-Mead",
+        options={"xatol": 1e-10, "fatol": 1e-12, "maxiter": 4000},
+    )
+    if not result.success:
+        raise RuntimeError(f"binomial fragility fit did not converge: {result.message}")
+    mu, log_beta = result.x
+    return LognormalFragility(
+        math.exp(mu), math.exp(log_beta), int(z.sum()), int((n - z).sum()), "binomial-mle"
     )

@@ -15,6 +15,7 @@ import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import asdict, dataclass, replace
 
+from frp_assess.assess.collapse_fraction import fraction_fragility
 from frp_assess.assess.convention_sensitivity import convention_variants, sensitivity
 from frp_assess.assess.decision import (
     DECISION_RULE,
@@ -27,6 +28,7 @@ from frp_assess.assess.decision import (
     leave_one_out,
     verdict,
 )
+from frp_assess.assess.demand_window import near_demand, on_collapse_window, time_histories_pass
 from frp_assess.assess.explain import remark
 from frp_assess.assess.inputs import AssessmentInputs, RetrofitOption
 from frp_assess.assess.kinematic_checks import (
@@ -43,7 +45,7 @@ from frp_assess.dynamics import IdaResult, IdaSettings, RockingModel
 from frp_assess.motions import Record
 from frp_assess.results.checks import CaseChecks, KinematicChecks, TimeHistoryResult
 from frp_assess.results.model import CaseResult, Sensitivity, SensitivityRowResult
-from frp_assess.results.verdict import ConventionOutcome, LeaveOneOut, Robustness
+from frp_assess.results.verdict import ConventionOutcome, LeaveOneOut, NearDemand, Robustness
 
 #: how many further options are tried, per failing convention, for the one that takes over
 TAKE_OVER_CANDIDATES = 3
@@ -279,7 +281,12 @@ def assess_and_decide(
     )
     report("sensitivity", 1, 1)
     sens = Sensitivity(case=cases[focus].name, rows=rows)
-    robust = robustness(cases, ev, summaries[focus], decision, focus, outcomes, names, fc * demand)
+    at_demand = time_histories_pass(checks.cases[focus])
+    near = near_demand(cases[focus].name, models[focus], ctx.inputs, ctx.demands)
+    robust = robustness(
+        cases, ev, summaries[focus], decision, focus, outcomes, names, fc * demand,
+        near=near, at_demand=at_demand,
+    )  # fmt: skip
     return DecidedRun(
         inputs=inputs,
         models=models,
@@ -381,14 +388,27 @@ def robustness(
     outcomes: Sequence[ConventionOutcome],
     names: Sequence[str],
     design_intensity: float,
+    *,
+    near: tuple[NearDemand, ...] = (),
+    at_demand: bool | None = None,
 ) -> Robustness:
-    """P(collapse) of the focus case at FC·a_g·S, the decision without each record, and the
-    conventions, with one or two sentences."""
-    exact = [a for a in summary.a_dyn if a is not None]
+    """P(collapse) of the focus case at FC·a_g·S, the decision without each record, the
+    conventions, and the time-history checks beside the demand (``near``; ``at_demand``:
+    their verdict at the demand), with one or two sentences."""
+    fractions = cases[focus].scatter.collapse_fraction
+    fit_of = "the collapse fractions at the sampled intensities"
     p = None
-    if len(set(exact)) >= 2:
-        censored = [b for a, b in zip(summary.a_dyn, summary.a_dyn_bound, strict=True) if a is None]
-        p = fit_lognormal_fragility(exact, censored).probability(design_intensity)
+    if fractions:
+        fit = fraction_fragility(fractions)
+        p = None if fit is None else fit.probability(design_intensity)
+    else:
+        fit_of = "the records' collapse accelerations"
+        exact = [a for a in summary.a_dyn if a is not None]
+        if len(set(exact)) >= 2:
+            censored = [
+                b for a, b in zip(summary.a_dyn, summary.a_dyn_bound, strict=True) if a is None
+            ]
+            p = fit_lognormal_fragility(exact, censored).probability(design_intensity)
     # with one record there is nothing to leave out
     picks = leave_one_out(ev) if len(names) > 1 else []
     loo = [
@@ -405,7 +425,7 @@ def robustness(
     if p is not None:
         parts.append(
             f"P(collapse) of {name} at FC·a_g·S = {design_intensity:.3f} g is {p:.1%} "
-            "(lognormal fit to the records' collapse accelerations)"
+            f"(lognormal fit to {fit_of})"
         )
     lost = [r for r in loo if not r.survives]
     if decision.recommended is None and decision.verdicts[0].passes:
@@ -447,6 +467,17 @@ def robustness(
             )
         else:
             parts.append("it passes under every model convention tried")
+    window = on_collapse_window(at_demand, near)
+    if window:
+        parts.append(
+            f"the time-history check of {name} sits on a collapse window: it "
+            + ("passes" if at_demand else "fails")
+            + " at the demand but "
+            + ", ".join(
+                f"{'passes' if n.passes else 'fails'} at {n.factor:g} × the demand" for n in near
+            )
+            + ", so it is not robust"
+        )
     return Robustness(
         case=name,
         design_intensity=design_intensity,
@@ -455,4 +486,6 @@ def robustness(
         conventions=tuple(outcomes),
         survives=survives and decision.recommended is not None,
         summary="; ".join(parts) + ".",
+        time_history_near_demand=near,
+        on_collapse_window=window,
     )

@@ -32,27 +32,31 @@ def number_in(
     high: float | None = None,
     *,
     low_open: bool = False,
+    high_open: bool = False,
     unit: str = "",
 ) -> Callable[[str], float]:
-    """argparse ``type=``: a finite number in [low, high] (``(low, high]`` if ``low_open``).
+    """argparse ``type=``: a finite number in [low, high] (``(low, high]`` if ``low_open``,
+    ``[low, high)`` if ``high_open``).
 
     The message states the range and the unit: ``expected a number in (0, 60] s, found 1e9``.
     """
     left = "(" if low_open else "["
+    right = ")" if high_open else "]"
     lo = "" if low is None else f"{low:g}"
     hi = "" if high is None else f"{high:g}"
     if low is not None and high is not None:
-        wanted = f"a number in {left}{lo}, {hi}]"
+        wanted = f"a number in {left}{lo}, {hi}{right}"
     elif low is not None:
         wanted = f"a number {'>' if low_open else '>='} {lo}"
     else:
-        wanted = f"a number <= {hi}"
+        wanted = f"a number {'<' if high_open else '<='} {hi}"
     suffix = f" {unit}" if unit else ""
 
     def convert(text: str) -> float:
         value = _number(text)
         too_low = low is not None and (value <= low if low_open else value < low)
-        if too_low or (high is not None and value > high):
+        too_high = high is not None and (value >= high if high_open else value > high)
+        if too_low or too_high:
             raise argparse.ArgumentTypeError(f"expected {wanted}{suffix}, found {text}")
         return value
 

@@ -92,9 +92,13 @@ def option_dest(option: Option[Any]) -> str:
 
 def option_type(option: Option[Any]) -> Callable[[str], float]:
     """argparse ``type=`` of a numeric option: a finite number in its declared range."""
-    if option.high_open:  # pragma: no cover - no option has one yet
-        raise NotImplementedError("number_in has no open upper bound")
-    return number_in(option.low, option.high, low_open=option.low_open, unit=option.unit)
+    return number_in(
+        option.low,
+        option.high,
+        low_open=option.low_open,
+        high_open=option.high_open,
+        unit=option.unit,
+    )
 
 
 #: the integration tolerance (``run --rtol`` overrides the project file's with it)

@@ -9,9 +9,30 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from frp_assess.dynamics.ida_search import STATUS_TOO_MANY_RUNS, next_multiplier, search
+from frp_assess.dynamics.effective import (
+    CELL_SUBDIVISIONS,
+    EARLY_STOP_BAND,
+    effective_capacity,
+    ladder,
+)
+from frp_assess.dynamics.ida_search import (
+    STATUS_TOO_MANY_RUNS,
+    new_state,
+    next_multiplier,
+    next_sample,
+    sample,
+    search,
+)
 from frp_assess.dynamics.kernel.params import STATUS_OK, kernel_record
-from frp_assess.dynamics.options import IDA_MAX_MULTIPLIER, IDA_STEP_RATIO, IDA_TOLERANCE
+from frp_assess.dynamics.options import (
+    IDA_CAPACITY,
+    IDA_LADDER_RATIO,
+    IDA_MAX_MULTIPLIER,
+    IDA_OFFSET,
+    IDA_STEP_RATIO,
+    IDA_TOLERANCE,
+    CapacityRule,
+)
 from frp_assess.dynamics.rocking import (
     COLLAPSE_FATES,
     FATE_NAMES,
@@ -32,19 +53,27 @@ _BISECTION_ROOM = 64
 
 @dataclass(frozen=True)
 class IdaSettings:
-    """Search rule of docs/model.md §5 (defaults and the ranges a user may ask for:
+    """Search rule of docs/model.md §5 and §11 (defaults and the ranges a user may ask for:
     :data:`~frp_assess.dynamics.options.IDA_OPTIONS`; the checks here are the wider ones of
     the search itself).
 
     Attributes:
-        step_ratio: s, the hunt tries C₀·s^k, k = 0, 1, 2, …
+        step_ratio: s, the hunt of §5 tries C₀·s^k, k = 0, 1, 2, …
         tolerance: bisection stops when (C_hi − C_lo) ≤ tolerance·C_hi.
         max_multiplier: give up (no collapse) beyond C_max = max_multiplier·C₀.
+        capacity: ``effective`` (the effective collapse intensity of §11) or
+            ``first-collapse`` (the first collapse of §5, the paper's convention).
+        ladder_ratio: r, the ladder of §11 is C₀·r^(k+offset) (``first-collapse``
+            ignores it).
+        offset: a fraction of a step in [0, 1) (``first-collapse`` ignores it).
     """
 
     step_ratio: float = IDA_STEP_RATIO.default
     tolerance: float = IDA_TOLERANCE.default
     max_multiplier: float = IDA_MAX_MULTIPLIER.default
+    capacity: CapacityRule = IDA_CAPACITY.default
+    ladder_ratio: float = IDA_LADDER_RATIO.default
+    offset: float = IDA_OFFSET.default
 
     def __post_init__(self) -> None:
         if not (math.isfinite(self.step_ratio) and self.step_ratio > 1.0):
@@ -53,6 +82,11 @@ class IdaSettings:
             raise ValueError(f"IDA tolerance must be in (0, 0.1], got {self.tolerance!r}")
         if not (math.isfinite(self.max_multiplier) and self.max_multiplier > 1.0):
             raise ValueError(f"IDA max multiplier must be > 1, got {self.max_multiplier!r}")
+        IDA_CAPACITY.check(self.capacity)
+        if not (math.isfinite(self.ladder_ratio) and self.ladder_ratio > 1.0):
+            raise ValueError(f"IDA ladder ratio must be > 1, got {self.ladder_ratio!r}")
+        if not (math.isfinite(self.offset) and 0.0 <= self.offset < 1.0):
+            raise ValueError(f"IDA offset must be in [0, 1), got {self.offset!r}")
 
 
 @dataclass(frozen=True)
@@ -68,15 +102,17 @@ class IdaPoint:
 class IdaResult:
     """Collapse of one wall under one record.
 
-    ``collapse_multiplier``, ``a_dyn`` and ``q`` are ``None`` when the wall did not collapse up
-    to C_max.
+    ``collapse_multiplier``, ``a_dyn`` and ``q`` are the capacity of the rule ``capacity``
+    (docs/model.md §5 / §11); ``None`` when the wall did not collapse up to C_max (with
+    ``effective``: when it stood at the last sample), and ``bound_multiplier`` then holds the
+    lower bound (C_max, or the effective intensity counted up to C_max).
     """
 
     #: PGA of the unscaled record [m/s²]; for a wall above the ground floor the runner
     #: states it for the ground record (a_dyn = C·pga), while C₀ is of the floor motion
     pga: float
     c0: float  #: C₀ = a_RM / PGA of the motion at the base, below which nothing moves [-]
-    collapse_multiplier: float | None  #: C of the first collapse [-]
+    collapse_multiplier: float | None  #: C of the capacity (rule ``capacity``) [-]
     a_dyn: float | None  #: C·PGA [m/s²] (Eq. 16)
     q: float | None  #: a_dyn / a_RM [-] (Eq. 15)
     runs: int  #: time histories computed
@@ -89,6 +125,26 @@ class IdaResult:
     #: how the wall failed at the first collapse (docs/model.md §1.1): overturning, rupture
     #: then overturning, crushing, rupture then crushing; None without collapse
     failure_mode: FailureMode | None = None
+    #: the rule of ``collapse_multiplier``: effective | first-collapse
+    capacity: CapacityRule = "first-collapse"
+    #: the lowest C that collapsed on the sampling (the paper's convention); None: none [-]
+    first_collapse: float | None = None
+    #: collapse windows (runs of collapsed samples) that begin below the capacity [-]
+    windows_below: int = 0
+    #: without a capacity (``collapse_multiplier`` None): its lower bound [-]
+    bound_multiplier: float | None = None
+
+    @property
+    def capacity_multiplier(self) -> float:
+        """The capacity, or its lower bound without one [-]."""
+        c = (
+            self.collapse_multiplier
+            if self.collapse_multiplier is not None
+            else self.bound_multiplier
+        )
+        if c is None:
+            raise ValueError("IDA result without a capacity or its bound")
+        return c
 
 
 def ida(
@@ -99,8 +155,13 @@ def ida(
     *,
     should_stop: Callable[[], bool] | None = None,
     compiled: bool = True,
+    band: float = EARLY_STOP_BAND,
+    subdivide: int = CELL_SUBDIVISIONS,
 ) -> IdaResult:
-    """First collapse multiplier of ``model`` under the record ``acc`` [m/s²] sampled every dt [s].
+    """The collapse capacity of ``model`` under the record ``acc`` [m/s²] sampled every dt [s],
+    by the rule ``settings.capacity``.
+
+    ``first-collapse`` (docs/model.md §5, the paper's convention):
 
     1. C₀ = a_RM/PGA; try C = C₀·s^k, k = 0, 1, … until the first collapse, giving up past
        C_max = max_multiplier·C₀;
@@ -108,15 +169,23 @@ def ida(
        (C_hi − C_lo) ≤ tol·C_hi; the result is C_hi, the *first* collapse, and C_lo, the
        largest multiplier run without collapse (what "just below collapse" means).
 
+    ``effective`` (§11): the effective collapse intensity
+    (:func:`~frp_assess.dynamics.effective.effective_capacity`) of the samples that
+    :func:`~frp_assess.dynamics.ida_search.next_sample` chooses: the ladder C₀·r^(k+offset),
+    every cell whose ends disagree walked at ``subdivide`` times the density and every change
+    of outcome of that walk bisected to the same tolerance, up to C_max or until the wall has
+    fallen at every ladder point of a band C_k/C_first ≥ ``band`` (``band`` and ``subdivide``:
+    knobs for the measurements of benchmarks/effective_sampling.py).
+
     ``should_stop`` is polled before the search (its time histories run in one compiled
-    call, :func:`~frp_assess.dynamics.ida_search.search`); when it returns True the search
-    raises :class:`~frp_assess.errors.Cancelled`.  ``compiled=False`` drives the same search
-    from Python instead, one ``model.run`` per time history from the record's first sample
-    (the reference the compiled search is tested and benchmarked against; any model with
-    ``a_rm``, ``crushing_rotation`` and ``run`` takes this path).
+    call, :func:`~frp_assess.dynamics.ida_search.search` / ``sample``); when it returns True
+    the search raises :class:`~frp_assess.errors.Cancelled`.  ``compiled=False`` drives the
+    same search from Python instead, one ``model.run`` per time history from the record's
+    first sample (the reference the compiled search is tested and benchmarked against; any
+    model with ``a_rm``, ``crushing_rotation`` and ``run`` takes this path).
 
     A centred bar already inside the compressed zone of the weight (x_W ≥ B/2, θ_cr = 0)
-    crushes the toe as the wall uplifts: the first collapse is C₀, no time history is run.
+    crushes the toe as the wall uplifts: the capacity is C₀, no time history is run.
     """
     acc = kernel_record(acc)
     pga = float(np.max(np.abs(acc)))
@@ -129,43 +198,97 @@ def ida(
     a_rm = model.a_rm  # g·tan α_x (docs/model.md §1.1)
     c0 = a_rm / pga
     c_max = settings.max_multiplier * c0
+    rule = settings.capacity
 
     if model.crushing_rotation == 0.0:
         crushed = IdaPoint(c0, True, 0.0)
-        return IdaResult(pga, c0, c0, c0 * pga, c0 * pga / a_rm, 0, None, (crushed,), "crushing")
-    hunt: list[float] = []  # C₀·s^k up to C_max
-    while (c := c0 * settings.step_ratio ** len(hunt)) <= c_max * (1.0 + 1e-12):
-        hunt.append(c)
+        return IdaResult(
+            pga, c0, c0, c0 * pga, c0 * pga / a_rm, 0, None, (crushed,), "crushing", rule, c0
+        )
+    if rule == "first-collapse":
+        hunt: list[float] = []  # C₀·s^k up to C_max
+        while (c := c0 * settings.step_ratio ** len(hunt)) <= c_max * (1.0 + 1e-12):
+            hunt.append(c)
+        steps = np.array(hunt)
+    else:
+        steps = ladder(c0, c_max, settings.ladder_ratio, settings.offset)
+    plan = _Plan(rule, steps, c0, settings.tolerance, band, subdivide)
     if compiled and isinstance(model, RockingModel):
         if should_stop is not None and should_stop():
             raise Cancelled("IDA cancelled")
-        points, modes = _compiled_search(model, acc, dt, np.array(hunt), settings.tolerance)
+        points, modes = _compiled_search(model, acc, dt, plan)
     else:
-        points, modes = _search_in_python(model, acc, dt, np.array(hunt), settings, should_stop)
+        points, modes = _search_in_python(model, acc, dt, plan, should_stop)
     n = len(points)
-    standing = [p.multiplier for p in points if not p.collapsed]
-    survivor = max(standing) if standing else None  # the hunt's and bisection's C_lo
     curve = tuple(sorted(points, key=lambda p: p.multiplier))
-    if not modes:
-        return IdaResult(pga, c0, None, None, None, n, survivor, curve, None)
-    c_hi = min(modes)  # every collapse lowered C_hi: the last one is the least
-    return IdaResult(pga, c0, c_hi, c_hi * pga, c_hi * pga / a_rm, n, survivor, curve, modes[c_hi])
+    first = min(modes) if modes else None
+    if rule == "first-collapse":
+        standing = [p.multiplier for p in points if not p.collapsed]
+        survivor = max(standing) if standing else None  # the hunt's and bisection's C_lo
+        if first is None:
+            return IdaResult(
+                pga, c0, None, None, None, n, survivor, curve, None, rule, None, 0, c_max
+            )
+        # every collapse lowered C_hi: the last one is the least
+        return IdaResult(
+            pga, c0, first, first * pga, first * pga / a_rm, n, survivor, curve, modes[first],
+            rule, first,
+        )  # fmt: skip
+    eff = effective_capacity([(p.multiplier, p.collapsed) for p in points], c0, c_max)
+    a_c = eff.multiplier
+    below = [p.multiplier for p in curve if not p.collapsed and p.multiplier <= a_c]
+    survivor = max(below) if below else None
+    # the failure mode of the first collapse at or above a_c (where the wall "falls")
+    above = [c for c in modes if c >= a_c]
+    mode = modes[min(above)] if above else (modes[max(modes)] if modes else None)
+    if eff.lower_bound:
+        return IdaResult(
+            pga, c0, None, None, None, n, survivor, curve, mode, rule, first, eff.windows_below,
+            a_c,
+        )  # fmt: skip
+    return IdaResult(
+        pga, c0, a_c, a_c * pga, a_c * pga / a_rm, n, survivor, curve, mode, rule, first,
+        eff.windows_below,
+    )  # fmt: skip
+
+
+@dataclass(frozen=True)
+class _Plan:
+    """What the search runs: the rule, its ladder (the hunt of §5 or the ladder of §11), C₀,
+    the bisection tolerance and the early-stop band of §11."""
+
+    rule: CapacityRule
+    steps: NDArray[np.float64]
+    c0: float
+    tolerance: float
+    band: float
+    subdivide: int
 
 
 def _compiled_search(
-    model: RockingModel, acc: NDArray[np.float64], dt: float, hunt: NDArray[np.float64], tol: float
+    model: RockingModel, acc: NDArray[np.float64], dt: float, plan: _Plan
 ) -> tuple[list[IdaPoint], dict[float, FailureMode | None]]:
-    """The time histories of the search in one compiled call (:func:`.ida_search.search`):
-    the points, and the failure mode of each C that collapsed."""
-    room = hunt.size + _BISECTION_ROOM
+    """The time histories of the search in one compiled call (:func:`.ida_search.search` or
+    :func:`.ida_search.sample`): the points, and the failure mode of each C that collapsed."""
+    # the effective rule bisects every transition of its ladder: room for each one
+    cells = 1 if plan.rule == "first-collapse" else plan.subdivide * (plan.steps.size + 1)
+    room = plan.steps.size + _BISECTION_ROOM * cells
     multiplier = np.empty(room)
     fate = np.empty(room, dtype=np.int64)
     peak = np.empty(room)
     ruptures = np.empty(room, dtype=np.int64)
-    n, status = search(
-        acc, float(dt), model.tail_samples(dt), model.params, hunt, float(tol),
-        multiplier, fate, peak, ruptures, _COLLAPSE_FATE,
-    )  # fmt: skip
+    tol = float(plan.tolerance)
+    if plan.rule == "first-collapse":
+        n, status = search(
+            acc, float(dt), model.tail_samples(dt), model.params, plan.steps, tol,
+            multiplier, fate, peak, ruptures, _COLLAPSE_FATE,
+        )  # fmt: skip
+    else:
+        n, status = sample(
+            acc, float(dt), model.tail_samples(dt), model.params, plan.steps, float(plan.c0),
+            tol, float(plan.band), int(plan.subdivide), multiplier, fate, peak, ruptures,
+            _COLLAPSE_FATE,
+        )  # fmt: skip
     if status != STATUS_OK:
         c_bad = float(multiplier[n - 1])
         if status != STATUS_TOO_MANY_RUNS:
@@ -190,24 +313,34 @@ def _search_in_python(
     model: RockingModel,
     acc: NDArray[np.float64],
     dt: float,
-    hunt: NDArray[np.float64],
-    settings: IdaSettings,
+    plan: _Plan,
     should_stop: Callable[[], bool] | None,
 ) -> tuple[list[IdaPoint], dict[float, FailureMode | None]]:
-    """The same search (:func:`.ida_search.next_multiplier`) with one ``model.run`` per time
-    history, from the record's first sample: for any object with the
+    """The same search (:func:`.ida_search.next_multiplier` / ``next_sample``) with one
+    ``model.run`` per time history, from the record's first sample: for any object with the
     :meth:`RockingModel.run` interface (the tests' stand-ins, the compiled search's
     reference)."""
     points: list[IdaPoint] = []
     modes: dict[float, FailureMode | None] = {}
     c_lo, c_hi = 0.0, math.nan
-    while not math.isnan(
-        c := float(next_multiplier(hunt, settings.tolerance, len(points), c_lo, c_hi))
-    ):
+    state = new_state()
+    collapsed = False
+
+    def following() -> float:
+        if plan.rule == "first-collapse":
+            return float(next_multiplier(plan.steps, plan.tolerance, len(points), c_lo, c_hi))
+        return float(
+            next_sample(
+                plan.steps, plan.c0, plan.tolerance, plan.band, plan.subdivide, state, collapsed
+            )
+        )
+
+    while not math.isnan(c := following()):
         if should_stop is not None and should_stop():
             raise Cancelled("IDA cancelled")
         res = model.run(acc, dt, c)
         points.append(IdaPoint(c, res.collapsed, res.max_rotation_ratio))
+        collapsed = bool(res.collapsed)
         if res.collapsed:
             modes[c] = res.failure_mode
             c_hi = c

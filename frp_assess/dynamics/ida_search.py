@@ -131,3 +131,176 @@ def search(
             c_hi = c
         else:
             c_lo = c
+
+
+#: Slots of the state array of :func:`next_sample` (docs/model.md §11): the index of the last
+#: ladder point run; the phase (:data:`ON_LADDER`, :data:`ON_CELL`, :data:`BISECTING`) and
+#: the one a bisection returns to; the bisection's bracket (C_lo, C_hi) and the outcome at
+#: C_lo (1 standing, 0 collapsed); the outcome of the last ladder point; the C at which the
+#: current run of collapsed ladder points began (NaN: the last one stood); the C and kind of
+#: the time history whose outcome the next call receives (NaN before the first); the cell
+#: being subdivided (its ends and the outcome at the upper one), the index of its last
+#: interior point run, and the C and outcome of the point before.
+(
+    ST_K, ST_PHASE, ST_RETURN, ST_LO, ST_HI, ST_S_LO, ST_S_PREV, ST_BAND, ST_LAST,
+    ST_KIND, ST_CELL_A, ST_CELL_B, ST_S_B, ST_J, ST_PREV_C, ST_PREV_S,
+) = range(16)  # fmt: skip
+STATE_SIZE = 16
+#: phases of the sampling: walking the ladder, walking the interior points of a cell whose
+#: ends disagree, bisecting a change of outcome
+ON_LADDER, ON_CELL, BISECTING = 0.0, 1.0, 2.0
+
+
+@njit(cache=True, nogil=True)
+def new_state() -> np.ndarray:
+    """The state of :func:`next_sample` before the first time history: below the ladder the
+    wall stands (below C₀ nothing moves)."""
+    st = np.full(STATE_SIZE, math.nan)
+    st[ST_K] = -1.0
+    st[ST_PHASE] = ON_LADDER
+    st[ST_S_PREV] = 1.0
+    return st
+
+
+@njit(cache=True, nogil=True)
+def _bisect(st: np.ndarray, lo: float, hi: float, s_lo: float, back: float) -> None:
+    """Start bisecting the change of outcome in (lo, hi), then go back to phase ``back``."""
+    st[ST_PHASE] = BISECTING
+    st[ST_RETURN] = back
+    st[ST_LO] = lo
+    st[ST_HI] = hi
+    st[ST_S_LO] = s_lo
+
+
+@njit(cache=True, nogil=True)
+def next_sample(
+    ladder: np.ndarray,
+    c0: float,
+    tolerance: float,
+    band: float,
+    subdivide: int,
+    st: np.ndarray,
+    collapsed: bool,
+) -> float:
+    """The sampling of the effective collapse intensity (docs/model.md §11): the next C to
+    run, or NaN when the sampling is over; ``collapsed`` is the outcome of the time history
+    at ``st[ST_LAST]`` (ignored before the first).
+
+    The ladder (C₀·r^(k+offset) up to C_max) is run in order.  Where a ladder point's outcome
+    differs from the previous one's (C₀ itself, standing, before the first), the cell between
+    them is walked at ``subdivide`` times the density (its interior points C_a·(C_b/C_a)^(j/m),
+    j = 1 … m − 1), and every change of outcome between two neighbours of that walk is
+    bisected until (C_hi − C_lo) ≤ tolerance·C_hi, as the §5 search refines its first
+    collapse; then the ladder goes on.  It stops early once the ladder points have collapsed
+    without a break over a band C_k/C_first ≥ ``band`` (∞: never; S = 0 is then assumed up to
+    C_max, the shortcut of §11 (ii)).
+    """
+    c = st[ST_LAST]
+    if not math.isnan(c):
+        s = 0.0 if collapsed else 1.0
+        kind = st[ST_KIND]
+        if kind == BISECTING:
+            if s == st[ST_S_LO]:
+                st[ST_LO] = c
+            else:
+                st[ST_HI] = c
+        elif kind == ON_CELL:
+            if s != st[ST_PREV_S]:
+                _bisect(st, st[ST_PREV_C], c, st[ST_PREV_S], ON_CELL)
+            st[ST_PREV_C] = c
+            st[ST_PREV_S] = s
+        else:
+            k = int(st[ST_K])
+            before = ladder[k - 1] if k > 0 else c0
+            if s != st[ST_S_PREV]:
+                if subdivide > 1:
+                    st[ST_PHASE] = ON_CELL
+                    st[ST_CELL_A] = before
+                    st[ST_CELL_B] = c
+                    st[ST_S_B] = s
+                    st[ST_J] = 0.0
+                    st[ST_PREV_C] = before
+                    st[ST_PREV_S] = st[ST_S_PREV]
+                else:
+                    _bisect(st, before, c, st[ST_S_PREV], ON_LADDER)
+            st[ST_S_PREV] = s
+            if s == 1.0:
+                st[ST_BAND] = math.nan
+            elif math.isnan(st[ST_BAND]):
+                st[ST_BAND] = c
+    m = 0.0
+    while True:
+        phase = st[ST_PHASE]
+        if phase == BISECTING:
+            if st[ST_HI] - st[ST_LO] > tolerance * st[ST_HI]:
+                m = float(0.5 * (st[ST_LO] + st[ST_HI]))
+                break
+            st[ST_PHASE] = st[ST_RETURN]
+        elif phase == ON_CELL:
+            j = int(st[ST_J]) + 1
+            st[ST_J] = float(j)
+            if j < subdivide:
+                a = st[ST_CELL_A]
+                m = float(a * (st[ST_CELL_B] / a) ** (j / subdivide))
+                break
+            # the last interior point against the cell's upper end
+            st[ST_PHASE] = ON_LADDER
+            if st[ST_PREV_S] != st[ST_S_B]:
+                _bisect(st, st[ST_PREV_C], st[ST_CELL_B], st[ST_PREV_S], ON_LADDER)
+        else:
+            k = int(st[ST_K])
+            if k >= 0 and not math.isnan(st[ST_BAND]) and ladder[k] >= band * st[ST_BAND]:
+                return math.nan
+            k += 1
+            if k >= ladder.shape[0]:
+                return math.nan
+            st[ST_K] = float(k)
+            m = float(ladder[k])
+            break
+    st[ST_KIND] = st[ST_PHASE]
+    st[ST_LAST] = m
+    return m
+
+
+@njit(cache=True, nogil=True)
+def sample(
+    acc: np.ndarray,
+    dt: float,
+    n_tail: int,
+    prm: KernelParams,
+    ladder: np.ndarray,
+    c0: float,
+    tolerance: float,
+    band: float,
+    subdivide: int,
+    multiplier: np.ndarray,
+    fate: np.ndarray,
+    peak: np.ndarray,
+    ruptures: np.ndarray,
+    collapse_fate: np.ndarray,
+) -> tuple[int, int]:
+    """Every time history of the effective collapse intensity's sampling (:func:`next_sample`),
+    stored and returned as :func:`search` does."""
+    quiet = running_max_abs(acc)
+    h = np.empty(1)  # the history arrays of the driver: not written (no history here)
+    buffers = Buffers(h, h, h, np.zeros(2), np.zeros(2, dtype=np.int64))
+    st = new_state()
+    n = 0
+    collapsed = False
+    while True:
+        c = next_sample(ladder, c0, tolerance, band, subdivide, st, collapsed)
+        if math.isnan(c):
+            return n, kp.STATUS_OK
+        if n >= multiplier.shape[0]:
+            return n, STATUS_TOO_MANY_RUNS
+        start = quiet_intervals(quiet, c, prm)
+        # as in search: the driver without the history (record_history the constant False)
+        out = simulate(Ground(acc[start:], dt, c, n_tail), prm, 0.0, 0.0, False, buffers)
+        multiplier[n] = c
+        fate[n] = out.fate
+        peak[n] = out.peak
+        ruptures[n] = out.ruptures
+        n += 1
+        if out.status != kp.STATUS_OK:
+            return n, out.status
+        collapsed = collapse_fate[out.fate]

@@ -183,9 +183,13 @@ def method(results: Results, lang: Lang) -> list[Block]:
          lang.t("model.tail.value", tail=lang.gnum(m.free_vibration_tail))
          if m.collapse == "overturning" else f"{lang.gnum(m.free_vibration_tail)} s"],
         [lang.t("model.tolerance"), f"{m.integration.tolerance:.0e}".replace("e-0", "e-")],
-        [lang.t("model.ida"), lang.t("model.ida.value", s=lang.gnum(m.ida.step_ratio),
-                                     tol=lang.gnum(m.ida.tolerance),
-                                     cmax=lang.gnum(m.ida.max_multiplier))],
+        [lang.t("model.ida.capacity"), lang.t(f"ida.capacity.{m.ida.capacity}")
+         if lang.has(f"ida.capacity.{m.ida.capacity}") else esc(m.ida.capacity)],
+        [lang.t("model.ida"), lang.t(
+            "model.ida.value.effective" if m.ida.capacity == "effective" else "model.ida.value",
+            s=lang.gnum(m.ida.ladder_ratio if m.ida.capacity == "effective" else m.ida.step_ratio),
+            tol=lang.gnum(m.ida.tolerance),
+            cmax=lang.gnum(m.ida.max_multiplier), offset=lang.gnum(m.ida.offset))],
         [lang.t("model.target"), lang.gnum(m.target)],
         [lang.t("model.design_value"),
          lang.t("model.design.mean" if results.design_is_mean else "model.design.least")],

@@ -104,6 +104,13 @@ COLLAPSE_WORDS = {
 }
 
 
+#: the capacity rules in words (docs/model.md §5, §11)
+CAPACITY_WORDS = {
+    "effective": "effective collapse intensity",
+    "first-collapse": "first collapse (paper's convention)",
+}
+
+
 def model_rows(results: Results) -> list[list[str]]:
     m = results.model
     ida = m.ida
@@ -142,6 +149,7 @@ def model_rows(results: Results) -> list[list[str]]:
     if m.design_value:
         rows.append(["design value of a_dyn", str(m.design_value)])
     rows += [
+        ["IDA capacity of a record", CAPACITY_WORDS.get(ida.capacity, ida.capacity)],
         ["IDA step ratio s", f"{ida.step_ratio:g}"],
         ["IDA bisection tolerance", f"{ida.tolerance:g} (relative)"],
         ["IDA largest multiplier C_max", f"{ida.max_multiplier:g} × C₀"],

@@ -191,6 +191,7 @@ _CONVENTION = re.compile(r"^(restitution|collapse|rupture): ([a-z-]+)$")
 _STRAIN = re.compile(r"^strain factor c = ([0-9.]+)$")
 _MODULUS = re.compile(r"^E ([+-][0-9.]+)% \(([0-9.]+) GPa\)$")
 _HUNT_STEP = re.compile(r"^IDA step ratio s = ([0-9.]+)$")
+_SPREAD = re.compile(r"^numerical spread: .*\(offset ([0-9.]+)\)$")
 
 
 def variant_words(variant: str, lang: Lang) -> str:
@@ -213,4 +214,7 @@ def variant_words(variant: str, lang: Lang) -> str:
     m = _HUNT_STEP.match(variant)
     if m:
         return lang.t("sens.hunt_step", s=lang.gnum(float(m.group(1))))
+    m = _SPREAD.match(variant)
+    if m:
+        return lang.t("sens.numerical_spread", offset=lang.gnum(float(m.group(1))))
     return lang.numbers_in(variant)

@@ -39,7 +39,7 @@ from frp_assess.results.verdict import DecidingCheck, Robustness
 from frp_assess.rules.record_sets import design_statistic
 
 #: version of the contract written as ``schema_version``; another is refused on reading
-SCHEMA_VERSION = 1
+SCHEMA_VERSION = 2
 #: the name of the unreinforced wall's case
 UNREINFORCED = "Unreinforced"
 
@@ -129,12 +129,33 @@ class RecordResult:
     #: how the wall failed at the first collapse (docs/model.md §1.1): overturning | rupture
     #: then overturning | crushing | rupture then crushing; None without collapse
     failure_mode: str | None = None
+    #: the lowest C that collapsed on the sampling: the first collapse, the paper's
+    #: convention (with ``capacity: first-collapse`` it is ``collapse_multiplier``) [-]
+    first_collapse_multiplier: float | None = None
+    #: collapse windows (runs of collapsed samples) that begin below the capacity [-]
+    windows_below: int = 0
+    #: without a capacity (``collapse_multiplier`` None): the multiplier of its lower bound,
+    #: the one the case's means use (C_max, or the effective intensity counted up to C_max) [-]
+    lower_bound_multiplier: float | None = None
+
+
+@dataclass(frozen=True)
+class CollapseFraction:
+    """The records that collapsed at one intensity of the ladder of docs/model.md §11:
+    intensity a_dyn [g] (for a wall above ground, the mean of the records' own), the number of
+    records that collapsed there (an early stop of the sampling counts as collapsed) and of
+    records [-]."""
+
+    intensity: float
+    collapsed: int
+    records: int
 
 
 @dataclass(frozen=True)
 class Fragility:
-    """Lognormal fit to the collapse accelerations: median [g], beta [-], method (mle |
-    censored-mle), P(collapse) at a_g·S [-]."""
+    """Lognormal fit: median [g], beta [-], method (mle | censored-mle: to the records'
+    capacities; binomial-mle: to the collapse fractions at the sampled intensities, with the
+    effective collapse intensity), P(collapse) at a_g·S [-]."""
 
     median: float
     beta: float
@@ -154,6 +175,9 @@ class Scatter:
     least_favourable_record: str
     records_without_collapse: int
     fragility: Fragility | None
+    #: the collapse fraction of the records at each intensity of the ladder (docs/model.md
+    #: §11), from the lowest up to the highest any record ran; empty with first-collapse
+    collapse_fraction: tuple[CollapseFraction, ...] = ()
 
 
 @dataclass(frozen=True)

@@ -73,11 +73,17 @@ class Integration:
 @dataclass(frozen=True)
 class IdaSettingsResult:
     """The IDA search: step ratio of the multiplier [-], relative tolerance on the collapse
-    multiplier [-], largest multiplier C_max [-]."""
+    multiplier [-], largest multiplier C_max [-]; ``capacity``: the capacity of a record,
+    effective (the effective collapse intensity, docs/model.md §11) | first-collapse (the
+    first collapse, the paper's convention, §5); ``ladder_ratio`` r and ``offset``: the
+    ladder of §11, C₀·r^(k+offset) [-]."""
 
     step_ratio: float
     tolerance: float
     max_multiplier: float
+    capacity: str = "first-collapse"
+    ladder_ratio: float = 1.05
+    offset: float = 0.0
 
 
 @dataclass(frozen=True)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-__all__ = ["ConventionOutcome", "DecidingCheck", "LeaveOneOut", "Robustness"]
+__all__ = ["ConventionOutcome", "DecidingCheck", "LeaveOneOut", "NearDemand", "Robustness"]
 
 
 @dataclass(frozen=True)
@@ -51,6 +51,15 @@ class ConventionOutcome:
 
 
 @dataclass(frozen=True)
+class NearDemand:
+    """The time-history checks (SLV and SLC) of the case with every record at ``factor``
+    times the demand (docs/model.md §11): whether they pass."""
+
+    factor: float  #: [-]
+    passes: bool
+
+
+@dataclass(frozen=True)
 class Robustness:
     """How firm the verdict is: P(collapse) of the case at the design intensity FC·a_g·S
     [g] from the lognormal fragility fit (None: fewer than 2 distinct collapses), the
@@ -63,3 +72,7 @@ class Robustness:
     conventions: tuple[ConventionOutcome, ...]
     survives: bool  #: the same case is recommended in every leave-one-out and convention
     summary: str  #: one or two sentences
+    #: the time-history checks at 0.98 and 1.02 times the demand (empty: none made)
+    time_history_near_demand: tuple[NearDemand, ...] = ()
+    #: their verdict differs from the one at the demand: it sits on a collapse window
+    on_collapse_window: bool = False

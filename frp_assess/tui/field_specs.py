@@ -36,7 +36,10 @@ from frp_assess.config.schema import (
 from frp_assess.dynamics.options import (
     COLLAPSE,
     FREE_VIBRATION_TAIL,
+    IDA_CAPACITY,
+    IDA_LADDER_RATIO,
     IDA_MAX_MULTIPLIER,
+    IDA_OFFSET,
     IDA_STEP_RATIO,
     IDA_TOLERANCE,
     INTEGRATION_TOLERANCE,
@@ -299,6 +302,9 @@ ANALYSIS_FIELDS = (
     option_field((*IDA, "step_ratio"), "IDA step ratio", IDA_STEP_RATIO),
     option_field((*IDA, "tolerance"), "IDA tolerance", IDA_TOLERANCE),
     option_field((*IDA, "max_multiplier"), "IDA max C/C0", IDA_MAX_MULTIPLIER),
+    option_field((*IDA, "capacity"), "IDA capacity", IDA_CAPACITY),
+    option_field((*IDA, "ladder_ratio"), "IDA ladder ratio", IDA_LADDER_RATIO),
+    option_field((*IDA, "offset"), "IDA ladder offset", IDA_OFFSET),
     num((*AN, "target"), "Target C/D", "", AnalysisSpec, optional=True),
 )
 CODE_FIELDS = (

@@ -185,7 +185,8 @@ def test_entries_edited_consistently_by_hand_are_recomputed(
 ) -> None:
     """Issue 36 item 6: C, a_dyn and q of every entry multiplied by 3 (each still a positive
     number, a_dyn still C·PGA) were reused without a word once the inputs sidecar was gone.
-    The IDA curve says what C is (its first collapse): such an entry is damaged, named, and
+    The IDA curve says what C is (the effective collapse intensity of its samples, the
+    default capacity, docs/model.md §11): such an entry is damaged, named, and
     computed again; the results are the first run's bytes.  Untouched entries of the same run
     are all reused (what a run writes passes the same checks)."""
     project = tiny_project(tmp_path)
@@ -210,6 +211,7 @@ def test_entries_edited_consistently_by_hand_are_recomputed(
     assert main(["run", str(project), "--out", str(out), "--jobs", "1", "--no-pdf"]) == 0
     err = capsys.readouterr().err
     warned = [line for line in err.splitlines() if "damaged cache entry" in line]
-    assert len(warned) == len(tampered) and all("first collapse" in w for w in warned), err
+    named = all("is not the effective intensity of the curve" in w for w in warned)
+    assert len(warned) == len(tampered) and named, err
     assert all(any(name in w for w in warned) for name in tampered)
     assert (out / "results.json").read_bytes() == first

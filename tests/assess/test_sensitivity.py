@@ -23,13 +23,21 @@ def test_variants_change_one_convention_each():
     variants = {v.label: v.model for v in every}
     base = variants.pop("as assessed")
     assert base is model
-    # the hunt at √s: the same model, the run's search with one more multiplier between each
-    # pair of its steps; every other variant runs the run's search
+    # the numerical spread (effective capacity, docs/model.md §11): the same model, the run's
+    # sampling with its ladder shifted by half a step; every other variant runs the run's
+    assert inputs.ida.capacity == "effective"
     step = next(v for v in every if v.settings is not None)
-    finer = replace(inputs.ida, step_ratio=inputs.ida.step_ratio**0.5)
-    assert step.model is model and step.label == f"IDA step ratio s = {finer.step_ratio:.4g}"
-    assert step.settings == finer
+    shifted = replace(inputs.ida, offset=0.5)
+    assert step.model is model and step.label.startswith("numerical spread: ")
+    assert step.label.endswith("(offset 0.5)")
+    assert step.settings == shifted
     assert sum(v.settings is not None for v in every) == 1
+    # with the first collapse (§5): the hunt at √s
+    first = replace(inputs.ida, capacity="first-collapse")
+    hunt = next(v for v in convention_variants(model, first) if v.settings is not None)
+    finer = replace(first, step_ratio=first.step_ratio**0.5)
+    assert hunt.label == f"IDA step ratio s = {finer.step_ratio:.4g}"
+    assert hunt.settings == finer
     o = model.options
     assert variants["restitution: velocity"].options == o.__class__(
         **{**o.__dict__, "restitution": "velocity"}
@@ -65,8 +73,8 @@ def test_sensitivity_in_results_and_cached(tmp_path):
     assert row0.design_a_dyn == case.design_a_dyn
     assert row0.capacity_demand == case.capacity_demand
     assert len(sens.rows) == len(convention_variants(inputs.case_models()[1], inputs.ida))
-    # the hunt at √s is one of the rows (and of the conventions of the robustness check)
-    assert sum(r.variant.startswith("IDA step ratio s = ") for r in sens.rows) == 1
+    # the numerical spread is one of the rows (and of the conventions of the robustness check)
+    assert sum(r.variant.startswith("numerical spread: ") for r in sens.rows) == 1
     conventions = [c.variant for c in results.robustness.conventions]
     assert conventions == [r.variant for r in sens.rows]
     _, again = run_assessment(inputs, tmp_path, jobs=2, pdf=False, write=False)
@@ -75,11 +83,12 @@ def test_sensitivity_in_results_and_cached(tmp_path):
 
 def test_runner_runs_a_search_of_its_own_when_given_one(tmp_path):
     """``IdaRunner.run(settings=...)`` searches with those settings, as ``ida`` itself does with
-    them (more time histories at √s), and keys them apart from the run's in the cache."""
+    them (more time histories on the ladder at √r), and keys them apart from the run's in the
+    cache."""
     inputs = small_inputs()
     model = inputs.case_models()[1]
     runner = IdaRunner(RECORDS[:1], inputs, IdaCache(tmp_path), jobs=1)
-    finer = replace(inputs.ida, step_ratio=inputs.ida.step_ratio**0.5)
+    finer = replace(inputs.ida, ladder_ratio=inputs.ida.ladder_ratio**0.5)
     [[coarse]] = runner.run([model])
     [[fine]] = runner.run([model], settings=finer)
     assert (runner.computed, runner.reused) == (2, 0)  # not the first one from the cache

@@ -143,6 +143,12 @@ def test_ida_json(record_file, capsys):
     assert r0["collapse_multiplier"] == ref.collapse_multiplier
     assert r0["a_dyn"] == pytest.approx(ref.a_dyn / G) and r0["q"] == pytest.approx(ref.q)
     assert r0["pga"] == pytest.approx(rec.pga_g)
+    # the first collapse on the sampling (the paper's convention) and the windows below the
+    # effective capacity (docs/model.md §11): nothing collapsed below the first collapse, so
+    # the capacity is at least the first collapse less half its bisection bracket
+    assert r0["first_collapse_multiplier"] == ref.first_collapse
+    assert r0["windows_below"] == ref.windows_below
+    assert r0["first_collapse_multiplier"] <= r0["collapse_multiplier"] * 1.005
     assert out["mean_q"] == pytest.approx(ref.q)
     # the unreinforced wall has no bars to rupture: it overturns
     assert ref.failure_mode == "overturning"

@@ -1,4 +1,5 @@
-"""The IDA search rule of docs/model.md §5 on stand-in models with a known collapse set."""
+"""The IDA search rule of docs/model.md §5 (capacity: first-collapse) on stand-in models with a
+known collapse set."""
 
 from __future__ import annotations
 
@@ -44,7 +45,7 @@ ACC = np.array([0.0, 1.0, -2.0, 0.5])  # PGA 2 m/s²
 def test_bisection_brackets_the_threshold():
     c0 = Wall(thickness=0.4, height=3.0, unit_weight=18e3).a_rm / 2.0
     model = StubModel([(3.3 * c0, np.inf)])
-    res = ida(model, ACC, 0.01, IdaSettings())
+    res = ida(model, ACC, 0.01, IdaSettings(capacity="first-collapse"))
     assert 3.3 * c0 <= res.collapse_multiplier <= 3.3 * c0 * 1.0051
     assert res.q == pytest.approx(res.collapse_multiplier / c0)
     assert res.a_dyn == pytest.approx(res.collapse_multiplier * 2.0)
@@ -59,7 +60,7 @@ def test_survivor_is_the_largest_multiplier_run_without_collapse():
     multiplier actually run and found standing, not C_hi·(1 - tol), which can fall."""
     c0 = Wall(thickness=0.4, height=3.0, unit_weight=18e3).a_rm / 2.0
     model = StubModel([(3.3 * c0, np.inf)])
-    res = ida(model, ACC, 0.01, IdaSettings())
+    res = ida(model, ACC, 0.01, IdaSettings(capacity="first-collapse"))
     standing = [c for c in list(model.calls) if not any(lo <= c <= hi for lo, hi in model.bands)]
     assert res.survivor_multiplier == max(standing)
     assert res.collapse_multiplier - res.survivor_multiplier <= 0.005 * res.collapse_multiplier
@@ -87,7 +88,7 @@ def test_first_collapse_not_a_later_one():
     """A wall that falls in a band and 'survives' above it: the first collapse counts."""
     c0 = Wall(thickness=0.4, height=3.0, unit_weight=18e3).a_rm / 2.0
     model = StubModel([(2.0 * c0, 2.2 * c0), (5.0 * c0, np.inf)])
-    res = ida(model, ACC, 0.01, IdaSettings())
+    res = ida(model, ACC, 0.01, IdaSettings(capacity="first-collapse"))
     assert 2.0 * c0 <= res.collapse_multiplier <= 2.0 * c0 * 1.0051
 
 

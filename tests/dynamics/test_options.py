@@ -167,7 +167,7 @@ def test_the_command_line_is_derived_from_the_declaration(
         assert option.low is not None and option.high is not None
         assert accepted(repr(option.low)) is not option.low_open
         assert not accepted(repr(_nudge(option.low, up=False)))
-        assert accepted(repr(option.high))
+        assert accepted(repr(option.high)) is not option.high_open
         assert not accepted(repr(_nudge(option.high, up=True)))
         assert not accepted("nan")
 

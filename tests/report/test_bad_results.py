@@ -54,7 +54,7 @@ ROWS: list[tuple[str, Edit | str, str]] = [
     ("NaN", '{"schema_version": 1, "x": NaN}', "NaN is not a JSON number"),
     ("deep nesting", "[" * 100_000 + "]" * 100_000, "nested too deeply"),
     ("not JSON", "{'a': 1}", "invalid JSON"),
-    ("wrong version", '{"schema_version": 2}', "unsupported schema_version"),
+    ("wrong version", '{"schema_version": 99}', "unsupported schema_version"),
 ]
 
 

@@ -18,7 +18,7 @@ from frp_assess.errors import InputError
 from frp_assess.report import build_report, build_story, load_results
 from frp_assess.report import tables as tb
 from frp_assess.results.json_io import from_data, from_json
-from frp_assess.results.model import AssessmentResult
+from frp_assess.results.model import SCHEMA_VERSION, AssessmentResult
 
 DATA = Path(__file__).with_name("data") / "results.json"
 REPORT_PKG = Path(tb.__file__).parent
@@ -83,7 +83,7 @@ def story_text(story: list[Any]) -> str:
 
 
 def test_fixture_is_the_contract_shape(results: AssessmentResult) -> None:
-    assert results.schema_version == 1
+    assert results.schema_version == SCHEMA_VERSION
     assert len(results.cases) == 19
     assert results.cases[0].material is None
     assert {c.rank for c in results.cases[1:]} == set(range(1, 19))

@@ -111,7 +111,9 @@ def test_another_schema_version_is_refused_in_one_line() -> None:
     with pytest.raises(InputError) as err:
         from_json(text, file="out/results.json")
     line = str(err.value)
-    assert line.startswith("out/results.json: schema_version: unsupported schema_version 2 ")
+    assert line.startswith(
+        f"out/results.json: schema_version: unsupported schema_version {SCHEMA_VERSION + 1} "
+    )
     assert "\n" not in line
 
 

@@ -208,6 +208,12 @@ def test_the_cli_says_how_the_recommended_option_is_built(tmp_path: Path) -> Non
     r = small_result(tmp_path)
     first = r.options[0]
     assert first.as_built is not None
-    lines = built_lines(replace(r, recommended=first.name))
+    lines = built_lines(replace(r, recommended=first.name, retrofit_required=True))
     assert lines == [f"  built as {first.as_built.note}; {first.as_built.anchorage.note}"]
+    # a wall that needs no retrofit: the cheapest passing option "if installed"
+    optional = built_lines(replace(r, recommended=first.name, retrofit_required=False))
+    assert optional == [
+        f"  {first.name}, if installed: built as {first.as_built.note}; "
+        f"{first.as_built.anchorage.note}"
+    ]
     assert built_lines(replace(r, recommended=None)) == []

@@ -20,7 +20,10 @@ from frp_assess.config.schema import AnalysisSpec
 from frp_assess.dynamics.options import (
     COLLAPSE,
     FREE_VIBRATION_TAIL,
+    IDA_CAPACITY,
+    IDA_LADDER_RATIO,
     IDA_MAX_MULTIPLIER,
+    IDA_OFFSET,
     IDA_OPTIONS,
     IDA_STEP_RATIO,
     IDA_TOLERANCE,
@@ -50,6 +53,9 @@ OPTION_PATHS: list[tuple[tuple[str, ...], Option[Any]]] = [
     (("analysis", "integration", "tolerance"), INTEGRATION_TOLERANCE),
     (("analysis", "integration", "verify"), VERIFY),
     (("analysis", "ida", "step_ratio"), IDA_STEP_RATIO),
+    (("analysis", "ida", "capacity"), IDA_CAPACITY),
+    (("analysis", "ida", "ladder_ratio"), IDA_LADDER_RATIO),
+    (("analysis", "ida", "offset"), IDA_OFFSET),
     (("analysis", "ida", "tolerance"), IDA_TOLERANCE),
     (("analysis", "ida", "max_multiplier"), IDA_MAX_MULTIPLIER),
 ]

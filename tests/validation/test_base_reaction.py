@@ -137,7 +137,8 @@ def test_peak_rotation_converges_with_the_reaction(name: str) -> None:
     the validation script sorts out, not this test.)"""
     base = WEAK_CASES[name]
     acc = synthetic_record(seed=11, duration=10.0, dt=DT)
-    c = ida(base, acc, DT, IdaSettings(tolerance=0.01, max_multiplier=2000.0)).collapse_multiplier
+    first = IdaSettings(tolerance=0.01, max_multiplier=2000.0, capacity="first-collapse")
+    c = ida(base, acc, DT, first).collapse_multiplier
     assert c is not None
     a = base.run(acc, DT, 0.9 * c)
     b = base.with_options(tolerance=DEFAULT_TOLERANCE / 100).run(acc, DT, 0.9 * c)

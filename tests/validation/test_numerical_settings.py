@@ -31,7 +31,7 @@ from tests.validation.configs import CASES, model_for
 
 DT = 0.01
 #: a reinforced wall about the crushing pivot may need C > 100·C0 to fall on these records
-FINE_IDA = IdaSettings(tolerance=1e-4, max_multiplier=2000.0)
+FINE_IDA = IdaSettings(tolerance=1e-4, max_multiplier=2000.0, capacity="first-collapse")
 TIGHT = {"tolerance": DEFAULT_TOLERANCE / 100}
 TAIL = {"free_vibration_tail": 10.0}
 #: a wall whose base is at 6 m of a 9 m, three-storey building
@@ -104,7 +104,7 @@ def test_time_history_peak_displacements(name: str, building: BuildingSettings |
     ]
     motions = base_motions(records, building, a_g=0.2)
     base = _crushing(name)
-    coarse = IdaSettings(tolerance=0.01, max_multiplier=2000.0)
+    coarse = IdaSettings(tolerance=0.01, max_multiplier=2000.0, capacity="first-collapse")
     c = ida(base, motions[0][0], DT, coarse).collapse_multiplier
     assert c is not None
     scale = 0.6 * c

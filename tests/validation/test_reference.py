@@ -103,7 +103,7 @@ def test_collapse_multiplier_matches_reference(name, rule):
     acc = synthetic_record(seed=22, duration=5.0, dt=DT)
     model = model_for(name, collapse=rule)
     ref_acc = ref_record(acc, rule)
-    ours = ida(model, acc, DT, IdaSettings(tolerance=0.005))
+    ours = ida(model, acc, DT, IdaSettings(tolerance=0.005, capacity="first-collapse"))
     c = ours.collapse_multiplier
     assert c is not None and ours.survivor_multiplier is not None
 

@@ -22,7 +22,10 @@ from frp_assess.dynamics.ida import IdaSettings
 from frp_assess.dynamics.options import (
     COLLAPSE,
     FREE_VIBRATION_TAIL,
+    IDA_CAPACITY,
+    IDA_LADDER_RATIO,
     IDA_MAX_MULTIPLIER,
+    IDA_OFFSET,
     IDA_OPTIONS,
     IDA_STEP_RATIO,
     IDA_TOLERANCE,
@@ -33,6 +36,7 @@ from frp_assess.dynamics.options import (
     RUPTURE,
     STRAIN_FACTOR,
     VERIFY,
+    CapacityRule,
     CollapseRule,
     Option,
     RuptureRule,
@@ -85,11 +89,14 @@ Restitution = Annotated[
 
 
 class IdaSpec(_Model):
-    """The incremental dynamic analysis rule (docs/model.md §5)."""
+    """The incremental dynamic analysis rule (docs/model.md §5 and §11)."""
 
     step_ratio: Number = option_field(IDA_STEP_RATIO)
     tolerance: Number = option_field(IDA_TOLERANCE)
     max_multiplier: Number = option_field(IDA_MAX_MULTIPLIER)
+    capacity: CapacityRule = option_field(IDA_CAPACITY)
+    ladder_ratio: Number = option_field(IDA_LADDER_RATIO)
+    offset: Number = option_field(IDA_OFFSET)
 
     def settings(self) -> IdaSettings:
         """The search rule these fields give."""

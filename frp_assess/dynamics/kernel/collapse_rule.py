@@ -1,8 +1,8 @@
 """The collapse rule's verdict (docs/model.md §3.5; MODEL.md §3, "Collapse"): when the wall's
 fate is decided, and which.
 
-The driver (:mod:`.simulate`) asks :func:`verdict` after every event it located, after every
-step of the free vibration and when the input ends; the answer is a FATE_* code, or
+The driver (:mod:`.simulate`) asks :func:`collapse_verdict` after every event it located,
+after every step of the free vibration and when the input ends; the answer is a FATE_* code, or
 :data:`UNDECIDED` to go on.  Every rule of collapse is here:
 
 * the toe crushing (|θ| reaches θ_cr with the acting bar intact) is a collapse under every rule;
@@ -60,7 +60,7 @@ def alpha_x_crossing(
 
 
 @njit(cache=True, nogil=True, inline="always")
-def verdict(
+def collapse_verdict(
     theta: float,
     omega: float,
     r: Regime,

@@ -12,7 +12,8 @@ Inlining changes no arithmetic: the results are the same bit for bit.
 The driver's own pieces, written as functions a reader can follow against MODEL.md §3–4,
 are inlined with ``inline="always"`` (they are called from the driver and from each other
 only): :func:`.step_control.try_step` and :func:`.step_scan.scan_step` on the path of every
-step, :func:`.collapse_rule.verdict`, the regime's helpers of :mod:`.state`.  The jumps at an
+step, :func:`.collapse_rule.collapse_verdict`, the regime's helpers of :mod:`.state`.
+The jumps at an
 event or an uplift (:func:`.jumps.jump`, :func:`.jumps.uplift_from_rest`) are compiled on
 their own instead, with the jumps inlined into them: one call per event, as before the
 split, and compiled once for both versions of the driver.  Measured on 2026-11-28 against

@@ -17,10 +17,10 @@ each piece it calls is one paragraph of MODEL.md §3–4.
   crushing, the collapse level, and the peak).  The first event is located on the integrator
   (:func:`.events.locate_level`), its jump applied there (:func:`.jumps.jump`) and the step
   restarts from that instant.
-* The collapse rule's verdict (:func:`.collapse_rule.verdict`) is asked after every event, every
-  step of the free vibration and when the input ends: the toe crushing and the fall are
-  collapses; ``overturning`` follows the free vibration until the wall falls or can no longer
-  fall; ``end-of-record`` and ``first-exceedance`` judge |θ| against α_x.
+* The collapse rule's verdict (:func:`.collapse_rule.collapse_verdict`) is asked after every
+  event, every step of the free vibration and when the input ends: the toe crushing and the
+  fall are collapses; ``overturning`` follows the free vibration until the wall falls or can
+  no longer fall; ``end-of-record`` and ``first-exceedance`` judge |θ| against α_x.
 
 Everything here is numbers and arrays; the Python face is :mod:`frp_assess.dynamics.rocking`.
 """
@@ -37,8 +37,8 @@ from frp_assess.dynamics.kernel.collapse_rule import (
     UNDECIDED,
     alpha_x_crossing,
     collapse_level,
+    collapse_verdict,
     peaks_at_rest,
-    verdict,
 )
 from frp_assess.dynamics.kernel.jumps import (
     bounces_die_out,
@@ -149,7 +149,7 @@ def simulate(
             if i - (n_input - 1) >= n_free_max:
                 status = STATUS_FREE_VIBRATION_UNDECIDED
                 break
-            fate, collapse_time = verdict(
+            fate, collapse_time = collapse_verdict(
                 theta, omega, r, True, NO_EVENT, 0.0, i * dt, last_alpha_up, prm
             )
             if fate != UNDECIDED:
@@ -244,7 +244,7 @@ def simulate(
             # --- the collapse rule's verdict, after an event and in the free vibration
             if event == NO_EVENT and not free:
                 continue
-            fate, collapse_time = verdict(
+            fate, collapse_time = collapse_verdict(
                 theta, omega, r, free, event, level, now, last_alpha_up, prm
             )
             if fate != UNDECIDED:

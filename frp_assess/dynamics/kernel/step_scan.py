@@ -8,7 +8,8 @@ and the largest s·θ before it.
 
 The event kinds are the codes below; :func:`first_event` finds each one's crossing, the
 driver locates the earliest (:func:`.events.locate_level`), :func:`.jumps.jump` applies its
-jump and :func:`.collapse_rule.verdict` judges it.  A new kind of event (a tie that yields or is
+jump and :func:`.collapse_rule.collapse_verdict` judges it.  A new kind of event (a tie that
+yields or is
 lost: MODEL.md §12) is a code here, its level in :func:`first_event` and its jump.
 """
 

@@ -297,7 +297,7 @@ def fixture_text() -> str:
 
     mean_pga = float(np.mean([r["pga"] for r in records]))
     results = {
-        "schema_version": 1,
+        "schema_version": 2,
         "software": {"name": "frp-assess", "version": "0.1.0"},
         "created": "2026-11-22",
         "input_file": "facciata-nord.yaml",

@@ -1,0 +1,165 @@
+"""The effective collapse intensity of docs/model.md §11 on stand-in models whose collapse set
+S(C) is prescribed, so that the integral a_c = C₀·exp(∫ S d ln C) is known in closed form:
+a_c = C₀·exp(ln(C_max/C₀) − Σ ln(hi/lo) over the collapse windows within [C₀, C_max])
+(MODEL.md §11, "the rule"; hand calculations written in each test)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from frp_assess.dynamics import IdaSettings, RockingModel, Wall, ida
+from frp_assess.dynamics.effective import effective_capacity, ladder
+from tests.conftest import synthetic_record
+from tests.dynamics.test_ida import ACC, StubModel
+from tests.validation.corpus import ROOT
+
+C0 = Wall(thickness=0.4, height=3.0, unit_weight=18e3).a_rm / 2.0  # ACC's PGA is 2 m/s²
+EFFECTIVE = IdaSettings(capacity="effective")
+
+
+def exact(bands: list[tuple[float, float]], c_max: float) -> float:
+    """The closed form of the module docstring (windows clipped to [C₀, C_max])."""
+    fallen = sum(
+        math.log(min(hi, c_max) / max(lo, C0)) for lo, hi in bands if min(hi, c_max) > max(lo, C0)
+    )
+    return C0 * math.exp(math.log(c_max / C0) - fallen)
+
+
+def test_monotone_record_gives_the_first_collapse() -> None:
+    """S = 1 below λ*, 0 above: a_c = λ*, the first collapse of §5, up to the bisection
+    tolerance (0.5 %): both bracket the same threshold."""
+    for star in (1.0, 1.37, 3.3, 20.0):
+        bands = [(star * C0, math.inf)]
+        eff = ida(StubModel(bands), ACC, 0.01, EFFECTIVE)
+        first = ida(StubModel(bands), ACC, 0.01, IdaSettings(capacity="first-collapse"))
+        assert eff.collapse_multiplier == pytest.approx(star * C0, rel=0.005)
+        assert eff.collapse_multiplier == pytest.approx(first.collapse_multiplier, rel=0.005)
+        assert eff.first_collapse == pytest.approx(first.collapse_multiplier, rel=0.005)
+        assert eff.windows_below == 0
+        assert eff.capacity == "effective"
+        assert eff.q == pytest.approx(eff.collapse_multiplier / C0)
+
+
+def test_a_narrow_window_moves_the_capacity_by_its_width() -> None:
+    """A window 2 % wide around the ladder's point C₀·1.05^14 (so the ladder sees it) below the
+    threshold 5·C₀: a_c = 5·C₀/1.02 (the window's width in ln C removed from the standing
+    part), while the first collapse drops to the window, 2.6 times lower."""
+    lo = C0 * 1.05**14 / 1.01
+    bands = [(lo, lo * 1.02), (5.0 * C0, math.inf)]
+    res = ida(StubModel(bands), ACC, 0.01, EFFECTIVE)
+    assert res.collapse_multiplier == pytest.approx(5.0 * C0 / 1.02, rel=0.006)
+    assert res.first_collapse == pytest.approx(lo, rel=0.005)
+    assert res.windows_below == 1
+
+
+def test_no_collapse_is_a_lower_bound() -> None:
+    """Standing at C_max: no capacity, its lower bound is C_max less the windows below."""
+    res = ida(StubModel([]), ACC, 0.01, EFFECTIVE)
+    assert res.collapse_multiplier is None and res.a_dyn is None and res.q is None
+    assert res.bound_multiplier == pytest.approx(100.0 * C0)
+    lo = C0 * 1.05**14 / 1.01
+    res = ida(StubModel([(lo, lo * 1.02)]), ACC, 0.01, EFFECTIVE)
+    assert res.collapse_multiplier is None
+    assert res.bound_multiplier == pytest.approx(100.0 * C0 / 1.02, rel=0.006)
+    assert res.capacity_multiplier == res.bound_multiplier
+
+
+def chaotic_bands(seed: int) -> list[tuple[float, float]]:
+    """Narrow windows between 2·C₀ and 4·C₀ (widths 1–5 %, gaps 2–15 %: about eight, as
+    the fine scans of the bundled example find, docs/model.md §11.2), then collapse for good
+    above 4·C₀: the resurrection of a chaotic record in intensity."""
+    rng = np.random.default_rng(seed)
+    bands = []
+    c = 2.0 * C0
+    while c < 4.0 * C0:
+        w = rng.uniform(0.01, 0.05)
+        bands.append((c, c * (1.0 + w)))
+        c *= (1.0 + w) * (1.0 + rng.uniform(0.02, 0.15))
+    return bands + [(4.0 * C0, math.inf)]
+
+
+def test_shift_and_refinement_converge_to_the_integral() -> None:
+    """Over 12 stand-in records with about eight windows each (module docstring for the exact
+    integral): as the ladder is refined (r = 1.05, 1.05^½, 1.05^¼) the case mean over eight
+    offsets approaches the exact integral's mean and its scatter over the offsets shrinks;
+    at 1.05^¼ = 1.0123 (the resolution of the oracle's scans, MODEL.md §11) both are within
+    1 %.  The first collapse of §5 stays 25 % below, whatever the step: not a limit."""
+    bands = [chaotic_bands(seed) for seed in range(12)]
+    truth = np.mean([exact(b, 100.0 * C0) for b in bands])
+    errors, scatters = [], []
+    for ratio in (1.05, 1.05**0.5, 1.05**0.25):
+        means = []
+        for k in range(8):
+            st = IdaSettings(ladder_ratio=ratio, capacity="effective", offset=k / 8)
+            means.append(
+                np.mean([ida(StubModel(b), ACC, 0.01, st).capacity_multiplier for b in bands])
+            )
+        errors.append(abs(np.mean(means) / truth - 1.0))
+        scatters.append(np.std(means) / np.mean(means))
+    assert errors == sorted(errors, reverse=True) and scatters == sorted(scatters, reverse=True)
+    assert errors[-1] < 0.01 and scatters[-1] < 0.01
+    first = np.mean(
+        [
+            ida(StubModel(b), ACC, 0.01, IdaSettings(capacity="first-collapse")).collapse_multiplier
+            for b in bands
+        ]
+    )
+    assert first < 0.8 * truth
+
+
+def test_offset_shifts_the_ladder() -> None:
+    """C₀·s^(k+offset) up to C_max."""
+    lad = ladder(1.0, 2.0, 1.1, 0.5)
+    assert lad == pytest.approx([1.1 ** (k + 0.5) for k in range(7)])
+    assert ladder(1.0, 2.0, 1.1, 0.0)[0] == 1.0  # offset 0 starts at C₀
+    with pytest.raises(ValueError, match="offset"):
+        IdaSettings(offset=1.0)
+    with pytest.raises(ValueError, match="capacity"):
+        IdaSettings(capacity="median")  # type: ignore[arg-type]
+
+
+def test_integral_by_hand() -> None:
+    """By hand.  Samples (C, fell) 1 S, 2 S, 4 C, 8 C on [1, 16]: standing from ln 1 to the
+    midpoint of ln 2 and ln 4 (ln √8), fallen above (the last sample fell): a_c = √8, no
+    window below it.  1 S, 2 C, 4 S on [1, 4]: standing ln √2 (up to the midpoint of ln 1 and
+    ln 2) and ln 4 − ln √8 (from the midpoint of ln 2 and ln 4): ln 2, a_c = 2, and standing
+    at the last sample: a lower bound; its window begins at 2 = a_c."""
+    r = effective_capacity([(1, False), (2, False), (4, True), (8, True)], 1.0, 16.0)
+    assert r.multiplier == pytest.approx(math.sqrt(8))
+    assert not r.lower_bound and r.first_collapse == 4 and r.windows_below == 0
+    r = effective_capacity([(1, False), (2, True), (4, False)], 1.0, 4.0)
+    assert r.multiplier == pytest.approx(2.0)
+    assert r.lower_bound and r.first_collapse == 2
+
+
+def test_compiled_sampling_is_the_python_one() -> None:
+    """The compiled sampling (ida_search.sample) runs the same time histories as the
+    Python driver of the same rule (next_sample), on a real wall."""
+    model = RockingModel(Wall(thickness=0.25, height=3.0, unit_weight=18e3), "two-sided")
+    acc, dt = synthetic_record(seed=3), 0.01
+    st = IdaSettings(capacity="effective", offset=0.25)
+    a = ida(model, acc, dt, st)
+    b = ida(model, acc, dt, st, compiled=False)
+    assert [(p.multiplier, p.collapsed) for p in a.curve] == [
+        (p.multiplier, p.collapsed) for p in b.curve
+    ]
+    assert a.collapse_multiplier == b.collapse_multiplier
+
+
+def test_the_project_file_sets_every_ida_field(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    """analysis.ida.capacity, ladder_ratio and offset reach the run's IdaSettings."""
+    from frp_assess.assess.from_project import load_inputs
+
+    text = (ROOT / "projects" / "paper-case.yaml").read_text(encoding="utf-8")
+    text = text.replace(
+        "    capacity: first-collapse",
+        "    capacity: first-collapse\n    ladder_ratio: 1.2\n    offset: 0.25",
+    )
+    (tmp_path / "p.yaml").write_text(text, encoding="utf-8")
+    ida_settings = load_inputs(tmp_path / "p.yaml").ida
+    assert ida_settings.capacity == "first-collapse"
+    assert ida_settings.ladder_ratio == 1.2 and ida_settings.offset == 0.25
+    assert load_inputs(ROOT / "projects" / "facade-laquila.yaml").ida.capacity == "effective"
