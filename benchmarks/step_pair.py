@@ -34,6 +34,7 @@ DT = 0.005  #: [s]
 
 def wall() -> kp.KernelParams:
     """An unreinforced two-sided wall, edge pivot (the paper's Eq. 10)."""
+    sa, ca = math.sin(ALPHA), math.cos(ALPHA)
     return kp.KernelParams(
         g=9.81, p2=P2, p=math.sqrt(P2), alpha=ALPHA, sin_a=math.sin(ALPHA),
         cos_a=math.cos(ALPHA), one_sided=False, bar_mode=kp.BAR_NONE, k_bar=0.0,
@@ -41,7 +42,10 @@ def wall() -> kp.KernelParams:
         rupture_mode=kp.RUPTURE_ENERGY_TRANSFER, collapse_mode=kp.COLLAPSE_OVERTURNING,
         method=kp.METHOD_DOPRI5, tolerance=1e-6, fixed_step=math.inf, xi=0.0,
         kappa_per_k=0.0, theta_cr=math.inf, alpha_x=ALPHA, tan_ax=math.tan(ALPHA),
-        tip_bar=math.nan,
+        tip_bar=math.nan, loaded=False, p2_pos=P2, p2_neg=P2, a0_pos=sa, a0_neg=-sa,
+        a1_pos=ca, a1_neg=ca, b0_pos=-ca, b0_neg=-ca, b1_pos=sa, b1_neg=-sa,
+        tan_pos=math.tan(ALPHA), tan_neg=math.tan(ALPHA), e_to_pos=0.9, e_to_neg=0.9,
+        alpha_x_neg=ALPHA, tip_bar_neg=math.nan,
     )  # fmt: skip
 
 

@@ -27,6 +27,7 @@ from frp_assess import __version__
 from frp_assess.assess.inputs import BuildingSettings
 from frp_assess.dynamics import FAILURE_MODES, IdaPoint, IdaResult, IdaSettings, RockingModel
 from frp_assess.dynamics.effective import effective_capacity
+from frp_assess.dynamics.loads import Loads
 from frp_assess.dynamics.options import CAPACITY_RULES
 from frp_assess.io_utils import atomic_write_text
 from frp_assess.text_safety import plain
@@ -42,6 +43,24 @@ def record_digest(acc: np.ndarray, dt: float) -> str:
     h = hashlib.sha256(np.ascontiguousarray(acc, dtype=np.float64).tobytes())
     h.update(repr(float(dt)).encode())
     return h.hexdigest()
+
+
+def loads_payload(loads: Loads) -> dict[str, list[list[float | bool | None]]]:
+    """Every number of the loads the dynamics read (SI), for the cache key: the top loads
+    (P, d, carried), the thrusts (F, h), the ties (h_t, k_t, F_y, F_a/i_t; None: infinite)."""
+    return {
+        "top": [[p.force, p.distance, p.carried] for p in loads.top],
+        "thrusts": [[f.force, f.height] for f in loads.thrusts],
+        "ties": [
+            [
+                t.height,
+                t.stiffness,
+                t.yield_force,
+                t.anchorage_force if math.isfinite(t.anchorage_force) else None,
+            ]
+            for t in loads.ties
+        ],
+    }
 
 
 def task_key(
@@ -77,6 +96,8 @@ def task_key(
         "ida": {f.name: getattr(settings, f.name) for f in fields(settings)},
         "record": record_hash,
     }
+    if model.loads:  # docs/model.md §12; without loads the key it had before loads existed
+        payload["loads"] = loads_payload(model.loads)
     if building is not None:
         payload["building"] = [
             building.height,

@@ -16,7 +16,12 @@ from dataclasses import dataclass
 from frp_assess.rules.kinematic import a_star
 from frp_assess.rules.masonry import CONFIDENCE_FACTORS, confidence_factor
 
-__all__ = ["CONFIDENCE_FACTORS", "KinematicCheck", "simple_overturning_check"]
+__all__ = [
+    "CONFIDENCE_FACTORS",
+    "KinematicCheck",
+    "overturning_check",
+    "simple_overturning_check",
+]
 
 
 @dataclass(frozen=True)
@@ -47,10 +52,17 @@ def simple_overturning_check(
 ) -> KinematicCheck:
     """Args: B, H [m]; a_g·S [g] of the site (a_Z, the floor's peak acceleration at the
     wall's base, for a wall above ground); knowledge level LC1–LC3; q [-]."""
+    return overturning_check(thickness / height, 1.0, ag_s, knowledge_level, behaviour_factor)
+
+
+def overturning_check(
+    alpha0: float, e_star: float, ag_s: float, knowledge_level: str, behaviour_factor: float
+) -> KinematicCheck:
+    """The linear check a0* = α0·g/(e*·FC) ≥ a_g·S/q of any α0 and e* (Circolare 2019
+    eqs. C8.7.1.1, C8.7.1.3, C8.7.1.9): :func:`simple_overturning_check` for the wall alone,
+    or α0 and e* with the loads (:mod:`frp_assess.assess.loaded_overturning`)."""
     if knowledge_level not in CONFIDENCE_FACTORS:
         raise ValueError(f"knowledge level must be LC1, LC2 or LC3, got {knowledge_level!r}")
-    alpha0 = thickness / height
-    e_star = 1.0
     fc = confidence_factor(knowledge_level)
     a0 = a_star(alpha0, e_star, fc, g=1.0)  # in g
     return KinematicCheck(

@@ -27,6 +27,14 @@ from frp_assess.assess.inputs import (
     RecordFile,
     RetrofitOption,
 )
+from frp_assess.assess.load_inputs import (
+    NO_LOAD_INPUTS,
+    LoadsInput,
+    ThrustInput,
+    TieInput,
+    TopLoadInput,
+    default_name,
+)
 from frp_assess.assess.wall_model import base_problem
 from frp_assess.config import MASONRY, FrpMaterial, LoadedProject, Project, load_project
 from frp_assess.config.messages import Loc, format_path, line_of
@@ -41,6 +49,7 @@ from frp_assess.config.schema import (
     PresetSpectrum,
     TableSpectrum,
 )
+from frp_assess.config.schema.loads_spec import WallLoadsSpec
 from frp_assess.errors import InputError
 from frp_assess.motions import (
     ElasticSpectrum,
@@ -91,6 +100,42 @@ def building_of(spec: BuildingSpec | None) -> BuildingSettings | None:
         float(spec.wall_base),
         spec.first_period,
         float(spec.damping),
+    )
+
+
+def loads_of(spec: WallLoadsSpec | None) -> LoadsInput:
+    """The project's ``wall.loads`` as the assessment's loads (docs/model.md §12), each
+    named (the project's name, else its kind and place in its list)."""
+    if spec is None:
+        return NO_LOAD_INPUTS
+    return LoadsInput(
+        top=tuple(
+            TopLoadInput(
+                default_name("top load", i, p.name),
+                float(p.load),
+                float(p.distance),
+                p.inertia == "carried",
+            )
+            for i, p in enumerate(spec.top)
+        ),
+        thrusts=tuple(
+            ThrustInput(default_name("thrust", i, f.name), float(f.force), float(f.height))
+            for i, f in enumerate(spec.thrust)
+        ),
+        ties=tuple(
+            TieInput(
+                default_name("tie", i, t.name),
+                float(t.height),
+                t.area_mm2,
+                float(t.spacing),
+                float(t.length),
+                float(t.yield_strength),
+                float(t.elastic_modulus),
+                None if t.anchorage is None else float(t.anchorage),
+                None if t.diameter is None else float(t.diameter),
+            )
+            for i, t in enumerate(spec.ties)
+        ),
     )
 
 
@@ -234,6 +279,7 @@ def inputs_from_project(
         height=wall.height,
         unit_weight=project.unit_weight_kn(),
         mechanism=wall.mechanism,
+        loads=loads_of(wall.loads),
         spectrum=spectrum_of(seismic.spectrum),
         site=ntc.site_hazard() if ntc is not None else None,
         site_limit_state=ntc.chosen_limit_state if ntc is not None else "SLV",

@@ -34,6 +34,7 @@ from frp_assess.motions import Record
 from frp_assess.results.independent import IndependentCheck
 from frp_assess.results.model import CaseResult, NumericalCheckResult
 from frp_assess.rules.masonry import STRESS_BLOCK_FACTOR
+from frp_assess.rules.wall_loads import uplift_multiplier
 
 #: tolerances [-]: relative for α₀, the period and the rebound amplitude; absolute on
 #: θ_max/α for the reference integrator
@@ -69,13 +70,28 @@ def _check(
 
 
 def hand_alpha0(model: RockingModel) -> tuple[float, float | None]:
-    """(α₀, x [m] or None about the edge) by the hand formula of the module docstring."""
+    """(α₀, x [m] or None about the edge) by the hand formula of the module docstring; with
+    loads, the Circolare's eq. C8.7.1.1 as a sum of moments (rules.wall_loads, docs/model.md
+    §12), on the side that rocks first."""
     w = model.wall
     weight = w.unit_weight * w.thickness * w.height  # [N/m]
-    if model.options.pivot != "crushing" or not math.isfinite(w.compressive_strength):
-        return w.thickness / w.height, None
-    depth = weight / (STRESS_BLOCK_FACTOR * w.compressive_strength)
-    return (w.thickness - depth) / w.height, depth
+    loads = model.loads
+    edge = model.options.pivot != "crushing" or not math.isfinite(w.compressive_strength)
+    if not (loads.top or loads.thrusts):
+        if edge:
+            return w.thickness / w.height, None
+        depth = weight / (STRESS_BLOCK_FACTOR * w.compressive_strength)
+        return (w.thickness - depth) / w.height, depth
+    n0 = weight + sum(p.force for p in loads.top)
+    depth = 0.0 if edge else n0 / (STRESS_BLOCK_FACTOR * w.compressive_strength)
+    sides = (1,) if model.mechanism == "one-sided" else (1, -1)
+    alpha0 = min(
+        uplift_multiplier(
+            weight, w.thickness, w.height, loads.top, loads.thrusts, s, n0 * depth / 2
+        )
+        for s in sides
+    )
+    return alpha0, None if edge else depth
 
 
 def activation_check(model: RockingModel) -> IndependentCheck:
@@ -235,7 +251,9 @@ def independent_checks(
     ``assessed``: the recommended or closest case (None: the unreinforced wall); ``scale``:
     the multiplier of the time-history check (FC when it enters the dynamics, else 1)."""
     urm = models[0]
-    out = [activation_check(urm), period_check(urm), impact_check(urm)]
+    out = [activation_check(urm)]
+    if not (urm.loads.top or urm.loads.thrusts):  # Housner's closed forms: the bare block
+        out += [period_check(urm), impact_check(urm)]
     by_name = {c.name: c for c in cases}
     name = assessed if assessed in names and assessed in by_name else names[0]
     case = by_name.get(name)

@@ -19,6 +19,7 @@ from frp_assess.assess.bar_strain import (
     bar_design_strain,
     fibre_of,
 )
+from frp_assess.assess.load_inputs import NO_LOAD_INPUTS, LoadsInput
 from frp_assess.assess.masonry_strength import masonry_strength
 from frp_assess.assess.wall_model import BarsInput, WallInput, rocking_model
 from frp_assess.dynamics import (
@@ -219,6 +220,8 @@ class AssessmentInputs:
     #: the limit state whose a_g, F0, T_C* make ``spectrum``
     site: SiteHazard | None = None
     site_limit_state: str = "SLV"
+    #: what bears on and pushes the wall (docs/model.md §12); empty: free-standing
+    loads: LoadsInput = NO_LOAD_INPUTS
 
     @property
     def masonry_strength(self) -> MasonryResult:
@@ -281,12 +284,16 @@ class AssessmentInputs:
         """The dynamics model of the wall with bars of ``material`` at ``position`` and ρ
         ``ratio`` [‰] (assess/wall_model.py)."""
         bars = self.bars_input(material, position, ratio)
-        return rocking_model(self.wall_input, self.mechanism, bars, self.model)
+        return rocking_model(
+            self.wall_input, self.mechanism, bars, self.model, loads=self.loads.loads()
+        )
 
     def model_for(self, option: RetrofitOption | None) -> RockingModel:
         """The dynamics model of the unreinforced wall (``None``) or of an option."""
         if option is None:
-            return rocking_model(self.wall_input, self.mechanism, None, self.model)
+            return rocking_model(
+                self.wall_input, self.mechanism, None, self.model, loads=self.loads.loads()
+            )
         return self.model_of(option.material, option.position, option.ratio)
 
     def case_models(self) -> list[RockingModel]:

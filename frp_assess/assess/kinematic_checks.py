@@ -7,7 +7,9 @@ clause functions of :mod:`frp_assess.assess.kinematic_nonlinear` and
 Every check uses the wall model the IDA runs (docs/model.md §1.1): its α0 = a_RM/g (the
 moment balance about the pivot, the base reaction included), its restraint term K and its
 bar rupture rotation θ_max; the block turns about its base corner, so displacements keep the
-wall's geometry.
+wall's geometry.  A wall carrying loads (docs/model.md §12.1) has α0, e* and the capacity curve
+with them (:mod:`~frp_assess.assess.loaded_overturning`,
+:mod:`~frp_assess.assess.loaded_capacity`).
 
 * the linear check a0* ≥ demand/q (§C8.7.1.2.1.7), with α0 of the model: the bars, unstressed
   at rest, do not change α0, so it differs between options only where their models' α0 do;
@@ -59,7 +61,11 @@ from frp_assess.assess.check_demand import (
     floor_ratio,
     limit_state_demand,
 )
-from frp_assess.assess.code_check import KinematicCheck, simple_overturning_check
+from frp_assess.assess.code_check import (
+    KinematicCheck,
+    overturning_check,
+    simple_overturning_check,
+)
 from frp_assess.assess.inputs import AssessmentInputs, CodeCheckSettings
 from frp_assess.assess.kinematic_nonlinear import (
     CapacityCurve,
@@ -77,6 +83,8 @@ from frp_assess.assess.limit_states import (
     limit_state_spectrum,
     own_spectra,
 )
+from frp_assess.assess.loaded_capacity import loaded_capacity_curve
+from frp_assess.assess.loaded_overturning import loaded_alpha0, loaded_e_star
 from frp_assess.dynamics import RockingModel
 from frp_assess.motions import G, Record
 from frp_assess.results.checks import (
@@ -187,7 +195,10 @@ def ida_check(
 def model_capacity_curve(model: RockingModel, fc: float) -> CapacityCurve:
     """The capacity curve of the model the IDA runs (docs/model.md §1.1): its slenderness α
     (tan α = a_RM/g, the base reaction included), its K and its θ_max, the block turning
-    about its base corner (d_C of the wall's geometry)."""
+    about its base corner (d_C of the wall's geometry); with loads, docs/model.md §12's
+    (:mod:`frp_assess.assess.loaded_capacity`)."""
+    if model.loads:
+        return loaded_capacity_curve(model, fc)
     return capacity_curve(
         model.wall,
         model.rebars,
@@ -222,7 +233,13 @@ def linear_check(
     """The linear check a0* = α0·g/(e*·FC) ≥ a_Z/q (Circolare 2019 §C8.7.1.2.1.7, eq.
     C8.7.1.9) with α0 = a_RM/g of the model the IDA runs (its moment balance about the pivot,
     the base reaction included; the bars, unstressed at rest, do not change it); e* = 1 for
-    one block.  ``a_z`` [g]: a_g·S at ground level, the floor's peak acceleration above it."""
+    one block.  ``a_z`` [g]: a_g·S at ground level, the floor's peak acceleration above it.
+    With loads, α0 and e* of eqs. C8.7.1.1 and C8.7.1.5 with them, the ties at their capacity
+    as the internal work (:mod:`frp_assess.assess.loaded_overturning`)."""
+    if model.loads:
+        return overturning_check(
+            loaded_alpha0(model), loaded_e_star(model), a_z, knowledge_level, behaviour_factor
+        )
     # α0 = (B − x)/H of the moment balance (x = 0 about the edge): the clause's B/H with the
     # lever width the model's a_RM/g gives, B − x = (a_RM/g)·H
     height = model.wall.height

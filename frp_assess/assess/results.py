@@ -26,6 +26,7 @@ from frp_assess.assess.inputs import (
     RetrofitOption,
 )
 from frp_assess.assess.kinematic_checks import ida_capacity_demand
+from frp_assess.assess.loads_record import loads_result
 from frp_assess.assess.pivot_check import case_pivot
 from frp_assess.assess.quantities import built_quantity
 from frp_assess.assess.recorded_inputs import (
@@ -438,6 +439,7 @@ def build_results(
         robustness=robustness,
         report=inputs.report,
         site=site_result(inputs.site, inputs.site_limit_state),
+        loads=loads_result(inputs),
     )
 
 

@@ -18,6 +18,7 @@ from dataclasses import dataclass
 
 from frp_assess.assess.masonry_strength import masonry_strength
 from frp_assess.dynamics import Mechanism, ModelOptions, Position, Rebars, RockingModel, Wall
+from frp_assess.dynamics.loads import NO_LOADS, Loads
 from frp_assess.dynamics.rebars import DEFAULT_STRAIN_FACTOR
 from frp_assess.dynamics.units import rebars_from_practice, wall_from_practice
 from frp_assess.errors import InputError
@@ -106,8 +107,10 @@ def rocking_model(
     options: ModelOptions,
     *,
     key: str = "wall.thickness",
+    loads: Loads = NO_LOADS,
 ) -> RockingModel:
-    """The model of one case (unreinforced when ``bars`` is None).
+    """The model of one case (unreinforced when ``bars`` is None) carrying ``loads`` (SI,
+    docs/model.md §12; :meth:`~frp_assess.assess.load_inputs.LoadsInput.loads`).
 
     Raises:
         InputError: on ``key``, a wall that is not taller than thick, or a base that cannot
@@ -117,4 +120,4 @@ def rocking_model(
     if problem is not None:
         raise InputError(problem, key=key)
     rebars = None if bars is None else bars.rebars()
-    return RockingModel(wall.wall(), mechanism, rebars, options)
+    return RockingModel(wall.wall(), mechanism, rebars, options, loads)

@@ -22,7 +22,9 @@ from frp_assess.config.schema import (
     Project,
     TableSpectrum,
 )
+from frp_assess.config.schema.loads_spec import WallLoadsSpec
 from frp_assess.errors import InputError
+from frp_assess.rules.tie_rods import tie_anchorage_force, tie_is_ductile, tie_yield_force
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -87,6 +89,34 @@ def code_check_summary(project: Project) -> str:
     return f"{cc.knowledge_level}, FC = {fc:g} ({where}), q = {cc.behaviour_factor:g}"
 
 
+#: newtons in a kilonewton: mm²·MPa is N, the summary prints kN
+_N_PER_KN = 1000.0
+
+
+def loads_summary(loads: WallLoadsSpec) -> str:
+    """One line: every load with its lever (d from the outer face, h above the base) and
+    whether its mass moves with the wall; each tie's F_y and whether it yields before its
+    anchorage fails (docs/model.md §12)."""
+    parts = [
+        f"{p.name or f'top load {i + 1}'} {p.load:g} kN/m at d = {p.distance:g} m ({p.inertia})"
+        for i, p in enumerate(loads.top)
+    ]
+    parts += [
+        f"{f.name or f'thrust {i + 1}'} {f.force:g} kN/m outward at h = {f.height:g} m"
+        for i, f in enumerate(loads.thrust)
+    ]
+    for i, t in enumerate(loads.ties):
+        f_y = tie_yield_force(t.area_mm2, float(t.yield_strength), float(t.spacing)) / _N_PER_KN
+        f_a = tie_anchorage_force(None if t.anchorage is None else float(t.anchorage),
+                                  float(t.spacing))  # fmt: skip
+        kind = "ductile" if tie_is_ductile(f_y, f_a) else f"brittle, F_a/i_t = {f_a:.3g} kN/m"
+        parts.append(
+            f"{t.name or f'tie {i + 1}'} A_s = {t.area_mm2:.4g} mm2 every {t.spacing:g} m at "
+            f"h_t = {t.height:g} m (F_y = {f_y:.3g} kN/m, {kind})"
+        )
+    return "; ".join(parts) or "none"
+
+
 def summary(loaded: LoadedProject) -> list[str]:
     """The lines printed by `validate`."""
     p = loaded.project
@@ -123,6 +153,8 @@ def summary(loaded: LoadedProject) -> list[str]:
     ]
     if p.building is not None:
         lines.insert(3, f"  building: {building_summary(p)}")
+    if w.loads is not None:
+        lines.insert(2, f"  loads: {loads_summary(w.loads)}")
     if p.design is not None:
         d = p.design
         lines.append(

@@ -58,15 +58,19 @@ class BaseReaction:
     wall: Wall
     rebars: Rebars | None
     rule: PivotRule = "crushing"
+    #: Σ P_i [N/m], the vertical loads on the wall's top (docs/model.md §12): the base carries
+    #: N₀ = W + Σ P_i at rest, so x₀ = N₀/(0.85·f_d), and ξ, κ below are scaled to N₀
+    vertical_load: float = 0.0
 
     def __post_init__(self) -> None:
         if self.rule not in PIVOT_RULES:
             raise ValueError(f"pivot must be one of {PIVOT_RULES}, got {self.rule!r}")
         w = self.wall
+        n0 = self.normal_force
         if self.rule == "crushing" and not base_carries_weight(
-            self.weight, w.thickness, w.compressive_strength
+            n0, w.thickness, w.compressive_strength
         ):
-            raise ValueError(weight_not_carried(self.weight, w.thickness, w.compressive_strength))
+            raise ValueError(weight_not_carried(n0, w.thickness, w.compressive_strength))
 
     @property
     def weight(self) -> float:
@@ -74,16 +78,24 @@ class BaseReaction:
         return self.wall.weight
 
     @property
+    def normal_force(self) -> float:
+        """N₀ = W + Σ P_i [N/m]: the vertical force on the base at rest."""
+        return self.weight + self.vertical_load
+
+    @property
     def weight_depth(self) -> float:
-        """x_W = W/(0.85·f_d) [m], the stress block under the weight alone (0: edge)."""
+        """x₀ = N₀/(0.85·f_d) [m], the stress block at rest (x_W = W/(0.85·f_d) without loads;
+        0: edge)."""
         if self.rule == "edge":
             return 0.0
-        return compressed_zone_depth(self.weight, self.wall.compressive_strength)
+        return compressed_zone_depth(self.normal_force, self.wall.compressive_strength)
 
     @property
     def xi(self) -> float:
-        """ξ = x_W/(2R) [-]: the weight's reaction moment W·x_W/2 over m·g·R."""
-        return self.weight_depth / (2.0 * self.wall.R)
+        """ξ [-]: the reaction moment at rest N₀·x₀/2 over m·g·R, x_W/(2R) without loads."""
+        if self.vertical_load == 0.0:
+            return self.weight_depth / (2.0 * self.wall.R)
+        return self.weight_depth * self.normal_force / (2.0 * self.wall.R * self.weight)
 
     @property
     def kappa(self) -> float:
@@ -94,7 +106,7 @@ class BaseReaction:
             return 0.0
         w = self.wall
         ea = bars.elastic_modulus * bars.area(w)
-        return 2.0 * bars.lever_arm(w) * ea / (w.height * self.weight)
+        return 2.0 * bars.lever_arm(w) * ea / (w.height * self.normal_force)
 
     @property
     def bar_distance(self) -> float | None:
@@ -148,9 +160,9 @@ class BaseReaction:
         t = np.abs(np.asarray(theta, dtype=np.float64))
         bars = self.rebars
         if bars is None or not bar_intact:
-            return np.full_like(t, self.weight)
+            return np.full_like(t, self.normal_force)
         ea = bars.elastic_modulus * bars.area(self.wall)
-        return self.weight + ea * bars.elongation(self.wall, t) / self.wall.height
+        return self.normal_force + ea * bars.elongation(self.wall, t) / self.wall.height
 
     def depth(
         self, theta: float | NDArray[np.float64], bar_intact: bool = True
@@ -158,4 +170,4 @@ class BaseReaction:
         """x(θ) = N(θ)/(0.85·f_d) [m] (0 with the edge pivot)."""
         if self.weight_depth == 0.0:
             return np.zeros_like(np.asarray(theta, dtype=np.float64))
-        return self.force(theta, bar_intact) * (self.weight_depth / self.weight)
+        return self.force(theta, bar_intact) * (self.weight_depth / self.normal_force)

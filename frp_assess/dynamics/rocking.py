@@ -13,7 +13,8 @@ from numpy.typing import NDArray
 from frp_assess.dynamics.base_reaction import PIVOT_RULES, BaseReaction, PivotRule
 from frp_assess.dynamics.kernel import Buffers, Ground, history_length, simulate
 from frp_assess.dynamics.kernel import params as kp
-from frp_assess.dynamics.kernel.fate import tipping_angle
+from frp_assess.dynamics.kernel.fate import loaded_tipping_angle, tipping_angle
+from frp_assess.dynamics.loads import NO_LOADS, Loads, side_terms
 from frp_assess.dynamics.options import (
     COLLAPSE,
     COLLAPSE_RULES,
@@ -31,6 +32,7 @@ from frp_assess.dynamics.restitution import Restitution, velocity_ratio
 from frp_assess.dynamics.wall import Mechanism, Wall
 from frp_assess.errors import NumericalError
 from frp_assess.rules.constants import G
+from frp_assess.rules.wall_loads import impact_velocity_ratio
 
 Fate = Literal["fell", "at rest", "exceeded", "standing", "crushed"]
 #: How a wall that collapsed failed (docs/model.md §1.1): it fell (or met the α_x limit of the
@@ -205,6 +207,8 @@ class RockingModel:
     mechanism: Mechanism
     rebars: Rebars | None = None
     options: ModelOptions = ModelOptions()
+    #: what bears on and pushes the wall (docs/model.md §12); none: the free-standing wall
+    loads: Loads = NO_LOADS
 
     def __post_init__(self) -> None:
         if self.mechanism not in ("one-sided", "two-sided"):
@@ -216,17 +220,23 @@ class RockingModel:
     @cached_property
     def base_reaction(self) -> BaseReaction:
         """The stress block at the base (``options.pivot``, docs/model.md §1.1)."""
-        return BaseReaction(self.wall, self.rebars, self.options.pivot)
+        return BaseReaction(self.wall, self.rebars, self.options.pivot, self.loads.vertical)
 
     @property
     def alpha(self) -> float:
         """α_x [rad], where the wall tips: atan((B − x_W)/H), the wall's α with the edge
-        pivot.  The α of the collapse rules and of θ/α in the outputs."""
+        pivot; with loads, where the static restoring moment of the outward side vanishes
+        (docs/model.md §12).  The α of the collapse rules and of θ/α in the outputs."""
+        if self.loads:
+            return self.params.alpha_x
         return self.base_reaction.alpha_x
 
     @property
     def a_rm(self) -> float:
-        """Ground acceleration that starts rocking, g·tan α_x = g·(B − x_W)/H [m/s²]."""
+        """Ground acceleration that starts rocking, g·tan α_x = g·(B − x_W)/H [m/s²]; with
+        loads, a_RM of §12 on the side that rocks first (the smaller of those that can)."""
+        if self.loads:
+            return G * self.params.tan_ax
         return self.base_reaction.a_rm
 
     @property
@@ -274,19 +284,25 @@ class RockingModel:
                 rupture_energy = bars.stored_energy(wall, theta_max) / wall.I0
         base = self.base_reaction
         k_bar = self.K
+        sin_a, cos_a = math.sin(alpha), math.cos(alpha)
+        loads = self.loads
+        pos = side_terms(wall, loads, 1, sin_a, cos_a)
+        neg = side_terms(wall, loads, -1, sin_a, cos_a)
+        e_wall = self.impact_velocity_ratio
+        e_pos, e_neg = self._impact_ratios(e_wall)
         prm = kp.KernelParams(
             g=G,
             p2=wall.p2,
             p=math.sqrt(wall.p2),
             alpha=alpha,
-            sin_a=math.sin(alpha),
-            cos_a=math.cos(alpha),
+            sin_a=sin_a,
+            cos_a=cos_a,
             one_sided=self.mechanism == "one-sided",
             bar_mode=bar_mode,
             k_bar=k_bar,
             theta_max=theta_max,
             rupture_energy=rupture_energy,
-            e_impact=self.impact_velocity_ratio,
+            e_impact=e_wall,
             rupture_mode=kp.RUPTURE_ENERGY_TRANSFER
             if o.rupture == "energy-transfer"
             else kp.RUPTURE_VELOCITY_CONTINUOUS,
@@ -306,9 +322,54 @@ class RockingModel:
             alpha_x=base.alpha_x,
             tan_ax=base.tan_alpha_x,
             tip_bar=math.nan,
+            loaded=bool(loads),
+            p2_pos=pos.p2,
+            p2_neg=neg.p2,
+            a0_pos=pos.a0,
+            a0_neg=neg.a0,
+            a1_pos=pos.a1,
+            a1_neg=neg.a1,
+            b0_pos=pos.b0,
+            b0_neg=neg.b0,
+            b1_pos=pos.b1,
+            b1_neg=neg.b1,
+            tan_pos=base.tan_alpha_x,
+            tan_neg=base.tan_alpha_x,
+            e_to_pos=e_pos,
+            e_to_neg=e_neg,
+            alpha_x_neg=base.alpha_x,
+            tip_bar_neg=math.nan,
+            # the bound on the bounces that surely die out is written for the wall alone
+            settle_chatter=not loads,
         )
+        if loads:
+            prm = _with_loads(prm, self.mechanism == "one-sided")
+            return prm._replace(
+                tip_bar=float(loaded_tipping_angle(1.0, k_bar, prm)),
+                tip_bar_neg=float(loaded_tipping_angle(-1.0, k_bar, prm)),
+            )
         # θ* with the bar intact: the compiled rule itself, so the kernel and this agree
-        return prm._replace(tip_bar=float(tipping_angle(k_bar, prm)))
+        tip = float(tipping_angle(k_bar, prm))
+        return prm._replace(tip_bar=tip, tip_bar_neg=tip)
+
+    def _impact_ratios(self, e_wall: float) -> tuple[float, float]:
+        """The velocity ratios of an impact after which the wall rocks on side + and on side −
+        (docs/model.md §12): the wall's, times e_c/e_w of the whole body (two-sided), or times
+        the product of the two base impacts' (e_c,−/e_w)·(e_c,+/e_w) (one-sided)."""
+        carried = self.loads.carried()
+        if not carried:
+            return e_wall, e_wall
+        wall = self.wall
+        masses = [(p.force / G, p.distance) for p in carried]
+        e_w = impact_velocity_ratio(wall.mass, wall.thickness, wall.height, (), 1)  # 1 − 1.5 sin²α
+        e_c = {
+            s: impact_velocity_ratio(wall.mass, wall.thickness, wall.height, masses, s)
+            for s in (1, -1)
+        }
+        if self.mechanism == "one-sided":
+            both = e_wall * (e_c[-1] / e_w) * (e_c[1] / e_w)
+            return both, both
+        return e_wall * e_c[1] / e_w, e_wall * e_c[-1] / e_w
 
     def tail_samples(self, dt: float) -> int:
         """Zero samples appended to a record sampled every dt [s]: the free-vibration tail."""
@@ -375,3 +436,22 @@ class RockingModel:
             rejected_steps=int(out.rejected),
             history=hist,
         )
+
+
+def _with_loads(prm: kp.KernelParams, one_sided: bool) -> kp.KernelParams:
+    """The uplift thresholds and tipping angles of each side with the loads (docs/model.md
+    §12), from the bracket at θ = 0 without bar force, (a0_s + u·a1_s − s·ξ): rocking starts on
+    side + when u < −(a0_+ − ξ)/a1_+ and on side − when u > (−a0_− − ξ)/a1_−; and the angle
+    where the static restoring moment of a side without bar, (s·a0_s − ξ)·cos q + b0_s·sin q,
+    vanishes."""
+    tan_pos = (prm.a0_pos - prm.xi) / prm.a1_pos
+    tan_neg = (-prm.a0_neg - prm.xi) / prm.a1_neg
+    alpha_pos = math.atan2(prm.a0_pos - prm.xi, -prm.b0_pos)
+    alpha_neg = math.atan2(-prm.a0_neg - prm.xi, -prm.b0_neg)
+    return prm._replace(
+        tan_pos=tan_pos,
+        tan_neg=tan_neg,
+        tan_ax=tan_pos if one_sided else min(tan_pos, tan_neg),
+        alpha_x=alpha_pos,
+        alpha_x_neg=alpha_neg,
+    )

@@ -16,13 +16,14 @@ reference and tolerance, any of which can fail: :func:`independent_blocks`.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from reportlab.lib.units import mm
 
 from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import esc, grid, h1, h2, keep, key_value, markup
 from frp_assess.report.lang import Lang
+from frp_assess.report.loads_section import t as loads_words
 from frp_assess.report.tables import TableData
 from frp_assess.results.model import AssessmentResult
 from frp_assess.text_safety import Markup
@@ -94,7 +95,16 @@ def section(results: Results, lang: Lang) -> list[Block]:
         lang.t("sw.hand.weight", gamma=lang.gnum(w.unit_weight), B=n(w.thickness, 3),
                H=n(w.height, 3), W=n(hc.weight, 2)),
     ]  # fmt: skip
-    if hc.depth is not None and hc.f_d is not None and hc.block_factor is not None:
+    loads = results.loads
+    if loads is not None:
+        # the wall's own formula does not hold with the loads: α₀ term by term is in the
+        # loads' section (Circolare eq. C8.7.1.1), the value where rocking starts compared here
+        hc = replace(hc, alpha0=loads.overturning.alpha0_without_ties)
+        calc = [
+            lang.t("sw.hand.loads", section=loads_words(lang, "h.loads"),
+                   alpha0=n(loads.overturning.alpha0_without_ties, 4))
+        ]  # fmt: skip
+    elif hc.depth is not None and hc.f_d is not None and hc.block_factor is not None:
         calc.append(
             lang.t("sw.hand.depth", W=n(hc.weight, 2), k=lang.gnum(hc.block_factor),
                    f_d=n(hc.f_d, 3), x=n(1000 * hc.depth, 1))

@@ -22,6 +22,7 @@ from frp_assess.report import (
     body_closing,
     body_front,
     body_software,
+    loads_section,
     sections,
     sections_results,
 )
@@ -94,6 +95,7 @@ BODY: tuple[tuple[Callable[[AssessmentResult, Lang], list[Block]], bool], ...] =
     (body_front.introduction, False),
     (body_front.codes, False),
     (body_front.wall, False),
+    (loads_section.section, False),  # docs/model.md §12: nothing without loads
     (body_front.category, False),
     (body_front.knowledge_section, False),
     (body_front.materials, False),

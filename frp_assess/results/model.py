@@ -17,6 +17,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from frp_assess.results.as_built import AsBuilt
+from frp_assess.results.carried_loads import LoadsResult
 from frp_assess.results.checks import KinematicChecks
 from frp_assess.results.independent import IndependentCheck
 from frp_assess.results.pivot import MasonryResult, PivotResult
@@ -406,6 +407,9 @@ class AssessmentResult:
     independent_checks: tuple[IndependentCheck, ...] | None = field(
         default=None, metadata={"omit_if_none": True}
     )
+    #: the loads the wall carries and α₀ with them (docs/model.md §12); the key is absent
+    #: without loads
+    loads: LoadsResult | None = field(default=None, metadata={"omit_if_none": True})
 
     @property
     def urm(self) -> CaseResult:

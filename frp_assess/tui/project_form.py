@@ -40,6 +40,7 @@ from frp_assess.tui.field_specs import (
 from frp_assess.tui.fields import FieldRow
 from frp_assess.tui.item_editor import ItemEditor
 from frp_assess.tui.literal import literal
+from frp_assess.tui.loads_editors import LOAD_EDITORS, LOADS, loads_data
 from frp_assess.tui.main_tabs import MainTabs
 from frp_assess.tui.materials_pane import MaterialsPane
 from frp_assess.tui.record_files import RecordFilesEditor
@@ -67,6 +68,7 @@ TABLE_BLOCKS: tuple[Loc, ...] = (
     ("seismic", "records", "files"),
     ("materials",),
     ("interventions",),
+    LOADS,
 )
 
 
@@ -158,6 +160,7 @@ class ProjectForm:
             (("seismic", "records", "files"), q(RecordFilesEditor)),
             (("materials",), q(MaterialsPane).editor),
             (("interventions",), q(RetrofitsPane).editor),
+            *((e.ROOT, q(e)) for e in LOAD_EDITORS),
         ]
 
     # -------------------------------------------------------------------- data <-> UI
@@ -181,6 +184,9 @@ class ProjectForm:
         self.root.query_one(RecordFilesEditor).load(list(files) if isinstance(files, list) else [])
         self.root.query_one(MaterialsPane).load(data)
         self.root.query_one(RetrofitsPane).load(data)
+        for editor in LOAD_EDITORS:
+            found = get_path(data, editor.ROOT, [])
+            self.root.query_one(editor).load(list(found) if isinstance(found, list) else [])
         self.apply_variants()
 
     def apply_variants(self) -> None:
@@ -226,6 +232,9 @@ class ProjectForm:
             set_path(data, ("seismic", "records", "files"), files)
         data["materials"] = copy.deepcopy(self.root.query_one(MaterialsPane).data())
         data["interventions"] = copy.deepcopy(self.root.query_one(RetrofitsPane).items())
+        lists = {str(e.ROOT[-1]): copy.deepcopy(self.root.query_one(e).items) for e in LOAD_EDITORS}
+        if (block := loads_data(lists)) is not None:
+            set_path(data, LOADS, block)
         return data
 
     def modified(self, data: dict[str, Any] | None = None) -> bool:

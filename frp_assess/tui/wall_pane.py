@@ -18,6 +18,7 @@ from frp_assess.tui.field_specs import (
     WALL_FIELDS,
 )
 from frp_assess.tui.fields import FieldRow, section_error
+from frp_assess.tui.loads_editors import LOAD_EDITORS
 
 
 class WallPane(VerticalScroll):
@@ -33,6 +34,10 @@ class WallPane(VerticalScroll):
                 yield section_error("err-wall")
                 for spec in WALL_FIELDS:
                     yield FieldRow(spec)
+                yield Static("Loads on the wall (floors, roof, thrusts, ties; kN/m per metre "
+                             "of wall)", classes="section-title")  # fmt: skip
+                for editor in LOAD_EDITORS:
+                    yield editor(id=f"loads-{editor.ROOT[-1]}-editor")
                 yield Static("Building (a wall above the ground floor)", classes="section-title")
                 yield FieldRow(BUILDING_MODE)
                 with Vertical(classes="variant", id="var-building-on"):

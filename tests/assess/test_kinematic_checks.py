@@ -41,6 +41,7 @@ from frp_assess.assess.kinematic_checks import (
     peak_displacements,
 )
 from frp_assess.dynamics import ModelOptions, Rebars, RockingModel, Wall
+from frp_assess.dynamics.loads import NO_LOADS, Loads
 from frp_assess.motions import ElasticSpectrum, Record
 from frp_assess.results.checks import KinematicChecks
 from frp_assess.results.json_io import from_data, to_json
@@ -245,6 +246,7 @@ class _StubModel:
 
     K: float = 0.0
     theta_max: float = math.inf
+    loads: Loads = NO_LOADS  # free-standing (docs/model.md §12)
 
     @property
     def alpha(self) -> float:

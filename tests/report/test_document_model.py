@@ -75,14 +75,19 @@ def docx_texts(path: Path) -> list[str]:
     return [_squash(t) for t in out if t.strip()]
 
 
-@pytest.mark.parametrize("code", LANGUAGES)
-def test_pdf_and_docx_show_the_same_text(code: str, tmp_path: Path) -> None:
-    results = results_in(code)
+def renderers_agree(results: AssessmentResult, tmp_path: Path) -> list[str]:
+    """The texts of the document model, asserted equal to the Word file's and the PDF's."""
     model = [_squash(t) for t in plain_texts(build_document(results))]
     out = tmp_path / "report.docx"
     build_docx(results, out)
     assert docx_texts(out) == model
     assert pdf_texts(results) == model
+    return model
+
+
+@pytest.mark.parametrize("code", LANGUAGES)
+def test_pdf_and_docx_show_the_same_text(code: str, tmp_path: Path) -> None:
+    renderers_agree(results_in(code), tmp_path)
 
 
 def test_catalogues_have_the_same_keys_and_placeholders() -> None:

@@ -12,6 +12,7 @@ from pydantic import (
 from pydantic_core import PydanticCustomError
 
 from frp_assess.config.library import MASONRY, did_you_mean
+from frp_assess.config.schema.loads_spec import WallLoadsSpec
 from frp_assess.config.schema.spec_base import (
     HEIGHT_RANGE,
     THICKNESS_RANGE,
@@ -23,6 +24,7 @@ from frp_assess.config.schema.spec_base import (
 from frp_assess.dynamics.wall import Mechanism
 from frp_assess.motions.floor import default_period
 from frp_assess.rules.geometry import slenderness_problem
+from frp_assess.rules.wall_loads import Thrust, TopLoad, stabilising_moment
 
 
 # ------------------------------------------------------------------------------------ wall
@@ -69,6 +71,11 @@ class WallSpec(_Model):
         description="one-sided: wall restrained on one side (rebounds on impact); "
         "two-sided: free-standing wall rocking both ways."
     )
+    loads: WallLoadsSpec | None = Field(
+        None,
+        description="What bears on and pushes the wall: top loads (floors, roof), outward "
+        "thrusts, steel tie-rods (docs/model.md §12); omit for a free-standing wall.",
+    )
 
     @field_validator("masonry")
     @classmethod
@@ -93,7 +100,34 @@ class WallSpec(_Model):
             raise located_error(
                 "give 'masonry' (a library key) or 'unit_weight' [kN/m3]; neither was found"
             )
+        if self.loads is not None:
+            self._check_loads(self.loads)
         return self
+
+    def _check_loads(self, loads: WallLoadsSpec) -> None:
+        """Loads outside the wall, and thrusts that tip it without an earthquake, refused (the
+        ties the time histories do not model yet: a warning, config/plausibility.py)."""
+        if (problem := loads.problem(self.thickness, self.height)) is not None:
+            message, where = problem
+            raise located_error(message, "loads", *where)
+        if loads.thrust:
+            self._check_thrusts(loads)
+
+    def _check_thrusts(self, loads: WallLoadsSpec) -> None:
+        """Thrusts that tip the wall without an earthquake, refused."""
+        weight = self.unit_weight_kn * self.thickness * self.height  # [kN/m]
+        top = [TopLoad(p.load, p.distance, p.inertia == "carried") for p in loads.top]
+        thrusts = [Thrust(f.force, f.height) for f in loads.thrust]
+        hold = stabilising_moment(weight, self.thickness, self.height, top, [], 1)
+        push = sum(f.force * f.height for f in thrusts)
+        if push >= hold:
+            raise located_error(
+                f"expected thrusts the wall stands against at rest, found sum(F*h) = {push:.4g} "
+                f"kNm/m against W*B/2 + sum(P*d) = {hold:.4g} kNm/m about the outer corner "
+                "(the wall tips without an earthquake)",
+                "loads",
+                "thrust",
+            )
 
     @property
     def unit_weight_kn(self) -> float:

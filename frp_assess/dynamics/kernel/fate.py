@@ -133,6 +133,8 @@ def cannot_fall(
     The wall must be inside the well of its side (|θ| below the barrier angle: beyond the
     tipping angle it can only fall) with less energy than every barrier it can reach.
     """
+    if prm.loaded:
+        return loaded_cannot_fall(theta, omega, s, intact_pos, intact_neg, prm)
     intact_s = intact_pos if s > 0.0 else intact_neg
     if abs(theta) >= barrier_angle(intact_s, prm):
         return False
@@ -155,6 +157,8 @@ def remaining_peak(
     kinetic energy × e²) and turns on the side it then rocks on.  Later excursions only have
     less energy.
     """
+    if prm.loaded:
+        return loaded_remaining_peak(theta, omega, s, intact_pos, intact_neg, prm)
     intact_s = intact_pos if s > 0.0 else intact_neg
     k_s = prm.k_bar if intact_s else 0.0
     energy = 0.5 * omega * omega + potential(theta, k_s, prm)
@@ -165,3 +169,136 @@ def remaining_peak(
     s_next = s if prm.one_sided else -s
     intact_next = intact_pos if s_next > 0.0 else intact_neg
     return turning_angle(after, intact_next, prm), intact_next
+
+
+# --- with the loads of docs/model.md §12 -----------------------------------------------------
+# The sides differ (levers, thrusts, inertia), so each quantity takes its side, and energies
+# are compared across sides in one unit, the energy over the wall's weight moment W·R:
+#     ε = ½·θ'²/p²_s + v_s(|θ|),   v_s(q) = cos α + s·a0_s·sin q + (K_s + b0_s)·(1 − cos q)
+#                                            − ξ·∫₀^q n²·cos φ dφ,
+# the integral of the side's static restoring moment s·a0_s·cos q + (K_s + b0_s)·sin q − ξ·n²·cos q
+# (v_s(0) = cos α on both sides; without loads v_s = V/p² of the functions above).
+
+
+@njit(cache=True, nogil=True)
+def side_p2(side: float, prm: KernelParams) -> float:
+    """p²_s [1/s²] of the side."""
+    return prm.p2_pos if side > 0.0 else prm.p2_neg
+
+
+@njit(cache=True, nogil=True)
+def loaded_potential(q: float, side: float, k_s: float, prm: KernelParams) -> float:
+    """v_s(q) [-]: the potential energy over W·R at |θ| = q on ``side`` (module comment)."""
+    a0 = prm.a0_pos if side > 0.0 else prm.a0_neg
+    b0 = prm.b0_pos if side > 0.0 else prm.b0_neg
+    v = prm.cos_a + side * a0 * math.sin(q) + (k_s + b0) * (1.0 - math.cos(q))
+    if prm.xi != 0.0:
+        v -= prm.xi * reaction_integral(q, k_s * prm.kappa_per_k)
+    return v
+
+
+@njit(cache=True, nogil=True)
+def loaded_restoring(q: float, side: float, k_s: float, prm: KernelParams) -> float:
+    """The static restoring moment over W·R at |θ| = q ≥ 0 on ``side`` [-] (dv_s/dq)."""
+    a0 = prm.a0_pos if side > 0.0 else prm.a0_neg
+    b0 = prm.b0_pos if side > 0.0 else prm.b0_neg
+    m = side * a0 * math.cos(q) + (k_s + b0) * math.sin(q)
+    if prm.xi != 0.0:
+        n = 1.0 + k_s * prm.kappa_per_k * math.sin(0.5 * q)
+        m -= prm.xi * n * n * math.cos(q)
+    return m
+
+
+@njit(cache=True, nogil=True)
+def loaded_tipping_angle(side: float, k_s: float, prm: KernelParams) -> float:
+    """θ*_s: the first zero of :func:`loaded_restoring` in (0, π/2] [rad] (π/2: none)."""
+    lo = 0.0
+    for i in range(1, _TIP_GRID + 1):
+        hi = _HALF_PI * i / _TIP_GRID
+        if loaded_restoring(hi, side, k_s, prm) <= 0.0:
+            for _ in range(200):
+                mid = 0.5 * (lo + hi)
+                if loaded_restoring(mid, side, k_s, prm) > 0.0:
+                    lo = mid
+                else:
+                    hi = mid
+                if hi - lo <= 1e-15:
+                    break
+            return 0.5 * (lo + hi)
+        lo = hi
+    return _HALF_PI
+
+
+@njit(cache=True, nogil=True)
+def loaded_barrier_angle(side: float, bar_intact: bool, prm: KernelParams) -> float:
+    """min(θ*_s, θ_max, θ_cr) with the bar intact, α_x of the side without [rad]."""
+    if not bar_intact:
+        return prm.alpha_x if side > 0.0 else prm.alpha_x_neg
+    tip = prm.tip_bar if side > 0.0 else prm.tip_bar_neg
+    return min(tip, prm.theta_max, prm.theta_cr)
+
+
+@njit(cache=True, nogil=True)
+def loaded_barrier(side: float, bar_intact: bool, prm: KernelParams) -> float:
+    """v_s at the side's barrier angle [-]."""
+    k_s = prm.k_bar if bar_intact else 0.0
+    return loaded_potential(loaded_barrier_angle(side, bar_intact, prm), side, k_s, prm)
+
+
+@njit(cache=True, nogil=True)
+def loaded_turning_angle(energy: float, side: float, bar_intact: bool, prm: KernelParams) -> float:
+    """|θ| where v_s = ``energy`` [-] below the side's barrier [rad] (bisection)."""
+    k_s = prm.k_bar if bar_intact else 0.0
+    lo = 0.0
+    hi = loaded_barrier_angle(side, bar_intact, prm)
+    if loaded_potential(lo, side, k_s, prm) >= energy:
+        return 0.0
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if loaded_potential(mid, side, k_s, prm) < energy:
+            lo = mid
+        else:
+            hi = mid
+        if hi - lo <= 1e-15:
+            break
+    return 0.5 * (lo + hi)
+
+
+@njit(cache=True, nogil=True)
+def loaded_energy(theta: float, omega: float, s: float, k_s: float, prm: KernelParams) -> float:
+    """ε = ½·θ'²/p²_s + v_s(|θ|) [-] (module comment)."""
+    return 0.5 * omega * omega / side_p2(s, prm) + loaded_potential(abs(theta), s, k_s, prm)
+
+
+@njit(cache=True, nogil=True)
+def loaded_cannot_fall(
+    theta: float, omega: float, s: float, intact_pos: bool, intact_neg: bool, prm: KernelParams
+) -> bool:
+    """:func:`cannot_fall` with the loads: every barrier the wall can reach, in ε."""
+    intact_s = intact_pos if s > 0.0 else intact_neg
+    if abs(theta) >= loaded_barrier_angle(s, intact_s, prm):
+        return False
+    energy = loaded_energy(theta, omega, s, prm.k_bar if intact_s else 0.0, prm)
+    if energy >= loaded_barrier(1.0, intact_pos, prm):
+        return False
+    if not prm.one_sided and energy >= loaded_barrier(-1.0, intact_neg, prm):
+        return False
+    return True
+
+
+@njit(cache=True, nogil=True)
+def loaded_remaining_peak(
+    theta: float, omega: float, s: float, intact_pos: bool, intact_neg: bool, prm: KernelParams
+) -> tuple[float, bool]:
+    """:func:`remaining_peak` with the loads: the impact's velocity ratio of the side the
+    wall then rocks on, and the kinetic energy carried over in ε."""
+    intact_s = intact_pos if s > 0.0 else intact_neg
+    energy = loaded_energy(theta, omega, s, prm.k_bar if intact_s else 0.0, prm)
+    if s * omega > 0.0:
+        return loaded_turning_angle(energy, s, intact_s, prm), intact_s
+    s_next = s if prm.one_sided else -s
+    e = prm.e_to_pos if s_next > 0.0 else prm.e_to_neg
+    v0 = prm.cos_a
+    after = v0 + e * e * (energy - v0) * side_p2(s, prm) / side_p2(s_next, prm)
+    intact_next = intact_pos if s_next > 0.0 else intact_neg
+    return loaded_turning_angle(after, s_next, intact_next, prm), intact_next

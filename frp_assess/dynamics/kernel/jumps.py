@@ -30,20 +30,22 @@ def uplift(
 ) -> tuple[float, float]:
     """From rest at x, the instant in [x, x_end) the wall uplifts, and its side (0: none).
 
-    It starts with s = +1 when ü_g/g < −tan α_x and (two-sided only) with s = −1 when
-    ü_g/g > tan α_x; the input is linear, so the instant is exact.
+    It starts with s = +1 when ü_g/g < −tan_+ and (two-sided only) with s = −1 when
+    ü_g/g > tan_−; the input is linear, so the instant is exact.  Without loads both
+    thresholds are tan α_x (docs/model.md §1.1); with them, a_RM,± of §12.
     """
-    tan_a = prm.tan_ax
+    tan_p = prm.tan_pos
+    tan_n = prm.tan_neg
     ux = ua + slope * x
     ue = ua + slope * x_end
-    if ux < -tan_a:
+    if ux < -tan_p:
         return x, 1.0
-    if (not prm.one_sided) and ux > tan_a:
+    if (not prm.one_sided) and ux > tan_n:
         return x, -1.0
-    if ue < -tan_a:
-        return x + (-tan_a - ux) / slope, 1.0
-    if (not prm.one_sided) and ue > tan_a:
-        return x + (tan_a - ux) / slope, -1.0
+    if ue < -tan_p:
+        return x + (-tan_p - ux) / slope, 1.0
+    if (not prm.one_sided) and ue > tan_n:
+        return x + (tan_n - ux) / slope, -1.0
     return x_end, 0.0
 
 
@@ -51,11 +53,11 @@ def uplift(
 def impact(omega: float, s: float, prm: KernelParams) -> tuple[float, float, bool]:
     """Jump at θ = 0: (θ'₊, new s, at rest).  Two-sided: the pivot changes; one-sided: rebound."""
     if prm.one_sided:
-        omega_new = -prm.e_impact * omega
+        omega_new = -prm.e_to_pos * omega
         s_new = s
     else:
-        omega_new = prm.e_impact * omega
         s_new = -s
+        omega_new = (prm.e_to_pos if s_new > 0.0 else prm.e_to_neg) * omega
     if abs(omega_new) < REST_VELOCITY * prm.p:
         return 0.0, s_new, True
     return omega_new, s_new, False

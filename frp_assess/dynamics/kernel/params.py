@@ -88,6 +88,27 @@ class KernelParams(NamedTuple):
     alpha_x: float  #: α_x = atan((B − x_W)/H) [rad]: the tipping limit of the rules and outputs
     tan_ax: float  #: tan α_x [-]: the uplift threshold in g
     tip_bar: float  #: θ*: where V stops rising with the acting bar intact [rad] (≤ π/2)
+    # --- each side's equation of motion with the loads of docs/model.md §12 ----------------
+    # The bracket of Eq. 10 on side s is (a0_s + u·a1_s)·cos θ + (K_s + b0_s + u·b1_s)·sin θ
+    # (:mod:`frp_assess.dynamics.loads`); without loads a0 = s·sin α, a1 = cos α, b0 = −cos α,
+    # b1 = s·sin α and p²_s = p²: the paper's Eq. 10, the same numbers bit for bit.
+    loaded: bool  #: the wall carries loads: the rules below that depend on them take them
+    p2_pos: float  #: p²_+ = W·R/I_+ [1/s²]
+    p2_neg: float  #: p²_− = W·R/I_− [1/s²]
+    a0_pos: float  #: [-]
+    a0_neg: float  #: [-]
+    a1_pos: float  #: [-]
+    a1_neg: float  #: [-]
+    b0_pos: float  #: [-]
+    b0_neg: float  #: [-]
+    b1_pos: float  #: [-]
+    b1_neg: float  #: [-]
+    tan_pos: float  #: the uplift threshold on side + in g: rocking starts when u < −tan_pos [-]
+    tan_neg: float  #: on side −: when u > tan_neg (two-sided only) [-]
+    e_to_pos: float  #: velocity ratio at an impact after which the wall rocks on side + [-]
+    e_to_neg: float  #: and on side − [-]
+    alpha_x_neg: float  #: where the wall without bar tips on side − [rad] (α_x: side +)
+    tip_bar_neg: float  #: θ* of side − with the acting bar intact [rad] (tip_bar: side +)
     #: the bounces after an impact are ended at once when they surely die out where the input
     #: cannot uplift the wall (:func:`.jumps.chatter_ends`; the same results, fewer impacts to
     #: follow); False only to show that

@@ -17,17 +17,27 @@ from frp_assess.dynamics.kernel.params import METHOD_BS3, METHOD_DOPRI5, KernelP
 from frp_assess.dynamics.kernel.trig import sin_cos
 
 
+@njit(cache=True, nogil=True, inline="always")
+def side_terms(s: float, prm: KernelParams) -> tuple[float, float, float, float, float]:
+    """(p²_s, a0_s, a1_s, b0_s, b1_s) of the side s (:class:`.params.KernelParams`)."""
+    if s > 0.0:
+        return prm.p2_pos, prm.a0_pos, prm.a1_pos, prm.b0_pos, prm.b1_pos
+    return prm.p2_neg, prm.a0_neg, prm.a1_neg, prm.b0_neg, prm.b1_neg
+
+
 @njit(cache=True, nogil=True)
 def acceleration(theta: float, s: float, u: float, k_s: float, prm: KernelParams) -> float:
-    """θ'' of Eq. 10 with the base reaction [rad/s²] in the regime s, ground acceleration
-    u = ü_g/g (scaled):
+    """θ'' of Eq. 10 with the base reaction and the loads [rad/s²] in the regime s, ground
+    acceleration u = ü_g/g (scaled):
 
-        θ'' = −p²·[sin(αs − θ) + u·cos(αs − θ) + K_s·sin θ − s·ξ·n²·cos θ],
-        n = 1 + κ_s·sin(|θ|/2),  κ_s = K_s·κ/K   (docs/model.md §1.1)
+        θ'' = −p²_s·[(a0_s + u·a1_s − s·ξ·n²)·cos θ + (K_s + b0_s + u·b1_s)·sin θ],
+        n = 1 + κ_s·sin(|θ|/2),  κ_s = K_s·κ/K   (docs/model.md §1.1, §12)
 
+    which without loads is −p²·[sin(αs − θ) + u·cos(αs − θ) + K_s·sin θ − s·ξ·n²·cos θ].
     With the edge pivot (ξ = 0) the reaction term is skipped: the paper's Eq. 10 bit for bit.
     """
-    return _rhs(theta, s, u, k_s, prm.p2, prm.sin_a, prm.cos_a, prm.xi, prm.kappa_per_k)
+    p2, a0, a1, b0, b1 = side_terms(s, prm)
+    return _rhs(theta, s, u, k_s, p2, a0, a1, b0, b1, prm.xi, prm.kappa_per_k)
 
 
 @njit(cache=True, nogil=True, inline=into("dopri5"))
@@ -37,21 +47,22 @@ def _rhs(
     u: float,
     k_s: float,
     p2: float,
-    sin_a: float,
-    cos_a: float,
+    a0: float,
+    a1: float,
+    b0: float,
+    b1: float,
     xi: float,
     kappa_per_k: float,
 ) -> float:
-    """:func:`acceleration` with the wall's constants as numbers.  numba inlines it into
+    """:func:`acceleration` with the side's constants as numbers.  numba inlines it into
     :func:`dopri5`, which evaluates it seven times a step (:mod:`.inlining`); the other
     callers, off the path of every step, go through :func:`acceleration`."""
-    # sin(α s − θ) = s sinα cosθ − cosα sinθ ;  cos(α s − θ) = cosα cosθ + s sinα sinθ, so
-    # the bracket is A·cosθ + B·sinθ with A = s sinα + u cosα − s ξ n², B = K_s − cosα + u s sinα.
+    # the bracket is A·cosθ + B·sinθ with A = a0 + u·a1 − s ξ n², B = K_s + b0 + u·b1 (without
+    # loads a0 = s sinα, a1 = cosα, b0 = −cosα, b1 = s sinα: sin(αs − θ) + u·cos(αs − θ)).
     # A and B do not depend on θ: they are formed while sin θ, cos θ are computed, and the
     # stage's chain of dependent operations from θ to θ'' is the shortest (docs/model.md §4.2).
-    ssa = s * sin_a
-    a_coef = ssa + u * cos_a
-    b_coef = k_s - cos_a + u * ssa
+    a_coef = a0 + u * a1
+    b_coef = k_s + b0 + u * b1
     if xi != 0.0 and k_s != 0.0:
         # the bar force needs sin(|θ|/2) = s·sin(θ/2) (smooth across θ = 0 inside a step that
         # overshoots an impact before it is located): one sin/cos pair of θ/2 gives it and
@@ -178,20 +189,21 @@ def dopri5(
     dependent operations from one evaluation of θ'' to the next is as short as it can be.
     """
     hh = h * h
-    p2, sin_a, cos_a, xi, kpk = prm.p2, prm.sin_a, prm.cos_a, prm.xi, prm.kappa_per_k
+    p2, a0, a1c, b0, b1 = side_terms(s, prm)
+    xi, kpk = prm.xi, prm.kappa_per_k
     t2 = theta + h * _C2 * omega
-    a2 = _rhs(t2, s, u0 + slope * _C2 * h, k_s, p2, sin_a, cos_a, xi, kpk)
+    a2 = _rhs(t2, s, u0 + slope * _C2 * h, k_s, p2, a0, a1c, b0, b1, xi, kpk)
     t3 = (theta + h * _C3 * omega) + hh * (_N31 * a1)
-    a3 = _rhs(t3, s, u0 + slope * _C3 * h, k_s, p2, sin_a, cos_a, xi, kpk)
+    a3 = _rhs(t3, s, u0 + slope * _C3 * h, k_s, p2, a0, a1c, b0, b1, xi, kpk)
     t4 = (theta + h * _C4 * omega + hh * (_N41 * a1)) + hh * (_N42 * a2)
-    a4 = _rhs(t4, s, u0 + slope * _C4 * h, k_s, p2, sin_a, cos_a, xi, kpk)
+    a4 = _rhs(t4, s, u0 + slope * _C4 * h, k_s, p2, a0, a1c, b0, b1, xi, kpk)
     t5 = (theta + h * _C5 * omega + hh * (_N51 * a1 + _N52 * a2)) + hh * (_N53 * a3)
-    a5 = _rhs(t5, s, u0 + slope * _C5 * h, k_s, p2, sin_a, cos_a, xi, kpk)
+    a5 = _rhs(t5, s, u0 + slope * _C5 * h, k_s, p2, a0, a1c, b0, b1, xi, kpk)
     t6 = (theta + h * omega + hh * (_N61 * a1 + _N62 * a2 + _N63 * a3)) + hh * (_N64 * a4)
-    a6 = _rhs(t6, s, u0 + slope * h, k_s, p2, sin_a, cos_a, xi, kpk)
+    a6 = _rhs(t6, s, u0 + slope * h, k_s, p2, a0, a1c, b0, b1, xi, kpk)
     theta1 = (theta + h * omega + hh * (_N71 * a1 + _N73 * a3 + _N74 * a4)) + hh * (_N75 * a5)
     omega1 = omega + h * (_B1 * a1 + _B3 * a3 + _B4 * a4 + _B5 * a5 + _B6 * a6)
-    a7 = _rhs(theta1, s, u0 + slope * h, k_s, p2, sin_a, cos_a, xi, kpk)
+    a7 = _rhs(theta1, s, u0 + slope * h, k_s, p2, a0, a1c, b0, b1, xi, kpk)
     err_t = hh * (_F1 * a1 + _F3 * a3 + _F4 * a4 + _F5 * a5 + _F6 * a6)
     err_w = h * (_E1 * a1 + _E3 * a3 + _E4 * a4 + _E5 * a5 + _E6 * a6 + _E7 * a7)
     return theta1, omega1, a7, error_norm(theta, omega, theta1, omega1, err_t, err_w, prm)

@@ -1,0 +1,112 @@
+"""The loads a wall carries, for the dynamics (docs/model.md §12; SI units, per metre of wall).
+
+:class:`Loads` holds the vertical loads on the top of the wall (their mass carried by the
+wall or not), the outward thrusts and the steel ties; :func:`side_terms` turns them into the
+constants of the equation of motion on one side, in the kernel's normalisation (moments per
+m·g·R of the wall, :mod:`frp_assess.dynamics.kernel.steppers`): the restoring bracket of §12
+
+    A_s·cos θ + B_s·sin θ,   A_s = a0_s + u·a1_s,   B_s = K_s + b0_s + u·b1_s   (u = ü_g/g)
+
+with, W·R the weight moment of the wall, u_i its lever from the pivot of side s,
+
+    a0_s = s·sin α + (s·Σ P_i·u_i − Σ F_j·h_j)/(W·R)
+    a1_s = cos α + Σ_carried P_i·H/(W·R)
+    b0_s = −cos α − (Σ P_i·H + [s > 0]·Σ F_j·B)/(W·R)
+    b1_s = s·sin α + s·Σ_carried P_i·u_i/(W·R)
+
+and p²_s = W·R/I_s, I_s = I₀ + Σ_carried (P_i/g)·(u_i² + H²).  Without loads they are the
+wall's own numbers, bit for bit (s·sin α, cos α, −cos α, s·sin α, p²): the same arithmetic.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import NamedTuple
+
+from frp_assess.dynamics.wall import Wall
+from frp_assess.motions.record import G
+from frp_assess.rules.tie_rods import tie_anchorage_force
+from frp_assess.rules.wall_loads import Thrust, TopLoad, lever
+
+
+@dataclass(frozen=True)
+class Tie:
+    """The steel ties at one height, per metre of wall (:mod:`frp_assess.rules.tie_rods`)."""
+
+    height: float  #: h_t [m] above the rocking base
+    stiffness: float  #: k_t = E_s·A_s/(L_t·i_t) [N/m per m]
+    yield_force: float  #: F_y = A_s·f_y/i_t [N/m]
+    anchorage_force: float  #: F_a/i_t [N/m]; inf when the anchorage does not govern
+
+    @classmethod
+    def of(cls, height: float, stiffness: float, yield_force: float, anchorage: float | None,
+           spacing: float) -> Tie:  # fmt: skip
+        """The ties at ``height`` [m] with an anchorage of ``anchorage`` [N per tie] (None:
+        not governing) every ``spacing`` [m]."""
+        return cls(height, stiffness, yield_force, tie_anchorage_force(anchorage, spacing))
+
+
+@dataclass(frozen=True)
+class Loads:
+    """What bears on and pushes the wall (SI: N/m, m).  Empty: the free-standing wall."""
+
+    top: tuple[TopLoad, ...] = ()
+    thrusts: tuple[Thrust, ...] = ()
+    ties: tuple[Tie, ...] = ()
+
+    def __bool__(self) -> bool:
+        return bool(self.top or self.thrusts or self.ties)
+
+    @property
+    def vertical(self) -> float:
+        """Σ P_i [N/m]: the vertical loads the base carries besides the wall's weight."""
+        return sum(p.force for p in self.top)
+
+    def carried(self) -> tuple[TopLoad, ...]:
+        """The top loads whose mass moves with the wall."""
+        return tuple(p for p in self.top if p.carried)
+
+
+NO_LOADS = Loads()
+
+
+class SideTerms(NamedTuple):
+    """The constants of the equation of motion on one side (module docstring)."""
+
+    p2: float  #: p²_s = W·R/I_s [1/s²]
+    a0: float  #: [-]
+    a1: float  #: [-]
+    b0: float  #: [-]
+    b1: float  #: [-]
+
+
+def inertia(wall: Wall, loads: Loads, side: int) -> float:
+    """I_s about the pivot of ``side`` [kg·m²/m]: I₀ + Σ_carried (P_i/g)·(u_i² + H²)."""
+    total = wall.I0
+    for p in loads.carried():
+        u = lever(p, wall.thickness, side)
+        total += p.force / G * (u * u + wall.height * wall.height)
+    return total
+
+
+def side_terms(wall: Wall, loads: Loads, side: int, sin_a: float, cos_a: float) -> SideTerms:
+    """The constants of ``side`` (+1 outward, −1 inward) with ``sin_a``, ``cos_a`` the kernel's
+    sin α, cos α (module docstring).  Without loads: (p², s·sin α, cos α, −cos α, s·sin α)."""
+    s = float(side)
+    if not (loads.top or loads.thrusts):
+        return SideTerms(wall.p2, s * sin_a, cos_a, -cos_a, s * sin_a)
+    wr = wall.weight * wall.R
+    h = wall.height
+    hold = sum(p.force * lever(p, wall.thickness, side) for p in loads.top)
+    push = sum(f.force * f.height for f in loads.thrusts)
+    carried_h = sum(p.force * h for p in loads.carried())
+    carried_u = sum(p.force * lever(p, wall.thickness, side) for p in loads.carried())
+    sink = loads.vertical * h + (sum(f.force for f in loads.thrusts) * wall.thickness if side > 0
+                                 else 0.0)  # fmt: skip
+    return SideTerms(
+        p2=wr / inertia(wall, loads, side),
+        a0=s * sin_a + (s * hold - push) / wr,
+        a1=cos_a + carried_h / wr,
+        b0=-cos_a - sink / wr,
+        b1=s * sin_a + s * carried_u / wr,
+    )
