@@ -16,6 +16,7 @@ from pydantic import (
 )
 from pydantic_core import PydanticCustomError
 
+from frp_assess.motions.record_text import MAX_DT
 from frp_assess.rules.geometry import HEIGHT_RANGE as HEIGHT_RANGE  # re-export
 from frp_assess.rules.geometry import THICKNESS_RANGE as THICKNESS_RANGE  # re-export
 
@@ -91,6 +92,8 @@ TABLE_BAND = 2.0
 MAX_OPTIONS = 2000  #: retrofit options after the sweeps are expanded
 MAX_RECORD_DURATION = 600.0  #: [s] longest artificial record
 MIN_TIME_STEP = 1e-4  #: [s] smallest time step of a record
+#: [s] largest time step of a record: the record reader's (its reason there)
+MAX_TIME_STEP = MAX_DT
 MAX_SEED = 2**32 - 1  #: largest random seed
 MAX_TABLE_POINTS = 1000  #: points of a spectrum table
 #: longest free texts [characters]
