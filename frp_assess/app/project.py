@@ -94,8 +94,9 @@ def check_file(path: Path) -> CheckedProject | CheckedStudy:
         return CheckedStudy(study, name)
     loaded = load_parsed(data, lines, name, base_dir=path.parent)
     records, problems = read_record_files(loaded.project, loaded.base_dir)
-    raise_all(problems + layout_problems(loaded))
-    return CheckedProject(loaded, (*loaded.warnings, *plausibility_warnings(records)))
+    layout_errors, as_built = layout_problems(loaded)
+    raise_all(problems + layout_errors)
+    return CheckedProject(loaded, (*loaded.warnings, *as_built, *plausibility_warnings(records)))
 
 
 def ensure_project_file(path: Path) -> None:

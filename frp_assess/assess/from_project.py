@@ -13,7 +13,7 @@ from dataclasses import replace
 from pathlib import Path
 
 from frp_assess.assess.bar_catalogue import BarSize
-from frp_assess.assess.bars_as_built import option_with_layout
+from frp_assess.assess.bars_as_built import as_built_difference, option_with_layout
 from frp_assess.assess.inputs import (
     AnchorageSettings,
     ArtificialRecords,
@@ -355,14 +355,36 @@ def load_inputs(
         file=str(loaded.path),
     )
     warnings = tuple(w.text() for w in project_warnings(loaded.project))
+    built = as_built_warnings(loaded, inputs)
+    if warn is not None:
+        for error in built:
+            warn(str(error))
+    warnings += tuple(f"{e.key}: {e.message}" for e in built)
     return replace(inputs, warnings=warnings) if warnings else inputs
 
 
-def layout_problems(loaded: LoadedProject) -> list[InputError]:
+def as_built_warnings(loaded: LoadedProject, inputs: AssessmentInputs) -> tuple[InputError, ...]:
+    """One located warning (an InputError's file, line, key and message, not raised) per
+    option whose bars as built are far from the ratio asked
+    (:func:`~frp_assess.assess.bars_as_built.as_built_difference`)."""
+    found = []
+    for option in inputs.options:
+        message = as_built_difference(option, whole_bars=inputs.bars.whole_bars)
+        if message is not None:
+            loc = _option_loc(loaded.project, option, "ratio")
+            line = line_of(loaded.lines, loc)
+            found.append(
+                InputError(message, file=str(loaded.path), line=line, key=format_path(loc))
+            )
+    return tuple(found)
+
+
+def layout_problems(loaded: LoadedProject) -> tuple[list[InputError], tuple[str, ...]]:
     """The options of a loaded project that cannot be built in whole bars (one located
-    problem each), for ``validate``."""
+    problem each), and the located warning lines of those built far from the ratio asked
+    (:func:`as_built_warnings`), for ``validate``."""
     try:
-        inputs_from_project(
+        inputs = inputs_from_project(
             loaded.project,
             loaded.base_dir,
             str(loaded.path.name),
@@ -370,8 +392,8 @@ def layout_problems(loaded: LoadedProject) -> list[InputError]:
             file=str(loaded.path),
         )
     except InputError as exc:
-        return list(problems_of(exc))
-    return []
+        return list(problems_of(exc)), ()
+    return [], tuple(str(e) for e in as_built_warnings(loaded, inputs))
 
 
 def read_record_files(project: Project, base_dir: Path) -> tuple[list[Record], list[InputError]]:

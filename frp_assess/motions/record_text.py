@@ -42,6 +42,12 @@ MAX_RECORD_BYTES = 50_000_000
 MAX_SAMPLES = 2_000_000
 #: smallest time step [s] (as the project file's; a smaller one is a unit or header mistake)
 MIN_DT = 1e-4
+#: largest time step [s] of a record (the project file's dt has the same bound).  The
+#: spectrum-compatibility checks compare spectra from 0.15 s (NTC 2018 §3.2.3.6; EC8's from
+#: 0.2·T1) and a record holds no motion faster than its Nyquist period 2·dt: at dt = 0.05 s a
+#: 0.15 s oscillation still has 3 samples a cycle; a record of dt = 1 s holds nothing below
+#: 2 s, and its spectrum over the checks' periods would be an artefact of the sampling
+MAX_DT = 0.05
 #: smallest and largest peak [g] of a record that is read at all.  Outside them no units
 #: make sense of the file (a PGA of 1e-6 g is below any instrument's noise; 1e4 g is 10⁴ times
 #: any recorded earthquake, even a file in cm/s² read as g stays below it) and scaling such a
@@ -206,13 +212,21 @@ def is_numeric_line(text: str) -> bool:
 
 
 def check_dt(dt: float, path: Path, line: int | None) -> float:
-    """``dt`` [s] if it is a usable time step (finite, at least :data:`MIN_DT`), else a
-    :class:`RecordFormatError` at ``path``:``line``."""
+    """``dt`` [s] if it is a usable time step (finite, :data:`MIN_DT` to :data:`MAX_DT`),
+    else a :class:`RecordFormatError` at ``path``:``line``."""
     if not (math.isfinite(dt) and dt > 0.0):
         raise RecordFormatError(f"time step must be > 0, found {dt}", file=str(path), line=line)
     if dt < MIN_DT:
         raise RecordFormatError(
             f"time step {dt:g} s is below {MIN_DT:g} s (check the header or the time column's "
+            "units: seconds)",
+            file=str(path),
+            line=line,
+        )
+    if dt > MAX_DT:
+        raise RecordFormatError(
+            f"time step {dt:g} s is above {MAX_DT:g} s: the spectrum's periods from 0.15 s "
+            f"need samples at most {MAX_DT:g} s apart (check the header or the time column's "
             "units: seconds)",
             file=str(path),
             line=line,

@@ -4,12 +4,14 @@ One generic pair driven by the dataclasses' type hints: a new dataclass or field
 :mod:`frp_assess.results.model` needs no change here.  Supported annotations: dataclasses,
 ``tuple[X, ...]``, fixed ``tuple[X, Y]``, ``list[X]``, ``dict[str, X]``, unions (``X | None``,
 ``str | float``: the first alternative that fits),
-``float``/``int``/``str``/``bool`` and ``object`` (any JSON value, kept as read).  A field
-with a default may be missing from the file (one whose metadata has ``omit_if_none`` is not
-written when None); an unknown key or a value of the wrong type is
-an :class:`~frp_assess.errors.InputError` naming the file and the key path.  Reading builds
-one converter per annotation, once (:func:`_converter`), so a value costs no look-up of its
-annotation's origin, arguments or fields.
+``float``/``int``/``str``/``bool`` and ``object`` (any JSON value, kept as read).  Every
+number is finite (Python's json reads 1e999 as inf), and a field with a value check in
+:mod:`frp_assess.results.read_checks` (PGA > 0, the wall's ranges, a case's name) has it
+run.  A field with a default may be missing from the file (one whose metadata has
+``omit_if_none`` is not written when None); an unknown key, a value of the wrong type or one
+out of its range is an :class:`~frp_assess.errors.InputError` naming the file and the key
+path.  Reading builds one converter per annotation, once (:func:`_converter`), so a value
+costs no look-up of its annotation's origin, arguments or fields.
 """
 
 from __future__ import annotations
@@ -18,6 +20,7 @@ import dataclasses
 import functools
 import itertools
 import json
+import math
 import types
 import typing
 from collections.abc import Callable
@@ -25,6 +28,7 @@ from typing import Any
 
 from frp_assess.errors import InputError
 from frp_assess.results.model import SCHEMA_VERSION, AssessmentResult
+from frp_assess.results.read_checks import FIELD_CHECKS, OBJECT_CHECKS, FieldCheck
 
 
 def to_json(obj: object) -> str:
@@ -94,7 +98,24 @@ def _fail(file: str | None, key: str, message: str) -> InputError:
 
 
 def _identity(value: Any, file: str | None, key: str) -> Any:
+    """Any JSON value, kept as read; a number in it finite (json reads 1e999 as inf)."""
+    if isinstance(value, dict):
+        for k, v in value.items():
+            _identity(v, file, _join(key, k))
+    elif isinstance(value, list):
+        for i, v in enumerate(value):
+            _identity(v, file, f"{key}[{i}]")
+    elif isinstance(value, float | int) and not _finite(value):
+        raise _fail(file, key, f"expected a finite number, found {value!r}")
     return value
+
+
+def _finite(value: float) -> bool:
+    """Whether a JSON number is finite as a float (an integer too large for one is not)."""
+    try:
+        return math.isfinite(value)
+    except OverflowError:
+        return False
 
 
 @functools.cache
@@ -180,9 +201,29 @@ def _mapping(item: Any) -> Converter:
 
 @functools.cache
 def _field_converters(cls: Any) -> tuple[tuple[str, Converter], ...]:
-    """(name, converter) of every field of the dataclass ``cls``, in field order."""
+    """(name, converter) of every field of the dataclass ``cls``, in field order; a field
+    with a value check (:data:`~frp_assess.results.read_checks.FIELD_CHECKS`) has it run on
+    the converted value."""
     hints = _hints(cls)
-    return tuple((f.name, _converter(hints[f.name])) for f in dataclasses.fields(cls))
+    converters = []
+    for f in dataclasses.fields(cls):
+        convert = _converter(hints[f.name])
+        check = FIELD_CHECKS.get((cls, f.name))
+        converters.append((f.name, convert if check is None else _checked(convert, check)))
+    return tuple(converters)
+
+
+def _checked(convert: Converter, check: FieldCheck) -> Converter:
+    """``convert``, then the value check: its expectation and what was found, at the key."""
+
+    def checked(value: Any, file: str | None, key: str) -> Any:
+        result = convert(value, file, key)
+        expected = check(result)
+        if expected is not None:
+            raise _fail(file, key, f"{expected}, found {_found(value)}")
+        return result
+
+    return checked
 
 
 def _dataclass(cls: Any) -> Converter:
@@ -195,6 +236,7 @@ def _dataclass(cls: Any) -> Converter:
         for f in dataclasses.fields(cls)
         if f.default is dataclasses.MISSING and f.default_factory is dataclasses.MISSING
     )
+    object_check = OBJECT_CHECKS.get(cls)
 
     def convert(value: Any, file: str | None, key: str) -> Any:
         if not isinstance(value, dict):
@@ -208,7 +250,12 @@ def _dataclass(cls: Any) -> Converter:
                 kwargs[name] = field_converter(value[name], file, _join(key, name))
             elif name in required:
                 raise _fail(file, _join(key, name), "missing")
-        return cls(**kwargs)
+        obj = cls(**kwargs)
+        if object_check is not None and (wrong := object_check(obj)) is not None:
+            raise _fail(
+                file, _join(key, wrong[0]), f"{wrong[1]}, found {_found(value.get(wrong[0]))}"
+            )
+        return obj
 
     return convert
 
@@ -233,17 +280,31 @@ def _plain_types(tp: Any) -> frozenset[Any] | None:
 def _plain_items(tp: Any, value: list[Any]) -> list[Any] | None:
     """The items of ``value`` converted to ``tp`` when ``tp`` is a scalar or a fixed tuple of
     scalars and every item fits (the bulk of results.json: the IDA curves), checked by their
-    exact types without the generic per-item walk; None otherwise (then the generic walk
-    converts, or words the error with its key path).  The same values as the generic walk."""
+    exact types (and every float finite) without the generic per-item walk; None otherwise
+    (then the generic walk converts, or words the error with its key path).  The same values
+    as the generic walk."""
     allowed = _plain_types(tp)
     if allowed is None:
         return None
     if typing.get_origin(tp) is not tuple:
-        return list(value) if set(map(type, value)) <= allowed else None
+        if not set(map(type, value)) <= allowed:
+            return None
+        return list(value) if tp is not float or _all_finite(value) else None
     items = [tuple(v) for v in value if type(v) is list]
     if len(items) != len(value) or not {tuple(map(type, v)) for v in items} <= allowed:
         return None
+    floats = [i for i, a in enumerate(typing.get_args(tp)) if a is float]
+    if floats and not all(_all_finite([v[i] for v in items]) for i in floats):
+        return None
     return items
+
+
+def _all_finite(numbers: list[Any]) -> bool:
+    """Whether every number (ints and floats) is finite as a float."""
+    try:
+        return all(map(math.isfinite, numbers))
+    except OverflowError:  # an integer too large for a float
+        return False
 
 
 def _scalar(tp: Any, value: Any, file: str | None, key: str) -> Any:
@@ -253,6 +314,8 @@ def _scalar(tp: Any, value: Any, file: str | None, key: str) -> Any:
         ok = isinstance(value, int) and not isinstance(value, bool)
     elif tp is float:
         ok = isinstance(value, (int, float)) and not isinstance(value, bool)
+        if ok and not _finite(value):
+            raise _fail(file, key, f"expected a finite number, found {value!r}")
     elif tp is str:
         ok = isinstance(value, str)
     else:
@@ -268,6 +331,12 @@ def _no_constant(name: str) -> None:
 
 def _join(key: str, name: str) -> str:
     return f"{key}.{name}" if key else name
+
+
+def _found(value: Any) -> str:
+    """``value`` as an error shows it: its repr, at most 80 characters."""
+    text = repr(value)
+    return text if len(text) <= 80 else text[:79] + "…"
 
 
 def _kind(value: Any) -> str:

@@ -8,6 +8,13 @@ from __future__ import annotations
 
 import math
 
+#: the wall's thickness B [m] and height H [m] the model is valid for, [low, high]: below 50 mm
+#: no masonry leaf stands (a brick on edge is 55-60 mm); below H = 0.5 m the wall is a block,
+#: not a rocking panel.  The project file's (config.schema), the command line's
+#: (cli/wall_args.py) and results.json's (results/read_checks.py) range.
+THICKNESS_RANGE = (0.05, 5.0)
+HEIGHT_RANGE = (0.5, 50.0)
+
 
 def size_problem(value: float, what: str = "size", unit: str = "m") -> str | None:
     """Why a size ``value`` [``unit``, m by default] is not a finite number > 0 (one line),

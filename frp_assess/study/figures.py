@@ -4,7 +4,9 @@ Each figure plots a summary quantity (mean q, or the improvement) against H [m],
 value of one axis, the other axes held at the paper's reference case (one-sided, external,
 α = 7.5°, spectrum A2, ρ = 1 ‰, CFRP) or at the first value the study has.  Every figure is
 written as SVG (always) and PNG (when reportlab's renderPM backend, ``rlPyCairo``, is
-installed), and all of them, with the comparison table, into ``study.pdf``.
+installed), and all of them, with the comparison table, into ``study.pdf``; each file is
+written atomically (:func:`frp_assess.io_utils.atomic_path`: a full disk leaves the old file
+or none, never a half-written one).
 """
 
 from __future__ import annotations
@@ -23,6 +25,7 @@ from reportlab.lib.styles import getSampleStyleSheet
 from reportlab.lib.units import cm
 from reportlab.platypus import Paragraph, SimpleDocTemplate, Spacer, Table, TableStyle
 
+from frp_assess.io_utils import atomic_path
 from frp_assess.study.comparison import compare
 from frp_assess.study.rows import Row, read_summary
 
@@ -229,7 +232,8 @@ def _png(drawing: Drawing, path: Path) -> bool:
     try:
         from reportlab.graphics import renderPM
 
-        renderPM.drawToFile(drawing, str(path), fmt="PNG", dpi=144)
+        with atomic_path(path) as tmp:
+            renderPM.drawToFile(drawing, str(tmp), fmt="PNG", dpi=144)
         return True
     except Exception:  # renderPM needs the rlPyCairo backend, an optional package
         path.unlink(missing_ok=True)
@@ -245,7 +249,8 @@ def write_figures(rows: Sequence[Row], fig_dir: Path) -> list[tuple[FigureSpec, 
         if len(series) < 1:
             continue
         d = draw_figure(spec, series)
-        renderSVG.drawToFile(d, str(fig_dir / f"{spec.name}.svg"))
+        with atomic_path(fig_dir / f"{spec.name}.svg") as tmp:
+            renderSVG.drawToFile(d, str(tmp))
         _png(d, fig_dir / f"{spec.name}.png")
         out.append((spec, d))
     return out
@@ -282,7 +287,12 @@ def write_study_pdf(out_dir: Path) -> list[Path]:
     for _, d in figs:
         story += [d, Spacer(1, 8)]
     pdf = out_dir / "study.pdf"
-    SimpleDocTemplate(
-        str(pdf), pagesize=A4, leftMargin=1.2 * cm, rightMargin=1.2 * cm, title="frp-assess study"
-    ).build(story)
+    with atomic_path(pdf) as tmp:  # a full disk leaves no half-written (0-byte) study.pdf
+        SimpleDocTemplate(
+            str(tmp),
+            pagesize=A4,
+            leftMargin=1.2 * cm,
+            rightMargin=1.2 * cm,
+            title="frp-assess study",
+        ).build(story)
     return [pdf, out_dir / "figures"]

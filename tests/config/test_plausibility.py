@@ -24,6 +24,13 @@ interventions:
 """
 #: the issue's example: a wall 32 m high, bars at 0.0015 ‰
 IMPLAUSIBLE = BASE.replace("height: 3.0", "height: 32.0").replace("ratio: 1}", "ratio: 0.0015}")
+#: the bars of 0.0015 ‰ on a wall 0.3 m x 1 m: one Ø6 bar (π·6²/4 = 28.27 mm²), the fewest
+#: whole bars, 28.27/(300·1000) = 0.0942 ‰ (62.8 times the ratio asked)
+AS_BUILT_0_0015 = (
+    "GFRP centred 0.0015‰: 0.0015 ‰ is built as 1 bar Ø6 per line at 1 m, 0.0942 ‰ (62.8 "
+    "times the ratio asked, more than 25% off; governed by the area of whole bars); the model "
+    "uses it: check the ratio, the diameter and bars.max_spacing"
+)
 
 
 def _texts(text: str) -> list[str]:
@@ -79,6 +86,8 @@ def test_validate_prints_each_warning_once(
         f"frp-assess: warning: {path}:8: interventions[0].ratio: 0.0015 ‰ is below the range "
         "of practice 0.1-10 ‰ (vertical FRP bars are designed at 0.5-5 ‰); check the value and "
         "its units",
+        # the bars as built (assess/bars_as_built.py): the fewest Ø6 bars at bars.max_spacing
+        f"frp-assess: warning: {path}:8: interventions[0].ratio: {AS_BUILT_0_0015}",
     ]
 
 
@@ -93,4 +102,4 @@ def test_run_prints_them_once_and_stores_them(
     assert err.count("wall.height: 32 m is above") == 1
     assert err.count("interventions[0].ratio: 0.0015 ‰ is below") == 1
     stored = json.loads((out / "results.json").read_text(encoding="utf-8"))["input_warnings"]
-    assert stored == _texts(IMPLAUSIBLE)
+    assert stored == [*_texts(IMPLAUSIBLE), f"interventions[0].ratio: {AS_BUILT_0_0015}"]

@@ -22,6 +22,9 @@ HEAD = "PEER\nrecord\nunits g\n"
         ("NPTS= 3, DT= 1e-9 SEC", "below 0.0001 s"),
         ("NPTS= 3, DT= 5e-324 SEC", "below 0.0001 s"),
         ("NPTS= 3, DT= 1e400 SEC", "must be > 0, found inf"),
+        # issue 36 item 8: a record of DT = 1 s was accepted; it holds no motion below 2 s
+        ("NPTS= 3, DT= 1.0 SEC", "above 0.05 s: the spectrum's periods from 0.15 s"),
+        ("NPTS= 3, DT= 0.0501 SEC", "above 0.05 s"),
     ],
 )
 def test_at2_headers_that_ask_for_unbounded_work(
@@ -32,6 +35,21 @@ def test_at2_headers_that_ask_for_unbounded_work(
     with pytest.raises(RecordFormatError) as info:
         read_record(path)
     assert fragment in str(info.value) and info.value.line == 4
+
+
+@pytest.mark.parametrize("dt", ["0.05", "0.005", "0.0001"])
+def test_at2_time_steps_within_the_bounds_are_read(tmp_path: Path, dt: str) -> None:
+    """The bounds themselves are time steps (0.05 s: the project file's largest dt)."""
+    path = tmp_path / "r.AT2"
+    path.write_text(f"{HEAD}NPTS= 3, DT= {dt} SEC\n0.1 0.2 0.3\n", encoding="utf-8")
+    assert read_record(path).dt == float(dt)
+
+
+def test_two_column_time_in_seconds_of_a_second_step_is_refused(tmp_path: Path) -> None:
+    path = tmp_path / "r.txt"
+    path.write_text("0 0.1\n1 0.2\n2 0.1\n", encoding="utf-8")
+    with pytest.raises(RecordFormatError, match="above 0.05 s"):
+        read_record(path)
 
 
 def test_two_column_time_in_milliseconds_is_refused(tmp_path: Path) -> None:

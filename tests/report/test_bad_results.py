@@ -55,6 +55,32 @@ ROWS: list[tuple[str, Edit | str, str]] = [
     ("deep nesting", "[" * 100_000 + "]" * 100_000, "nested too deeply"),
     ("not JSON", "{'a': 1}", "invalid JSON"),
     ("wrong version", '{"schema_version": 99}', "unsupported schema_version"),
+    # issue 36 item 6: values read back as strictly as the project file's
+    (
+        "PGA -1",
+        _set("cases.3.records.0.pga", -1),
+        "cases[3].records[0].pga: expected a finite number > 0, found -1",
+    ),
+    ("H -3", _set("wall.height", -3), "wall.height: expected 0.5 <= value <= 50 m, found -3"),
+    ("alpha 90", _set("wall.alpha_deg", 90), "wall.alpha_deg: expected 0 < alpha_deg < 45"),
+    (
+        "three-sided",
+        _set("wall.mechanism", "three-sided"),
+        "wall.mechanism: expected one of one-sided, two-sided, found 'three-sided'",
+    ),
+    (
+        "recommended not a case",
+        _set("recommended", "GFRP centred 9‰"),
+        "recommended: expected the name of one of the",
+    ),
+    ("language fr", _set("report", {"language": "fr"}), "report.language: expected one of en, it"),
+    (
+        "1e999",  # Python's json reads it as inf
+        json.dumps(_set("demand.pga", 12345.678)(json.loads(DATA.read_text("utf-8")))).replace(
+            "12345.678", "1e999"
+        ),
+        "demand.pga: expected a finite number, found inf",
+    ),
 ]
 
 

@@ -62,3 +62,33 @@ def test_dask_and_local_give_identical_numbers(tmp_path, tiny_study, records):
     assert stats.computed == 18 and stats.executor.startswith("Dask")
     for name in ("long.csv", "summary.csv"):
         assert (tmp_path / "dask" / name).read_text() == (tmp_path / "local" / name).read_text()
+
+
+def test_a_full_disk_leaves_the_previous_study_pdf(tmp_path, tiny_study, records, monkeypatch):
+    """Issue 36 item 8: a full disk while study.pdf was written left a 0-byte study.pdf.  The
+    PDF (and each figure) is written beside it and renamed when complete (io_utils.atomic_path,
+    as run's outputs): the disk filling up (ENOSPC after the file was opened, as reportlab
+    opens it) leaves the previous study.pdf byte for byte, no temporary file, and an error
+    naming study.pdf."""
+    import errno
+
+    import frp_assess.study.figures as figures
+
+    run_study(tiny_study, tmp_path, jobs=2, records=records)
+    write_study_pdf(tmp_path)
+    before = (tmp_path / "study.pdf").read_bytes()
+
+    class FullDisk:
+        def __init__(self, filename: str, **kwargs: object) -> None:
+            self.filename = filename
+
+        def build(self, story: object) -> None:
+            open(self.filename, "wb").close()  # opened (truncated), then nothing fits
+            raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(figures, "SimpleDocTemplate", FullDisk)
+    with pytest.raises(OSError) as info:
+        write_study_pdf(tmp_path)
+    assert "study.pdf" in str(info.value) and "No space left" in str(info.value)
+    assert (tmp_path / "study.pdf").read_bytes() == before
+    assert not [p.name for p in tmp_path.iterdir() if p.name.endswith(".tmp")]

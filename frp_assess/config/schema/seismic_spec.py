@@ -16,6 +16,7 @@ from frp_assess.config.schema.spec_base import (
     MAX_RECORD_DURATION,
     MAX_RECORD_NAME,
     MAX_SEED,
+    MAX_TIME_STEP,
     MIN_ARTIFICIAL_DURATION,
     MIN_TIME_STEP,
     T1_RANGE,
@@ -50,8 +51,8 @@ class ArtificialRecordsSpec(_Model):
     dt: Number = Field(
         0.005,
         ge=MIN_TIME_STEP,
-        le=0.05,
-        description=f"Time step [s], {MIN_TIME_STEP:g}-0.05 (0.005).",
+        le=MAX_TIME_STEP,
+        description=f"Time step [s], {MIN_TIME_STEP:g}-{MAX_TIME_STEP:g} (0.005).",
     )
 
 
@@ -66,8 +67,9 @@ class RecordFileSpec(_Model):
     dt: Number | None = Field(
         None,
         ge=MIN_TIME_STEP,
-        le=0.05,
-        description=f"Time step [s], {MIN_TIME_STEP:g}-0.05, required for one-column files.",
+        le=MAX_TIME_STEP,
+        description=f"Time step [s], {MIN_TIME_STEP:g}-{MAX_TIME_STEP:g}, required for "
+        "one-column files.",
     )
     name: str | None = Field(
         None,

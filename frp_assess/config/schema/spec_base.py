@@ -16,6 +16,10 @@ from pydantic import (
 )
 from pydantic_core import PydanticCustomError
 
+from frp_assess.motions.record_text import MAX_DT
+from frp_assess.rules.geometry import HEIGHT_RANGE as HEIGHT_RANGE  # re-export
+from frp_assess.rules.geometry import THICKNESS_RANGE as THICKNESS_RANGE  # re-export
+
 GroundType = Literal["A", "B", "C", "D", "E"]
 
 #: accepted ``format`` of a record file (as frp_assess.motions.record_text.FORMATS)
@@ -74,8 +78,8 @@ MIN_SPECTRUM_G = 0.001
 #: thickness B [m] (below 50 mm no masonry leaf stands, a brick on edge is 55-60 mm), height H
 #: [m] (below 0.5 m the wall is a block, not a rocking panel), E [GPa] and eps_u [-] of a bar
 #: (FRP bars: 30-250 GPa, 0.005-0.035; a bar softer than 1 GPa or breaking at 0.01 % is none)
-THICKNESS_RANGE = (0.05, 5.0)
-HEIGHT_RANGE = (0.5, 50.0)
+#: (THICKNESS_RANGE and HEIGHT_RANGE are in rules/geometry.py: results.json is read back
+#: within them too)
 MODULUS_RANGE = (1.0, 1000.0)
 STRAIN_RANGE = (1e-4, 0.1)
 #: reference period T1 [s] of the compatibility checks (also the records command's --t1): the
@@ -88,6 +92,8 @@ TABLE_BAND = 2.0
 MAX_OPTIONS = 2000  #: retrofit options after the sweeps are expanded
 MAX_RECORD_DURATION = 600.0  #: [s] longest artificial record
 MIN_TIME_STEP = 1e-4  #: [s] smallest time step of a record
+#: [s] largest time step of a record: the record reader's (its reason there)
+MAX_TIME_STEP = MAX_DT
 MAX_SEED = 2**32 - 1  #: largest random seed
 MAX_TABLE_POINTS = 1000  #: points of a spectrum table
 #: longest free texts [characters]
