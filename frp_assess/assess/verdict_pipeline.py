@@ -26,6 +26,7 @@ from frp_assess.assess.decision import (
     decide,
     leave_one_out,
     verdict,
+    without_record,
 )
 from frp_assess.assess.explain import remark
 from frp_assess.assess.inputs import AssessmentInputs, RetrofitOption
@@ -401,15 +402,16 @@ def robustness(
     ]
     name = cases[focus].name
     survives = all(r.survives for r in loo) and all(o.passes for o in outcomes)
-    parts = []
+    no_retrofit = decision.verdicts[0].passes
+    parts = [_unreinforced_sentence(ev[0], names[: len(loo)])] if no_retrofit else []
     if p is not None:
         parts.append(
             f"P(collapse) of {name} at FC·a_g·S = {design_intensity:.3f} g is {p:.1%} "
             "(lognormal fit to the records' collapse accelerations)"
         )
     lost = [r for r in loo if not r.survives]
-    if decision.recommended is None and decision.verdicts[0].passes:
-        parts.append("the unreinforced wall passes every deciding check; no option is needed")
+    if decision.recommended is None and no_retrofit:
+        parts.append("no option is needed")
     elif decision.recommended is None:
         gained = [r for r in loo if r.recommended is not None]
         parts.append(
@@ -423,8 +425,13 @@ def robustness(
         )
     elif lost:
         parts.append(
-            "the recommendation changes when a record is left out: "
+            ("the cheapest option for extra margin" if no_retrofit else "the recommendation")
+            + " changes when a record is left out: "
             + "; ".join(f"without {r.record}: {r.recommended or 'nothing passes'}" for r in lost)
+        )
+    elif no_retrofit:
+        parts.append(
+            f"{name}, the cheapest option for extra margin, passes whichever record is left out"
         )
     else:
         parts.append(f"{name} stays recommended whichever record is left out")
@@ -456,3 +463,16 @@ def robustness(
         survives=survives and decision.recommended is not None,
         summary="; ".join(parts) + ".",
     )
+
+
+def _unreinforced_sentence(urm: Evidence, records: Sequence[str]) -> str:
+    """What the decision says of a wall that passes unreinforced (results.json
+    ``retrofit_required`` false): no retrofit is needed, and whether that holds with each
+    record left out (:func:`~frp_assess.assess.decision.without_record`)."""
+    text = "no retrofit needed: the unreinforced wall passes every deciding check"
+    if not records:
+        return text
+    fails = [r for k, r in enumerate(records) if not verdict(without_record(urm, k)).passes]
+    if not fails:
+        return text + " whichever record is left out"
+    return text + " as assessed, but not without " + ", ".join(fails)
