@@ -153,8 +153,13 @@ def noncompliant_sets(results: AssessmentResult) -> str:
 
 
 def recommendation_label(results: AssessmentResult) -> str:
-    """The label of the rank-1 option: "Recommended", or "Best ranked (input not
-    code-compliant)" when the record set fails the code's spectrum-compatibility checks."""
+    """The label of :func:`recommendation_text`: "Recommended" when the decision names an
+    option to install (results.json ``recommended`` of a wall with ``retrofit_required``),
+    "Best ranked (input not code-compliant)" for that option when the record set fails the
+    code's spectrum-compatibility checks; "Decision" when it names none (no retrofit
+    needed, or none of the options passes)."""
+    if results.recommended is None or not results.retrofit_required:
+        return "Decision" if results.input_code_compliant else f"Decision ({NOT_COMPLIANT})"
     if results.input_code_compliant:
         return "Recommended"
     return f"Best ranked ({NOT_COMPLIANT})"

@@ -134,7 +134,18 @@ def build_pdf(results: AssessmentResult, path: Path) -> bool:
             file=sys.stderr,
         )
         return False
+    _font_warning(results)
     return True
+
+
+def _font_warning(results: AssessmentResult) -> None:
+    """One warning line naming the characters of the results the PDF cannot show as written
+    (:func:`~frp_assess.report.font_coverage.font_gaps`)."""
+    from frp_assess.report.font_coverage import font_gaps
+
+    gaps = font_gaps(results)
+    if gaps is not None:
+        print(f"frp-assess: warning: {gaps}", file=sys.stderr)
 
 
 def _first_line(exc: BaseException) -> str:
@@ -262,4 +273,6 @@ def _build_report(results_dir: Path, out: Path, *, docx: bool) -> Path:
             "a value of results.json is far from what a run writes",
             file=str(results_dir / "results.json"),
         ) from None
+    if not docx:
+        _font_warning(results)
     return out

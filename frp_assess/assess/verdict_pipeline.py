@@ -15,7 +15,6 @@ import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import asdict, dataclass, replace
 
-from frp_assess.assess.collapse_fraction import fraction_fragility
 from frp_assess.assess.convention_sensitivity import convention_variants, sensitivity
 from frp_assess.assess.decision import (
     DECISION_RULE,
@@ -25,10 +24,9 @@ from frp_assess.assess.decision import (
     Evidence,
     Verdict,
     decide,
-    leave_one_out,
     verdict,
 )
-from frp_assess.assess.demand_window import near_demand, on_collapse_window, time_histories_pass
+from frp_assess.assess.demand_window import near_demand, time_histories_pass
 from frp_assess.assess.explain import remark
 from frp_assess.assess.inputs import AssessmentInputs, RetrofitOption
 from frp_assess.assess.kinematic_checks import (
@@ -38,14 +36,14 @@ from frp_assess.assess.kinematic_checks import (
     limit_state_demands,
 )
 from frp_assess.assess.results import case_result
+from frp_assess.assess.robustness import robustness
 from frp_assess.assess.runner import CaseSummary, DesignResult, IdaRunner, design_search, summarise
-from frp_assess.assess.statistics import fit_lognormal_fragility
 from frp_assess.config.schema import format_ratio
 from frp_assess.dynamics import IdaResult, IdaSettings, RockingModel
 from frp_assess.motions import Record
 from frp_assess.results.checks import CaseChecks, KinematicChecks, TimeHistoryResult
 from frp_assess.results.model import CaseResult, Sensitivity, SensitivityRowResult
-from frp_assess.results.verdict import ConventionOutcome, LeaveOneOut, NearDemand, Robustness
+from frp_assess.results.verdict import ConventionOutcome, Robustness
 
 #: how many further options are tried, per failing convention, for the one that takes over
 TAKE_OVER_CANDIDATES = 3
@@ -377,115 +375,3 @@ def conventions(
             )
         )
     return tuple(out), rows
-
-
-def robustness(
-    cases: Sequence[CaseResult],
-    ev: Sequence[Evidence],
-    summary: CaseSummary,
-    decision: Decision,
-    focus: int,
-    outcomes: Sequence[ConventionOutcome],
-    names: Sequence[str],
-    design_intensity: float,
-    *,
-    near: tuple[NearDemand, ...] = (),
-    at_demand: bool | None = None,
-) -> Robustness:
-    """P(collapse) of the focus case at FC·a_g·S, the decision without each record, the
-    conventions, and the time-history checks beside the demand (``near``; ``at_demand``:
-    their verdict at the demand), with one or two sentences."""
-    fractions = cases[focus].scatter.collapse_fraction
-    fit_of = "the collapse fractions at the sampled intensities"
-    p = None
-    if fractions:
-        fit = fraction_fragility(fractions)
-        p = None if fit is None else fit.probability(design_intensity)
-    else:
-        fit_of = "the records' collapse accelerations"
-        exact = [a for a in summary.a_dyn if a is not None]
-        if len(set(exact)) >= 2:
-            censored = [
-                b for a, b in zip(summary.a_dyn, summary.a_dyn_bound, strict=True) if a is None
-            ]
-            p = fit_lognormal_fragility(exact, censored).probability(design_intensity)
-    # with one record there is nothing to leave out
-    picks = leave_one_out(ev) if len(names) > 1 else []
-    loo = [
-        LeaveOneOut(
-            record=name,
-            recommended=None if k is None else cases[k].name,
-            survives=k == decision.recommended,
-        )
-        for name, k in zip(names, picks, strict=False)
-    ]
-    name = cases[focus].name
-    survives = all(r.survives for r in loo) and all(o.passes for o in outcomes)
-    parts = []
-    if p is not None:
-        parts.append(
-            f"P(collapse) of {name} at FC·a_g·S = {design_intensity:.3f} g is {p:.1%} "
-            f"(lognormal fit to {fit_of})"
-        )
-    lost = [r for r in loo if not r.survives]
-    if decision.recommended is None and decision.verdicts[0].passes:
-        parts.append("the unreinforced wall passes every deciding check; no option is needed")
-    elif decision.recommended is None:
-        gained = [r for r in loo if r.recommended is not None]
-        parts.append(
-            "nothing passes; leaving out one record "
-            + (
-                "changes nothing"
-                if not gained
-                else "would make "
-                + ", ".join(f"{r.recommended} pass (without {r.record})" for r in gained)
-            )
-        )
-    elif lost:
-        parts.append(
-            "the recommendation changes when a record is left out: "
-            + "; ".join(f"without {r.record}: {r.recommended or 'nothing passes'}" for r in lost)
-        )
-    else:
-        parts.append(f"{name} stays recommended whichever record is left out")
-    failing = [o for o in outcomes if not o.passes]
-    others = sum(1 for i, v in enumerate(decision.verdicts) if v.passes and i not in (0, focus))
-    takeover_none = (
-        "no other option passes even as assessed"
-        if others == 0
-        else "none of the next passing options passes under it"
-    )
-    if decision.recommended is not None:
-        if failing:
-            parts.append(
-                "under "
-                + "; ".join(
-                    f"{o.variant} it fails ({o.governing_check}); "
-                    + (f"{o.takes_over} takes over" if o.takes_over else takeover_none)
-                    for o in failing
-                )
-            )
-        else:
-            parts.append("it passes under every model convention tried")
-    window = on_collapse_window(at_demand, near)
-    if window:
-        parts.append(
-            f"the time-history check of {name} sits on a collapse window: it "
-            + ("passes" if at_demand else "fails")
-            + " at the demand but "
-            + ", ".join(
-                f"{'passes' if n.passes else 'fails'} at {n.factor:g} × the demand" for n in near
-            )
-            + ", so it is not robust"
-        )
-    return Robustness(
-        case=name,
-        design_intensity=design_intensity,
-        p_collapse=p,
-        leave_one_out=tuple(loo),
-        conventions=tuple(outcomes),
-        survives=survives and decision.recommended is not None,
-        summary="; ".join(parts) + ".",
-        time_history_near_demand=near,
-        on_collapse_window=window,
-    )

@@ -33,11 +33,18 @@ def _bound(text: str, lower: bool) -> str:
 
 
 def case_label(c: CaseResult, lang: Lang) -> str:
-    """A case in a table: the wall as it is, or material, position and ρ [‰]."""
+    """A case in a table: the wall as it is, or the option's name as the user wrote it (the
+    project file's ``interventions[].name``, whatever the report's language; its material,
+    position and ρ are in the ranking and the annex's option table)."""
     if c.is_unreinforced:
         return lang.t("annex.urm")
+    return c.name
+
+
+def _described(c: CaseResult, lang: Lang) -> str:
+    """An option's name (:func:`case_label`) with its material, position and ρ [‰]."""
     pos = position_words(c.position, lang, short=True)
-    return f"{c.material or '—'}, {pos}, {lang.num(c.ratio, 2)} ‰"
+    return f"{case_label(c, lang)} ({c.material or '—'}, {pos}, {lang.num(c.ratio, 2)} ‰)"
 
 
 def _cases(results: Results) -> list[CaseResult]:
@@ -60,7 +67,7 @@ def options_table(results: Results, lang: Lang) -> TableData:
     for c in results.ranked_options:
         lb = c.lower_bound
         rank = str(c.rank) if c.rank is not None else lang.t("annex.dropped")
-        rows.append([rank, case_label(c, lang), _bound(n(c.design_a_dyn, 3), lb),
+        rows.append([rank, _described(c, lang), _bound(n(c.design_a_dyn, 3), lb),
                      _bound(n(c.capacity_demand, 2), lb), _bound(n(c.improvement, 2), lb),
                      n(c.frp_mass, 1), n(c.frp_cost, 0, grouping=True),
                      cell(c, lang)])  # fmt: skip

@@ -9,7 +9,7 @@ from frp_assess.report import charts
 from frp_assess.report.body_closing import decision_lines
 from frp_assess.report.body_front import option_words, position_words
 from frp_assess.report.charts import localize_drawing
-from frp_assess.report.doc_model import Block
+from frp_assess.report.doc_model import Block, markup_text
 from frp_assess.report.flow import cond_break, figure, grid, h1, h2, keep, key_value, markup
 from frp_assess.report.lang import Lang, short
 from frp_assess.report.tables import TableData
@@ -133,6 +133,7 @@ def _ranking_table(results: Results, lang: Lang, limit: int = 12) -> TableData:
     n = lang.num
     header = [
         "#",
+        lang.t("col.option"),
         lang.t("col.material"),
         lang.t("col.position"),
         "ρ [‰]",
@@ -149,6 +150,7 @@ def _ranking_table(results: Results, lang: Lang, limit: int = 12) -> TableData:
         rows.append(
             [
                 str(c.rank),
+                c.name,
                 c.material or "—",
                 position_words(c.position, lang, short=True),
                 n(c.ratio, 2),
@@ -178,7 +180,7 @@ def retrofit(results: Results, lang: Lang) -> list[Block]:
         out.append(h2(lang.t("retrofit.optional" if optional and compliant else key)))
         lb = rec.lower_bound
         rows = [
-            [lang.t("retrofit.option"), option_words(rec, lang)],
+            [lang.t("retrofit.option"), markup_text(option_words(rec, lang))],
             [lang.t("as_is.design_a_dyn"), _bound(n(rec.design_a_dyn, 3), lb) + " g"],
             [lang.t("as_is.cd"), _bound(n(rec.capacity_demand, 2), lb)],
             [lang.t("retrofit.improvement"), _bound(n(rec.improvement, 2), lb)],
@@ -221,8 +223,8 @@ def retrofit(results: Results, lang: Lang) -> list[Block]:
     out.append(markup(lang.t("retrofit.rule", target=lang.gnum(results.model.target)), "small"))
     out.append(
         grid(_ranking_table(results, lang),
-             [x * mm for x in (8, 19, 20, 13, 17, 19, 13, 17, 22, 26)],
-             wrap=(1, 2, 9), numeric_from=3, highlight_rows=[0] if rec is not None else [])
+             [x * mm for x in (8, 24, 18, 19, 10, 15, 18, 10, 13, 15, 24)],
+             wrap=(1, 2, 3, 10), numeric_from=4, highlight_rows=[0] if rec is not None else [])
     )  # fmt: skip
     n_dropped = sum(1 for c in results.options if c.rank is None)
     if n_dropped:

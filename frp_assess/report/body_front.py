@@ -31,11 +31,14 @@ def position_words(position: str | None, lang: Lang, *, short: bool = False) -> 
 
 
 def option_words(c: object, lang: Lang) -> str:
-    """An option described from its fields: material, position of the bars, ratio ρ [‰]."""
+    """An option by its name as the user wrote it, then described from its fields:
+    ``<name> (material, position of the bars, ratio ρ [‰])``."""
     material = esc(getattr(c, "material", None) or "")
     pos = position_words(getattr(c, "position", None), lang)
-    return lang.t("option.words", material=material, position=pos,
-                  ratio=lang.num(float(getattr(c, "ratio", 0.0)), 2))  # fmt: skip
+    words = lang.t("option.words", material=material, position=pos,
+                   ratio=lang.num(float(getattr(c, "ratio", 0.0)), 2))  # fmt: skip
+    name = getattr(c, "name", None)
+    return f"{esc(name)} ({words})" if name else words
 
 
 def masonry_words(results: Results, lang: Lang) -> str:

@@ -127,8 +127,9 @@ def robustness_lines(results: Results, lang: Lang) -> list[str]:
         out.append(lang.t("robust.p_collapse", case=esc(rob.case),
                           x=lang.num(rob.design_intensity, 3),
                           p=probability_text(rob.p_collapse, lang)))  # fmt: skip
-    if rob.survives:
-        out.append(lang.t("robust.survives", case=esc(rob.case)))
+    if rob.survives:  # a wall that passes as it is: the case is margin, not a recommendation
+        key = "robust.survives" if results.retrofit_required else "robust.survives_optional"
+        out.append(lang.t(key, case=esc(rob.case)))
         return out
     if case is not None and not passes(case):  # nothing passes: does that verdict hold?
         flips = [lang.t("robust.loo", record=esc(lo.record), other=esc(lo.recommended))
@@ -153,22 +154,6 @@ def robustness_lines(results: Results, lang: Lang) -> list[str]:
                 text += lang.t("robust.takes_over", option=esc(conv.takes_over))
             reasons.append(text)
     out.append(lang.t("robust.not_robust", case=esc(rob.case), reasons="; ".join(reasons)))
-    return out
-    reasons = []
-    for lo in rob.leave_one_out:
-        if not lo.survives:
-            other = esc(lo.recommended) if lo.recommended else lang.t("robust.nothing")
-            reasons.append(lang.t("robust.loo", record=esc(lo.record), other=other))
-    for conv in rob.conventions:
-        if not conv.passes:
-            margin = "—" if conv.governing_margin is None else lang.num(conv.governing_margin, 2)
-            text = lang.t("robust.convention", variant=variant_words(conv.variant, lang),
-                          check=check_words(conv.governing_check, lang), margin=margin)  # fmt: skip
-            if conv.takes_over:
-                text += lang.t("robust.takes_over", option=esc(conv.takes_over))
-            reasons.append(text)
-    verdict = "robust.not_robust" if case is None or passes(case) else "robust.not_robust_closest"
-    out.append(lang.t(verdict, case=esc(rob.case), reasons="; ".join(reasons)))
     return out
 
 

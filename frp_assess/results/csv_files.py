@@ -1,10 +1,13 @@
 """results.csv and spectra.csv, written from the typed results (docs/results-json.md).
+Both follow the conventions below (spectra.csv has no verdict and rounds to 6 significant
+digits).
 
 results.csv is read in a spreadsheet by an office: it starts with a UTF-8 byte-order mark (so
 that "‰" is not garbled), rounds as the report does (accelerations and multipliers 3
 decimals, ratios 2, masses 1, costs 0) and, when the report is Italian (results.json
-``report.language``), uses the Italian conventions: decimal comma, semicolon separator.  Its
-verdict columns are the decision's (:mod:`frp_assess.results.verdict_words`).
+``report.language``), uses the Italian conventions: decimal comma, semicolon separator, the
+verdict words and check names in Italian.  Its verdict columns are the decision's
+(:mod:`frp_assess.results.verdict_words`).
 """
 
 from __future__ import annotations
@@ -15,7 +18,7 @@ from collections.abc import Callable
 
 from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.results.rounding import fmt_against
-from frp_assess.results.verdict_words import verdict_word
+from frp_assess.results.verdict_words import in_language, verdict_word
 
 #: results.csv columns: each names its statistic and its unit (g: acceleration in g)
 CSV_FIELDS = [
@@ -54,6 +57,7 @@ class CsvStyle:
 
     def __init__(self, language: str) -> None:
         italian = language == "it"
+        self.language = language
         self.delimiter = ";" if italian else ","
         self.decimal = "," if italian else "."
         self.yes, self.no = ("sì", "no") if italian else ("yes", "no")
@@ -68,6 +72,16 @@ class CsvStyle:
 
     def flag(self, x: bool) -> str:
         return self.yes if x else self.no
+
+    def word(self, text: str) -> str:
+        """A verdict word or deciding check in this style's language."""
+        return in_language(text, self.language)
+
+
+def csv_style(results: AssessmentResult) -> CsvStyle:
+    """The style of the report's language (results.json ``report.language``; English
+    without one)."""
+    return CsvStyle(results.report.language if results.report is not None else "en")
 
 
 def _case_columns(results: AssessmentResult, st: CsvStyle) -> Callable[[CaseResult], list[str]]:
@@ -85,8 +99,8 @@ def _case_columns(results: AssessmentResult, st: CsvStyle) -> Callable[[CaseResu
             st.number(c.improvement, 2),
             st.number(c.frp_mass, 1),
             st.number(c.frp_cost, 0),
-            verdict_word(results, c),
-            c.governing_check or "",
+            st.word(verdict_word(results, c)),
+            st.word(c.governing_check or ""),
             "" if margin is None else st.mark(fmt_against(margin, 1.0, margin >= 1.0)),
             "" if c.rank is None else str(c.rank),
             c.failure_mode or "",
@@ -105,7 +119,7 @@ def results_csv(results: AssessmentResult) -> str:
     capacity/demand ratio and the improvement use; the decision's verdict, governing check
     and margin.
     """
-    st = CsvStyle(results.report.language if results.report is not None else "en")
+    st = csv_style(results)
     buf = io.StringIO()
     w = csv.writer(buf, delimiter=st.delimiter, lineterminator="\n")
     w.writerow(CSV_FIELDS)
@@ -132,16 +146,17 @@ def results_csv(results: AssessmentResult) -> str:
 
 
 def spectra_csv(results: AssessmentResult) -> str:
-    """One row per period [s]: the target and mean spectra and each record's [g]."""
+    """One row per period [s]: the target and mean spectra and each record's [g], 6
+    significant digits, in results.csv's conventions (a byte-order mark first; the decimal
+    comma and ";" when the report is Italian)."""
     s = results.seismic
+    st = csv_style(results)
     buf = io.StringIO()
-    w = csv.writer(buf, lineterminator="\n")
+    w = csv.writer(buf, delimiter=st.delimiter, lineterminator="\n")
     w.writerow(
         ["period_s", "target_sa_g", "mean_sa_g"] + [f"{r.name}_sa_g" for r in results.records]
     )
     for i, T in enumerate(s.periods):
-        w.writerow(
-            [f"{T:.6g}", f"{s.target_sa[i]:.6g}", f"{s.mean_sa[i]:.6g}"]
-            + [f"{r.sa[i]:.6g}" for r in results.records]
-        )
-    return buf.getvalue()
+        row = [T, s.target_sa[i], s.mean_sa[i]] + [r.sa[i] for r in results.records]
+        w.writerow([st.mark(f"{x:.6g}") for x in row])
+    return BOM + buf.getvalue()

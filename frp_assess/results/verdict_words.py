@@ -5,7 +5,8 @@ the TUI's ranking): read from results.json's decision only (``passes``, ``recomm
 - :func:`verdict_word`: "recommended", "passes", "fails" or "—" (a file written before the
   decision);
 - :func:`governing_short`: the governing check's short name for a narrow column, with
-  :data:`GOVERNING_LEGEND` saying what each short name is.
+  :data:`GOVERNING_LEGEND` saying what each short name is;
+- :func:`in_language`: a word or check in Italian for results.csv of an Italian report.
 """
 
 from __future__ import annotations
@@ -18,7 +19,9 @@ __all__ = [
     "PASSES",
     "RECOMMENDED",
     "UNDECIDED",
+    "ITALIAN",
     "governing_short",
+    "in_language",
     "is_recommendation",
     "verdict_word",
 ]
@@ -66,6 +69,25 @@ def verdict_word(results: AssessmentResult, case: CaseResult) -> str:
     if not case.passes:
         return FAILS
     return RECOMMENDED if is_recommendation(results, case) else PASSES
+
+
+#: the verdict words and deciding checks in Italian (results.csv of an Italian report); the
+#: words of the report itself are report/catalogue/it.json's
+ITALIAN = {
+    RECOMMENDED: "proposta",
+    PASSES: "supera",
+    FAILS: "non supera",
+    "IDA capacity/demand": "capacità/domanda IDA",
+    "time history SLV": "verifica dinamica non lineare SLV",
+    "time history SLC": "verifica dinamica non lineare SLC",
+    "pivot check": "verifica alla cerniera",
+}
+
+
+def in_language(word: str, language: str) -> str:
+    """A verdict word or deciding check of this module in ``language`` ("it": Italian,
+    :data:`ITALIAN`; else, or a word it does not know, as it is)."""
+    return ITALIAN.get(word, word) if language == "it" else word
 
 
 def governing_short(check: str | None) -> str:

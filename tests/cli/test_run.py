@@ -63,7 +63,7 @@ def test_small_project_end_to_end_and_instant_rerun(tmp_path, capsys):
     assert f"{recommendation_label(typed)}: {recommendation_text(typed)}" in said
     # this small set (3 short records) fails the code's checks: nothing is "recommended"
     assert first["input_code_compliant"] is first["compliance"]["passed"] is False
-    assert "Best ranked (input not code-compliant): " in said and "Recommended:" not in said
+    assert "(input not code-compliant): " in said and "Recommended:" not in said
     assert "INPUT NOT CODE-COMPLIANT" in said
 
     assert main(["run", str(project), "--no-pdf"]) == 0

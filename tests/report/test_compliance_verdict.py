@@ -35,3 +35,17 @@ def test_report_on_non_compliant_input_recommends_nothing():
     assert "Best ranked retrofit." in bad_text
     said = bad_text.replace("no option is recommended", "").replace("nothing is recommended", "")
     assert "recommended" not in said.lower()
+
+
+def test_label_names_no_recommendation_when_the_decision_names_none():
+    """Nothing to install (the wall passes as it is, or no option passes): the console's
+    line is the decision's, never "Recommended: …" (issue 39)."""
+    r = load()
+    r["input_code_compliant"] = True
+    r["retrofit_required"] = False
+    assert recommendation_label(typed(r)) == "Decision"
+    r["retrofit_required"] = True
+    r["recommended"] = None
+    assert recommendation_label(typed(r)) == "Decision"
+    r["input_code_compliant"] = False
+    assert recommendation_label(typed(r)) == "Decision (input not code-compliant)"

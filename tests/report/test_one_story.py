@@ -26,6 +26,7 @@ from pathlib import Path
 import pytest
 
 from frp_assess.cli import main
+from frp_assess.numbers import recommendation_label, recommendation_text
 from frp_assess.report import build_document
 from frp_assess.report.doc_model import Keep, Para, Table, markup_text
 from frp_assess.report.document import load_results
@@ -182,3 +183,49 @@ def test_robustness_and_probability_of_collapse(results, code: str) -> None:
             if word in markup_text(str(h)):
                 assert any(f in markup_text(str(h)) for f in FC_AGS), (name, code, h)
     assert "at the demand a_g·S" not in text and "alla domanda ag·S" not in text
+
+
+def test_robustness_sentence_and_console_line_say_what_the_decision_says(results) -> None:
+    """results.json's ``robustness.summary`` and the console's decision line (``run``:
+    ``recommendation_label: recommendation_text``) name an option as recommended only when
+    the decision does (``recommended`` of a wall with ``retrofit_required``): Norcia's wall
+    passes as it is, so its cheapest passing option is extra margin; when nothing passes the
+    line does not start "Recommended"."""
+    name, r = results
+    rob = r.robustness
+    assert rob is not None
+    line = f"{recommendation_label(r)}: {recommendation_text(r)}"
+    if not r.retrofit_required:
+        assert "stays recommended" not in rob.summary, (name, rob.summary)
+        assert rob.summary.startswith("no retrofit needed"), (name, rob.summary)
+        assert line.startswith("Decision: no retrofit needed"), (name, line)
+    elif r.recommended is None:
+        assert line.startswith("Decision: none of the options passes"), (name, line)
+        assert "recommended" not in rob.summary, (name, rob.summary)
+    else:
+        assert line.startswith(f"Recommended: {r.recommended}"), (name, line)
+        assert rob.summary.count(r.recommended) >= 1, (name, rob.summary)
+    if name == "norcia":  # the example this was seen on (issue 39)
+        assert not r.retrofit_required and r.recommended is not None
+    if name == "nothing-passes":
+        assert r.recommended is None and r.retrofit_required
+
+
+@pytest.mark.parametrize("code", ["en", "it"])
+def test_optional_margin_is_not_called_the_verdict(results, code: str) -> None:
+    """A wall that passes as it is (Norcia): the robust option is extra margin, and the
+    report says so rather than that it "keeps" the verdict."""
+    name, r0 = results
+    r = in_language(r0, code)
+    text = "\n".join(blocks(r)[0])
+    rob = r.robustness
+    assert rob is not None
+    optional = {"en": "the cheapest option for extra margin", "it": "per un margine maggiore"}
+    keeps = {"en": f"{rob.case} keeps it", "it": f"{rob.case} lo mantiene"}
+    if rob.survives and not r.retrofit_required:
+        assert optional[code] in text, (name, code)
+        assert keeps[code] not in text, (name, code)
+    elif rob.survives:
+        assert keeps[code] in text, (name, code)
+    if name == "norcia":  # the example this was seen on
+        assert rob.survives and not r.retrofit_required

@@ -15,7 +15,7 @@ from typing import Any
 
 import pytest
 
-from frp_assess.results.csv_files import BOM, CSV_FIELDS, results_csv
+from frp_assess.results.csv_files import BOM, CSV_FIELDS, results_csv, spectra_csv
 from tests.report.test_report import raw, typed
 from tests.results.decided import decided
 
@@ -85,3 +85,38 @@ def test_language_conventions(language: str, delimiter: str, decimal: str) -> No
     row = next(r for r in out if r["case"] == first["name"])
     assert row["case_design_a_dyn_g"] == f"{first['design_a_dyn']:.3f}".replace(".", decimal)
     assert row["case_frp_mass_kg"] == f"{first['frp_mass']:.1f}".replace(".", decimal)
+
+
+def test_italian_verdict_words_and_checks() -> None:
+    """An Italian report: the verdict words and the governing check in Italian, from the
+    decision set by hand (recommended -> proposta, passes -> supera, fails -> non supera)."""
+    data: dict[str, Any] = decided(raw())
+    data["report"] = {"language": "it", "template": None}
+    out = rows(results_csv(typed(data)), ";")
+    by_name = {c["name"]: c for c in data["cases"]}
+    for row in out:
+        c = by_name[row["case"]]
+        want = (
+            "proposta"
+            if c["name"] == data["recommended"]
+            else ("supera" if c["passes"] else "non supera")
+        )
+        assert row["case_verdict"] == want
+        assert row["case_governing_check"] == "verifica dinamica non lineare SLV"
+
+
+@pytest.mark.parametrize(("language", "delimiter", "decimal"), [("en", ",", "."), ("it", ";", ",")])
+def test_spectra_csv_in_the_same_conventions(language: str, delimiter: str, decimal: str) -> None:
+    """spectra.csv as results.csv: a byte-order mark, and ";" with a decimal comma when the
+    report is Italian; each value the results' at 6 significant digits."""
+    data: dict[str, Any] = decided(raw())
+    data["report"] = {"language": language, "template": None}
+    out = rows(spectra_csv(typed(data)), delimiter)
+    s = data["seismic"]
+    assert len(out) == len(s["periods"])
+    names = [r["name"] for r in data["records"]]
+    assert list(out[0]) == ["period_s", "target_sa_g", "mean_sa_g"] + [f"{n}_sa_g" for n in names]
+    for i, row in enumerate(out):
+        assert row["period_s"] == f"{s['periods'][i]:.6g}".replace(".", decimal)
+        assert row["mean_sa_g"] == f"{s['mean_sa'][i]:.6g}".replace(".", decimal)
+        assert row[f"{names[0]}_sa_g"] == f"{data['records'][0]['sa'][i]:.6g}".replace(".", decimal)
