@@ -113,3 +113,21 @@ def test_uplift_with_the_stress_block_under_the_weight_and_the_loads() -> None:
     for side, tan in ((1, model.params.tan_pos), (-1, model.params.tan_neg)):
         expected = uplift_multiplier(weight, B, H, top, thrusts, side, n0 * x0 / 2)
         assert tan == pytest.approx(expected, rel=1e-12)
+
+
+def test_a_rupture_hands_the_bar_energy_to_the_whole_body() -> None:
+    """Eq. 12 with a carried floor: ½·I_s·θ'₊² = ½·I_s·θ'₋² + U_r(θ_max), I_s the inertia of the
+    wall and the carried mass about the pivot (docs/model.md §12), not I₀ alone."""
+    from frp_assess.dynamics.kernel.jumps import rupture
+    from frp_assess.dynamics.loads import inertia
+    from frp_assess.dynamics.rebars import Rebars
+
+    loads = Loads(top=(TopLoad(10e3, 0.3, True),))
+    wall = Wall(B, H, W_UNIT)
+    bars = Rebars(50e9, 0.02, "centred", 1.0)
+    model = RockingModel(wall, "one-sided", bars, ModelOptions(pivot="edge"), loads)
+    prm = model.params
+    u_r = bars.stored_energy(wall, model.theta_max)  # [J/m]
+    omega, _, _ = rupture(0.3, 1.0, True, True, prm)
+    i_s = inertia(wall, loads, 1)
+    assert 0.5 * i_s * omega**2 == pytest.approx(0.5 * i_s * 0.3**2 + u_r, rel=1e-12)

@@ -76,7 +76,10 @@ def rupture(
     else:
         intact_neg = False
     if prm.rupture_mode == RUPTURE_ENERGY_TRANSFER:  # Eq. 12
-        omega = math.copysign(math.sqrt(omega * omega + 2.0 * prm.rupture_energy), omega)
+        energy = prm.rupture_energy  # U_r/I0; with loads U_r/I_s = (U_r/I0)·p²_s/p²
+        if prm.loaded:
+            energy *= (prm.p2_pos if s > 0.0 else prm.p2_neg) / prm.p2
+        omega = math.copysign(math.sqrt(omega * omega + 2.0 * energy), omega)
     return omega, intact_pos, intact_neg
 
 
