@@ -25,7 +25,7 @@ from numpy.typing import NDArray
 
 from frp_assess import libm
 from frp_assess.dynamics.ida import IdaSettings, ida
-from frp_assess.dynamics.ida_search import search
+from frp_assess.dynamics.ida_search import sample, search
 from frp_assess.dynamics.kernel.fate import tipping_angle
 from frp_assess.dynamics.kernel.simulate import simulate
 from frp_assess.dynamics.rocking import RockingModel
@@ -43,7 +43,9 @@ COLD_NOTICE = (
     "(later runs load it from numba's cache)"
 )
 #: The compiled functions a run calls from Python (every other one is compiled inside them).
-ENTRY_POINTS: tuple[Any, ...] = (search, simulate, tipping_angle, _psa, _relative_acceleration)
+ENTRY_POINTS: tuple[Any, ...] = (
+    search, sample, simulate, tipping_angle, _psa, _relative_acceleration,
+)  # fmt: skip
 
 
 def _has_machine_code(dispatcher: Any) -> bool:
@@ -76,13 +78,16 @@ def warm_up_motions() -> None:
 
 
 def warm_up_rocking() -> None:
-    """The IDA search (with the driver it inlines), the driver with its history and the
-    tipping angle compiled (or loaded): frp_assess/dynamics.  The kernel's arguments have the
-    same types with bars or without (:class:`~.kernel.params.KernelParams`: numbers)."""
+    """The IDA's two searches (the effective collapse intensity's sampling, the default, and
+    the first collapse's hunt, which the paper's projects pin; each with the driver it
+    inlines), the driver with its history and the tipping angle compiled (or loaded):
+    frp_assess/dynamics.  The kernel's arguments have the same types with bars or loads or
+    without (:class:`~.kernel.params.KernelParams`: numbers)."""
     dt, acc = _tiny_record()
     model = RockingModel(Wall(thickness=0.25, height=4.5, unit_weight=18e3), "one-sided")
     model.run(acc, dt, history=True)
     ida(model, acc, dt, IdaSettings())
+    ida(model, acc, dt, IdaSettings(capacity="first-collapse"))
 
 
 def warm_up() -> None:
