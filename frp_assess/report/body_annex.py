@@ -219,7 +219,7 @@ def annex(results: Results, lang: Lang) -> list[Block]:
     widths = [x * mm for x in (40, 18, 18, 14, 30, 18, 12, 24)]
     out.append(grid(scatter_table(results, lang), widths, wrap=(0, 4), numeric_from=1,
                     small=True))  # fmt: skip
-    out.append(markup(lang.t("annex.scatter.note"), "caption"))
+    out.append(markup(lang.t(ida_words.rule_key(results, lang, "annex.scatter.note")), "caption"))
     sens = adt.sensitivity_table(results, lang)
     if sens is not None and results.sensitivity is not None:
         label = next((case_label(c, lang) for c in results.cases

@@ -162,9 +162,15 @@ def options(results: Results) -> list[Block]:
     out.append(
         para(
             "Statistics of a_dyn over the records (a record without collapse up to C_max "
-            "enters at its lower bound C_max·PGA). Fragility: a lognormal curve fitted by "
-            "maximum likelihood to the collapse accelerations (records without collapse "
-            "right-censored); P(collapse) is its value at the demand FC·a_g·S, the demand of "
+            "enters at its lower bound). Fragility: a lognormal curve fitted by "
+            + (
+                "maximum likelihood to the fraction of records under which the wall fell at "
+                "each intensity of the IDA's ladder"
+                if ida_words.is_effective(results)
+                else "maximum likelihood to the collapse accelerations (records without "
+                "collapse right-censored)"
+            )
+            + "; P(collapse) is its value at the demand FC·a_g·S, the demand of "
             "the IDA check and of the robustness statement. With few records "
             "the fit is coarse: read it as the scatter of the result, not as a site "
             "probability.",

@@ -48,18 +48,37 @@ PAPERS = {"en": "paper's convention", "it": "convenzione dell'articolo"}
 SETTINGS_ROW = {"en": "capacity of a record", "it": "capacità di un accelerogramma"}
 #: words that only the effective rule's description uses
 EFFECTIVE_ONLY = {
-    "en": ("effective collapse intensity", "Sampling.", "numerical spread", "windows below"),
+    "en": (
+        "effective collapse intensity",
+        "Sampling.",
+        "numerical spread",
+        "windows below",
+        "intensity of the IDA's ladder",
+    ),
     "it": (
         "intensità di collasso efficace",
         "Campionamento.",
         "dispersione numerica",
         "finestre di",
+        "intensità della scala",
     ),
 }
 #: words that only describe the first collapse as the capacity (today's paper wording)
 FIRST_ONLY = {
-    "en": ("C is the first collapse", "first collapse met by the search", "until the first"),
-    "it": ("C è il primo collasso", "primo collasso incontrato dalla ricerca", "fino al primo"),
+    "en": (
+        "C is the first collapse",
+        "first collapse met by the search",
+        "until the first",
+        "to the collapse accelerations",
+        "at the smallest multiplier",
+    ),
+    "it": (
+        "C è il primo collasso",
+        "primo collasso incontrato dalla ricerca",
+        "fino al primo",
+        "alle accelerazioni di collasso",
+        "al moltiplicatore minore",
+    ),
 }
 #: the paper's wording of the IDA, kept for first-collapse runs
 PAPER_WORDING = {
