@@ -65,7 +65,7 @@ def as_is(results: Results, lang: Lang) -> list[Block]:
     out: list[Block] = [h1(lang.t("h.as_is")), h2(lang.t("h.as_is.ida"))]
     records = ida_words.records_table(urm, results, lang)
     widths = (50, 28, 28, 28, 28) if len(records.header) == 5 else (34, 18, 28, 20, 16, 30, 28)
-    out.append(grid(records, [x * mm for x in widths], wrap=(0, 2, 5, 6)))
+    out.append(grid(records, [x * mm for x in widths], wrap=(0,)))
     out.append(markup(ida_words.records_caption(results, lang), "caption"))
     stat = lang.t("model.design.mean" if results.design_is_mean else "model.design.least")
     lb = urm.lower_bound

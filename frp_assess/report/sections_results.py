@@ -44,7 +44,7 @@ def unreinforced(results: Results) -> list[Block]:
     out.append(h2("4.2  Incremental dynamic analysis, record by record"))
     records = ida_words.records_table(urm, results, EN)
     widths = (30, 28, 40, 28, 24) if len(records.header) == 5 else (30, 18, 30, 20, 14, 30, 28)
-    out.append(grid(records, [x * mm for x in widths], wrap=(0, 2, 5, 6)))
+    out.append(grid(records, [x * mm for x in widths], wrap=(0,)))
     out.append(markup(ida_words.records_caption(results, EN), "caption"))
     out.append(key_value(tb.case_summary_rows(results, urm), sub_values=True))
     out.append(h2("4.3  Dynamic assessment next to the code kinematic check"))
