@@ -14,8 +14,9 @@ from frp_assess.text_safety import Markup
 
 Results = AssessmentResult
 
-#: the early stop of the ladder, C_k/C_first ≥ 1.5 (frp_assess/dynamics/effective.py
-#: ``EARLY_STOP_BAND``; results.json does not carry it and the report reads nothing else)
+#: the early stop of the ladder: collapsed without a break over this ratio of multipliers
+#: (frp_assess/dynamics/effective.py ``EARLY_STOP_BAND``; results.json does not carry it and
+#: the report reads nothing else, so it is repeated here)
 EARLY_STOP_BAND = 1.5
 #: the sensitivity row of the numerical spread (results.json ``sensitivity.rows[].variant``)
 SPREAD_PREFIX = "numerical spread"
