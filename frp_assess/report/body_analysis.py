@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from reportlab.lib.units import mm
 
-from frp_assess.report import charts
+from frp_assess.report import charts, ida_words
 from frp_assess.report.charts import localize_drawing
 from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import cond_break, esc, figure, grid, h1, h2, keep, key_value, markup
@@ -164,12 +164,13 @@ def seismic(results: Results, lang: Lang) -> list[Block]:
 
 def method(results: Results, lang: Lang) -> list[Block]:
     out: list[Block] = [h1(lang.t("h.method"))]
-    for key in ("method.local", "method.rocking", "method.ida"):
+    for key in ("method.local", "method.rocking"):
         out.append(markup(lang.t(key)))
+    out += [markup(text) for text in ida_words.method_paragraphs(results, lang)]
     out.append(h2(lang.t("h.method.equations")))
     for i in range(1, 7):
         out.append(markup(f"<b>{lang.t(f'eq.{i}.title')}.</b>"))
-        out.append(markup(lang.t(f"eq.{i}.body"), "equation"))
+        out.append(markup(lang.t(ida_words.rule_key(results, lang, f"eq.{i}.body")), "equation"))
     out.append(markup(lang.t("method.symbols"), "small"))
     m = results.model
     rows = [
@@ -185,11 +186,7 @@ def method(results: Results, lang: Lang) -> list[Block]:
         [lang.t("model.tolerance"), f"{m.integration.tolerance:.0e}".replace("e-0", "e-")],
         [lang.t("model.ida.capacity"), lang.t(f"ida.capacity.{m.ida.capacity}")
          if lang.has(f"ida.capacity.{m.ida.capacity}") else esc(m.ida.capacity)],
-        [lang.t("model.ida"), lang.t(
-            "model.ida.value.effective" if m.ida.capacity == "effective" else "model.ida.value",
-            s=lang.gnum(m.ida.ladder_ratio if m.ida.capacity == "effective" else m.ida.step_ratio),
-            tol=lang.gnum(m.ida.tolerance),
-            cmax=lang.gnum(m.ida.max_multiplier), offset=lang.gnum(m.ida.offset))],
+        [lang.t("model.ida"), ida_words.settings_value(results, lang)],
         [lang.t("model.target"), lang.gnum(m.target)],
         [lang.t("model.design_value"),
          lang.t("model.design.mean" if results.design_is_mean else "model.design.least")],

@@ -10,7 +10,7 @@ from collections.abc import Callable
 
 from reportlab.lib.units import mm
 
-from frp_assess.report import history_section, pivot_section
+from frp_assess.report import history_section, ida_words, pivot_section
 from frp_assess.report.body_front import position_words
 from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import cond_break, esc, grid, h1, h2, markup
@@ -226,7 +226,7 @@ def annex(results: Results, lang: Lang) -> list[Block]:
     widths = [x * mm for x in (40, 18, 18, 14, 30, 18, 12, 24)]
     out.append(grid(scatter_table(results, lang), widths, wrap=(0, 4), numeric_from=1,
                     small=True))  # fmt: skip
-    out.append(markup(lang.t("annex.scatter.note"), "caption"))
+    out.append(markup(lang.t(ida_words.rule_key(results, lang, "annex.scatter.note")), "caption"))
     sens = adt.sensitivity_table(results, lang)
     if sens is not None and results.sensitivity is not None:
         label = next((case_label(c, lang) for c in results.cases
@@ -235,7 +235,11 @@ def annex(results: Results, lang: Lang) -> list[Block]:
         out.append(grid(sens, [x * mm for x in (58, 22, 20, 24, 26, 24)], wrap=(0,),
                         numeric_from=1, small=True))  # fmt: skip
         out += [markup(line) for line in robustness_lines(results, lang)]
-        out.append(markup(lang.t("annex.sensitivity.note", case=esc(label)), "caption"))
+        note = ida_words.rule_key(results, lang, "annex.sensitivity.note")
+        out.append(markup(lang.t(note, case=esc(label)), "caption"))
+        spread = ida_words.spread_caption(results, lang)
+        if spread is not None:
+            out.append(markup(spread, "caption"))
     checks = checks_table(results, lang)
     if checks is not None:
         out += [cond_break(60 * mm), heading("annex.h.checks")]

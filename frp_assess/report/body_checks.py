@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from reportlab.lib.units import mm
 
-from frp_assess.report import charts
+from frp_assess.report import charts, ida_words
 from frp_assess.report.body_closing import decision_lines
 from frp_assess.report.body_front import option_words, position_words
 from frp_assess.report.charts import localize_drawing
@@ -38,20 +38,6 @@ def decision(results: Results) -> object | None:
     return getattr(results, "decision", None)
 
 
-def _records_table(case: CaseResult, lang: Lang) -> TableData:
-    n = lang.num
-    header = [lang.t("col.record"), "PGA [g]", "C [-]", A_DYN, "q [-]"]
-    rows = []
-    for r in case.records:
-        if r.collapse_multiplier is None:
-            c = lang.t("word.no_collapse")
-            a = q = "—"
-        else:
-            c, a, q = n(r.collapse_multiplier, 3), n(r.a_dyn, 3), n(r.q, 2)
-        rows.append([r.record, n(r.pga, 3), c, a, q])
-    return TableData(header, rows)
-
-
 def _checks_lines(checks: CaseChecks, lang: Lang) -> str:
     parts: list[tuple[str, float | None, bool]] = [
         (lang.t("check.linear"), checks.linear.zeta_e, checks.linear.passed)
@@ -77,8 +63,10 @@ def as_is(results: Results, lang: Lang) -> list[Block]:
     n = lang.num
     target = results.model.target
     out: list[Block] = [h1(lang.t("h.as_is")), h2(lang.t("h.as_is.ida"))]
-    out.append(grid(_records_table(urm, lang), [50 * mm, 28 * mm, 28 * mm, 28 * mm, 28 * mm],
-                    wrap=(0,)))  # fmt: skip
+    records = ida_words.records_table(urm, results, lang)
+    widths = (50, 28, 28, 28, 28) if len(records.header) == 5 else (34, 18, 28, 20, 16, 30, 28)
+    out.append(grid(records, [x * mm for x in widths], wrap=(0,)))
+    out.append(markup(ida_words.records_caption(results, lang), "caption"))
     stat = lang.t("model.design.mean" if results.design_is_mean else "model.design.least")
     lb = urm.lower_bound
     rows = [

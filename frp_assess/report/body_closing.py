@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from frp_assess.report import loads_section
+from frp_assess.report import ida_words, loads_section
 from frp_assess.report.body_front import option_words
 from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import esc, h1, h2, markup
@@ -99,7 +99,8 @@ def appendix(results: Results, lang: Lang) -> list[Block]:
     out.append(markup("• " + lang.t("assume.pivot.crushing" if rule == "crushing"
                                     else "assume.pivot.edge"), "bullet"))  # fmt: skip
     for i in range(1, 8):
-        out.append(markup("• " + lang.t(f"assume.{i}"), "bullet"))
+        key = ida_words.rule_key(results, lang, f"assume.{i}")
+        out.append(markup("• " + lang.t(key), "bullet"))
     out += loads_section.assumptions(results, lang)  # docs/model.md §12: none without loads
     out.append(h2(lang.t("h.appendix.references")))
     for i in range(1, 11):

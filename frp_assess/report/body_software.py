@@ -20,6 +20,7 @@ from dataclasses import dataclass, replace
 
 from reportlab.lib.units import mm
 
+from frp_assess.report import ida_words
 from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import esc, grid, h1, h2, keep, key_value, markup
 from frp_assess.report.lang import Lang
@@ -79,7 +80,8 @@ def section(results: Results, lang: Lang) -> list[Block]:
     out.append(key_value(rows))
     out.append(h2(lang.t("h.sw.basis")))
     for i in range(1, 5):
-        out.append(markup("• " + lang.t(f"sw.basis.{i}"), "bullet"))
+        key = ida_words.rule_key(results, lang, f"sw.basis.{i}")
+        out.append(markup("• " + lang.t(key), "bullet"))
     out.append(h2(lang.t("h.sw.field")))
     out.append(markup(lang.t("sw.field")))
     out.append(h2(lang.t("h.sw.validation")))

@@ -10,6 +10,7 @@ from frp_assess.report import charts
 from frp_assess.report.doc_model import Block, with_subscripts
 from frp_assess.report.flow import esc, figure, keep, markup
 from frp_assess.report.formats import TableData
+from frp_assess.report.ida_words import rule_key
 from frp_assess.report.lang import Lang
 from frp_assess.report.tables_inputs import rupture_strain_words
 from frp_assess.results.model import AssessmentResult, HistoryRun
@@ -77,7 +78,7 @@ def blocks(results: Results, lang: Lang, table: object, figure_no: int) -> list[
     if not gov or not gov.runs:
         return [markup(lang.t("hist.none"))]
     rs = gov.rupture_strain
-    lead = lang.t("hist.lead", case=esc(gov.case), record=esc(gov.record))
+    lead = lang.t(rule_key(results, lang, "hist.lead"), case=esc(gov.case), record=esc(gov.record))
     if rs is not None:
         rule = with_subscripts(esc(rupture_strain_words(results)))
         lead += " " + lang.t("hist.rupture", rule=rule,
@@ -87,6 +88,6 @@ def blocks(results: Results, lang: Lang, table: object, figure_no: int) -> list[
     if chart is not None:
         if lang.code != "en":
             charts.relabel(chart, lambda text: chart_label(text, lang))
-        caption = markup(lang.t("hist.caption", n=figure_no), "caption")
+        caption = markup(lang.t(rule_key(results, lang, "hist.caption"), n=figure_no), "caption")
         out.append(keep([figure(chart), caption]))
     return out

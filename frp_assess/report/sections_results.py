@@ -6,7 +6,7 @@ from __future__ import annotations
 from reportlab.lib.units import mm
 
 from frp_assess.report import annex_design_tables as adt
-from frp_assess.report import body_annex, charts, floor_section, history_section
+from frp_assess.report import body_annex, charts, floor_section, history_section, ida_words
 from frp_assess.report import tables as tb
 from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import (
@@ -42,15 +42,10 @@ def unreinforced(results: Results) -> list[Block]:
     ]
     out.append(key_value(tb.wall_property_rows(results), sub_values=True))
     out.append(h2("4.2  Incremental dynamic analysis, record by record"))
-    out.append(grid(tb.case_records_table(urm), [30 * mm, 28 * mm, 40 * mm, 28 * mm, 24 * mm]))
-    out.append(
-        para(
-            "C: the smallest multiplier of the record that overturns the wall (first collapse); "
-            "a_dyn = C·PGA; q = a_dyn / a_RM. 'no collapse ≤ C_max': the wall did not overturn "
-            "up to the largest multiplier tried.",
-            "caption",
-        )
-    )
+    records = ida_words.records_table(urm, results, EN)
+    widths = (30, 28, 40, 28, 24) if len(records.header) == 5 else (30, 18, 30, 20, 14, 30, 28)
+    out.append(grid(records, [x * mm for x in widths], wrap=(0,)))
+    out.append(markup(ida_words.records_caption(results, EN), "caption"))
     out.append(key_value(tb.case_summary_rows(results, urm), sub_values=True))
     out.append(h2("4.3  Dynamic assessment next to the code kinematic check"))
     out.append(
@@ -167,9 +162,15 @@ def options(results: Results) -> list[Block]:
     out.append(
         para(
             "Statistics of a_dyn over the records (a record without collapse up to C_max "
-            "enters at its lower bound C_max·PGA). Fragility: a lognormal curve fitted by "
-            "maximum likelihood to the collapse accelerations (records without collapse "
-            "right-censored); P(collapse) is its value at the demand FC·a_g·S, the demand of "
+            "enters at its lower bound). Fragility: a lognormal curve fitted by "
+            + (
+                "maximum likelihood to the fraction of records under which the wall fell at "
+                "each intensity of the IDA's ladder"
+                if ida_words.is_effective(results)
+                else "maximum likelihood to the collapse accelerations (records without "
+                "collapse right-censored)"
+            )
+            + "; P(collapse) is its value at the demand FC·a_g·S, the demand of "
             "the IDA check and of the robustness statement. With few records "
             "the fit is coarse: read it as the scatter of the result, not as a site "
             "probability.",
@@ -186,15 +187,23 @@ def options(results: Results) -> list[Block]:
         out.append(
             para(
                 f"{results.sensitivity.case} under the conventions the paper leaves open, "
-                "one at a time (docs/model.md §3), the IDA's hunt at the square root of its "
-                "step ratio (a finer hunt can meet a lower collapse window, docs/model.md "
-                "§5.1), and a ±10 % change of the bars' elastic modulus; the same records, "
+                "one at a time (docs/model.md §3), "
+                + (
+                    "the IDA's ladder shifted by half a step (numerical spread)"
+                    if ida_words.is_effective(results)
+                    else "the IDA's hunt at the square root of its step ratio (a finer hunt can "
+                    "meet a lower collapse window)"
+                )
+                + ", and a ±10 % change of the bars' elastic modulus; the same records, "
                 "the design value of a_dyn. The capacity/demand column is the IDA check's "
                 "alone; the deciding checks' verdict and governing margin under each "
                 "convention are in the last two columns.",
                 "caption",
             )
         )
+        spread = ida_words.spread_caption(results, EN)
+        if spread is not None:
+            out.append(markup(spread, "caption"))
         out += [markup(line) for line in robustness_lines(results, EN)]
     return out
 

@@ -12,6 +12,8 @@ from frp_assess.report.formats import (
     fmt_num,
     pass_fail,
 )
+from frp_assess.report.ida_words import settings_value
+from frp_assess.report.lang import Lang
 from frp_assess.results.model import AssessmentResult
 from frp_assess.text_safety import Markup
 
@@ -150,9 +152,7 @@ def model_rows(results: Results) -> list[list[str]]:
         rows.append(["design value of a_dyn", str(m.design_value)])
     rows += [
         ["IDA capacity of a record", CAPACITY_WORDS.get(ida.capacity, ida.capacity)],
-        ["IDA step ratio s", f"{ida.step_ratio:g}"],
-        ["IDA bisection tolerance", f"{ida.tolerance:g} (relative)"],
-        ["IDA largest multiplier C_max", f"{ida.max_multiplier:g} × C₀"],
+        ["IDA sampling", settings_value(results, Lang("en"))],
         [
             "installation cost",
             f"{fmt_cost(results.costs.installation_per_metre)} {cur} per metre of wall "

@@ -16,6 +16,7 @@ import math
 import re
 
 from frp_assess.report.flow import esc
+from frp_assess.report.ida_words import collapse_window_line, rule_key
 from frp_assess.report.lang import Lang
 from frp_assess.results.model import AssessmentResult, CaseResult
 
@@ -122,9 +123,9 @@ def robustness_lines(results: Results, lang: Lang) -> list[str]:
     if rob is None:
         return []
     case = results.case(rob.case)
-    out: list[str] = []
+    out: list[str] = [line for line in [collapse_window_line(results, lang)] if line]
     if rob.p_collapse is not None:
-        out.append(lang.t("robust.p_collapse", case=esc(rob.case),
+        out.append(lang.t(rule_key(results, lang, "robust.p_collapse"), case=esc(rob.case),
                           x=lang.num(rob.design_intensity, 3),
                           p=probability_text(rob.p_collapse, lang)))  # fmt: skip
     if rob.survives:  # a wall that passes as it is: the case is margin, not a recommendation
