@@ -324,6 +324,17 @@ def inputs_from_project(
             line=None if lines is None else line_of(lines, ("wall", "thickness")),
             key="wall.thickness",
         )
+    if project.wall.loads is not None:
+        try:  # the base and the uplift with the loads (docs/model.md §12), before any output
+            inputs.model_for(None)
+        except InputError as exc:
+            loc = tuple(exc.key.split(".")) if exc.key else ("wall", "loads")
+            raise InputError(
+                exc.message,
+                file=file or input_file or None,
+                line=None if lines is None else line_of(lines, loc),
+                key=exc.key,
+            ) from None
     return laid_out(project, inputs, file=file or input_file or None, lines=lines)
 
 

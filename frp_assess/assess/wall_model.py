@@ -114,10 +114,24 @@ def rocking_model(
 
     Raises:
         InputError: on ``key``, a wall that is not taller than thick, or a base that cannot
-            carry the wall's weight (module docstring).
+            carry the wall's weight (module docstring); on the loads' keys, a base that cannot
+            carry the loads too, or thrusts that tip the wall at rest about the crushing pivot.
     """
     problem = slenderness_problem(wall.thickness, wall.height) or base_problem(wall)
     if problem is not None:
         raise InputError(problem, key=key)
     rebars = None if bars is None else bars.rebars()
-    return RockingModel(wall.wall(), mechanism, rebars, options, loads)
+    try:
+        model = RockingModel(wall.wall(), mechanism, rebars, options, loads)
+    except ValueError as exc:  # with loads: the base cannot carry N₀ = W + Σ P
+        raise InputError(str(exc), key="wall.loads.top") from None
+    if loads and not model.a_rm > 0.0:
+        # the schema refuses thrusts that tip the wall about its edge; the stress block of the
+        # crushing pivot moves the pivot inside the wall and may do it too (docs/model.md §12)
+        raise InputError(
+            "expected loads the wall stands against at rest, found a_RM = "
+            f"{model.a_rm_g:.4g} g <= 0 with the stress block at its base (N0*x0/2 taken from "
+            "the moments that hold it): the thrusts tip the wall without an earthquake",
+            key="wall.loads.thrust",
+        )
+    return model

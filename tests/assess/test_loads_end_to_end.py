@@ -38,3 +38,28 @@ def test_a_loaded_facade_runs_with_the_loads_in_the_time_histories(tmp_path: Pat
     (record,) = data["cases"][0]["records"]
     assert record["q"] == pytest.approx(record["a_dyn"] / alpha0, rel=1e-9)  # both in g
     assert any(w.startswith("wall.loads.ties: the time histories") for w in data["input_warnings"])
+
+
+def test_thrusts_that_tip_the_wall_about_the_crushing_pivot_are_one_line(tmp_path: Path) -> None:
+    """The schema refuses thrusts that tip the wall about its edge; with the stress block the
+    pivot is x₀/2 inside the wall (docs/model.md §12): f_m = 0.5 MPa, LC1 (FC 1.35), N₀ = 43.2
+    + 10 = 53.2 kN/m, x₀ = 53.2/(0.85·370) = 0.169 m, N₀·x₀/2 = 4.50 kNm/m; the moments that
+    hold it, 8.64 + 3.0 − 4.50 = 7.14 kNm/m, fall below the thrust's 2·5.5 = 11 kNm/m:
+    `validate` and `run` say so in one located line (exit 2), and nothing is written."""
+    project = tmp_path / "tip.yaml"
+    project.write_text(
+        "project: {name: Tip}\n"
+        "wall: {thickness: 0.4, height: 6.0, unit_weight: 18, compressive_strength: 0.5,\n"
+        "       mechanism: one-sided,\n"
+        "       loads: {top: [{load: 10.0, distance: 0.3}], thrust: [{force: 2.0, height: 5.5}]}}\n"
+        "seismic:\n"
+        "  spectrum: {type: preset, name: A2}\n"
+        "  records: {artificial: {count: 1, seed: 1, duration: 13.5, dt: 0.05}}\n"
+        "interventions:\n"
+        "  - {material: GFRP, position: centred, ratio: 1}\n",
+        encoding="utf-8",
+    )
+    assert main(["validate", str(project)]) == 2
+    out = tmp_path / "out"
+    assert main(["run", str(project), "--out", str(out), "--no-pdf"]) == 2
+    assert not out.exists()
