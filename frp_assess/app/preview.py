@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from frp_assess.assess.from_project import material_of, spectrum_of
+from frp_assess.assess.from_project import loads_of, material_of, spectrum_of
 from frp_assess.assess.inputs import CostSettings
 from frp_assess.assess.quantities import frp_quantity
 from frp_assess.assess.runner import design_value_rule
@@ -63,14 +63,16 @@ class WallDerived:
 def wall_derived(spec: WallSpec, pivot: PivotRule = "crushing", level: str = "LC1") -> WallDerived:
     """The derived constants of the unreinforced wall's model for a valid ``wall`` block, the
     pivot rule and the knowledge level (its FC gives f_d): the model ``run`` builds
-    (:mod:`frp_assess.assess.wall_model`).  Raises InputError when the base cannot carry
-    the wall."""
+    (:mod:`frp_assess.assess.wall_model`), with the loads it carries (a_RM with them,
+    docs/model.md §12).  Raises InputError when the base cannot carry the wall and its loads,
+    or when the loads tip it at rest."""
     f_d = case_design_strength(spec.masonry, level, spec.compressive_strength)
     model = rocking_model(
         WallInput(spec.thickness, spec.height, spec.unit_weight_kn, f_d),
         spec.mechanism,
         None,
         ModelOptions(pivot=pivot),
+        loads=loads_of(spec.loads).loads(),
     )
     w = model.wall
     depth = weight_depth(w) if pivot == "crushing" else 0.0

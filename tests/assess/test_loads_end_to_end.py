@@ -63,3 +63,22 @@ def test_thrusts_that_tip_the_wall_about_the_crushing_pivot_are_one_line(tmp_pat
     out = tmp_path / "out"
     assert main(["run", str(project), "--out", str(out), "--no-pdf"]) == 2
     assert not out.exists()
+
+
+def test_the_tui_preview_shows_the_a_rm_the_run_computes_with_the_loads() -> None:
+    """The derived values shown while the project is typed (app/preview.py) come from the
+    model the run builds: with loads, a_RM of §12, not the bare wall's (B − x_W)/H."""
+    from frp_assess.app.preview import wall_derived
+    from frp_assess.app.project import load_project
+    from frp_assess.assess.from_project import load_inputs
+
+    project = load_project(FIXTURE).project
+    shown = wall_derived(project.wall, project.analysis.pivot, project.code_check.knowledge_level)
+    run = load_inputs(FIXTURE, warn=None).model_for(None).a_rm_g
+    assert shown.a_rm == pytest.approx(run, rel=1e-12)
+    bare = wall_derived(
+        project.wall.model_copy(update={"loads": None}),
+        project.analysis.pivot,
+        project.code_check.knowledge_level,
+    )
+    assert bare.a_rm > 2 * shown.a_rm  # the floor's inertia and the thrust lower it
