@@ -73,13 +73,29 @@ def tipping_angle(k_s: float, prm: KernelParams) -> float:
         return math.atan2(prm.sin_a, prm.cos_a - k_s)
     if k_s == 0.0:
         return prm.alpha_x
+    return first_zero(1.0, k_s, prm)
+
+
+@njit(cache=True, nogil=True)
+def _restoring_of(q: float, side: float, k_s: float, prm: KernelParams) -> float:
+    """The static restoring moment of ``side`` at |θ| = q: :func:`restoring` for the wall
+    alone, :func:`loaded_restoring` with loads."""
+    if prm.loaded:
+        return loaded_restoring(q, side, k_s, prm)
+    return restoring(q, k_s, prm)
+
+
+@njit(cache=True, nogil=True)
+def first_zero(side: float, k_s: float, prm: KernelParams) -> float:
+    """The first zero of the side's static restoring moment in (0, π/2] [rad]: bracketed on a
+    grid and bisected; π/2 when it stays positive."""
     lo = 0.0
     for i in range(1, _TIP_GRID + 1):
         hi = _HALF_PI * i / _TIP_GRID
-        if restoring(hi, k_s, prm) <= 0.0:
+        if _restoring_of(hi, side, k_s, prm) <= 0.0:
             for _ in range(200):
                 mid = 0.5 * (lo + hi)
-                if restoring(mid, k_s, prm) > 0.0:
+                if _restoring_of(mid, side, k_s, prm) > 0.0:
                     lo = mid
                 else:
                     hi = mid
@@ -212,21 +228,7 @@ def loaded_restoring(q: float, side: float, k_s: float, prm: KernelParams) -> fl
 @njit(cache=True, nogil=True)
 def loaded_tipping_angle(side: float, k_s: float, prm: KernelParams) -> float:
     """θ*_s: the first zero of :func:`loaded_restoring` in (0, π/2] [rad] (π/2: none)."""
-    lo = 0.0
-    for i in range(1, _TIP_GRID + 1):
-        hi = _HALF_PI * i / _TIP_GRID
-        if loaded_restoring(hi, side, k_s, prm) <= 0.0:
-            for _ in range(200):
-                mid = 0.5 * (lo + hi)
-                if loaded_restoring(mid, side, k_s, prm) > 0.0:
-                    lo = mid
-                else:
-                    hi = mid
-                if hi - lo <= 1e-15:
-                    break
-            return 0.5 * (lo + hi)
-        lo = hi
-    return _HALF_PI
+    return first_zero(side, k_s, prm)
 
 
 @njit(cache=True, nogil=True)
