@@ -1,4 +1,4 @@
-"""The effective collapse intensity of a record (docs/model.md §11; MODEL.md §11).
+"""The effective collapse intensity of a record (docs/model.md §11).
 
     a_c = C₀ · exp( ∫ from ln C₀ to ln C_max of S(C) d(ln C) )
 

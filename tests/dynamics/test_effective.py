@@ -1,7 +1,7 @@
 """The effective collapse intensity of docs/model.md §11 on stand-in models whose collapse set
 S(C) is prescribed, so that the integral a_c = C₀·exp(∫ S d ln C) is known in closed form:
 a_c = C₀·exp(ln(C_max/C₀) − Σ ln(hi/lo) over the collapse windows within [C₀, C_max])
-(MODEL.md §11, "the rule"; hand calculations written in each test)."""
+(docs/model.md §11.1, the rule; hand calculations written in each test)."""
 
 from __future__ import annotations
 
@@ -85,7 +85,7 @@ def test_shift_and_refinement_converge_to_the_integral() -> None:
     """Over 12 stand-in records with about eight windows each (module docstring for the exact
     integral): as the ladder is refined (r = 1.05, 1.05^½, 1.05^¼) the case mean over eight
     offsets approaches the exact integral's mean and its scatter over the offsets shrinks;
-    at 1.05^¼ = 1.0123 (the resolution of the oracle's scans, MODEL.md §11) both are within
+    at 1.05^¼ = 1.0123 (the resolution of the fine scans of docs/model.md §11.2) both are within
     1 %.  The first collapse of §5 stays 25 % below, whatever the step: not a limit."""
     bands = [chaotic_bands(seed) for seed in range(12)]
     truth = np.mean([exact(b, 100.0 * C0) for b in bands])

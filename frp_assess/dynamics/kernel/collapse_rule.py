@@ -1,4 +1,4 @@
-"""The collapse rule's verdict (docs/model.md §3.5; MODEL.md §3, "Collapse"): when the wall's
+"""The collapse rule's verdict (docs/model.md §3.5): when the wall's
 fate is decided, and which.
 
 The driver (:mod:`.simulate`) asks :func:`collapse_verdict` after every event it located,

@@ -9,7 +9,7 @@ Each copy costs compilation time (the whole kernel is compiled once per cache), 
 function is inlined only into the callers on the path of every step, nowhere else.
 Inlining changes no arithmetic: the results are the same bit for bit.
 
-The driver's own pieces, written as functions a reader can follow against MODEL.md §3–4,
+The driver's own pieces, written as functions a reader can follow against docs/model.md §3–4,
 are inlined with ``inline="always"`` (they are called from the driver and from each other
 only): :func:`.step_control.try_step` and :func:`.step_scan.scan_step` on the path of every
 step, :func:`.collapse_rule.collapse_verdict`, the regime's helpers of :mod:`.state`.

@@ -1,7 +1,7 @@
 """The time-stepping driver: one wall under one scaled record (paper Eq. 10, docs/model.md §3–4).
 
 A newcomer's map: :func:`simulate` is the loop over the record's sample intervals, and
-each piece it calls is one paragraph of MODEL.md §3–4.
+each piece it calls is one paragraph of docs/model.md §3–4.
 
 * The input is the record (plus ``n_tail`` zero samples: :class:`.state.Ground`).  Between
   two samples the ground acceleration is linear; steps never cross a sample, so every step

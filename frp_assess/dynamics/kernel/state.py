@@ -5,7 +5,7 @@ it moves is its :class:`Regime`: the side it rocks on, whether it is at rest, wh
 intact.  The regime is frozen inside a step (the steppers take its K_s) and changes only at
 the events, by the jumps of :mod:`.jumps`.  Every new regime is built here, by the functions
 below, so that a variable added to the regime (a tie's plastic elongation, a tie lost:
-MODEL.md §12) is added in this file and in the jumps that change it, nowhere else.
+docs/model.md §12) is added in this file and in the jumps that change it, nowhere else.
 
 :class:`Buffers` holds the arrays the caller hands the driver for what it returns beyond
 its :class:`~.simulate.Outcome` (the history, the first ruptures); :class:`Ground` the input.

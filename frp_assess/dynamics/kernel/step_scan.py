@@ -10,7 +10,7 @@ The event kinds are the codes below; :func:`first_event` finds each one's crossi
 driver locates the earliest (:func:`.events.locate_level`), :func:`.jumps.jump` applies its
 jump and :func:`.collapse_rule.collapse_verdict` judges it.  A new kind of event (a tie that
 yields or is
-lost: MODEL.md §12) is a code here, its level in :func:`first_event` and its jump.
+lost: docs/model.md §12) is a code here, its level in :func:`first_event` and its jump.
 """
 
 from __future__ import annotations
