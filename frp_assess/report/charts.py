@@ -183,12 +183,13 @@ def options_chart(
     if rec is not None:
         px, py = ax.tx(rec.frp_mass), ax.ty(getattr(rec, quantity))
         d.add(Circle(px, py, 6.5, fillColor=None, strokeColor=st.INK, strokeWidth=0.9))
-        items.append(
-            (
-                "recommended (ringed)" if results.input_code_compliant else "best ranked (ringed)",
-                {"color": st.INK, "width": 0, "marker": "o", "hollow": True},
-            )
-        )
+        if not results.input_code_compliant:
+            ringed = "best ranked (ringed)"
+        elif not results.retrofit_required:  # the wall passes: optional margin, not advice
+            ringed = "optional margin (ringed)"
+        else:
+            ringed = "recommended (ringed)"
+        items.append((ringed, {"color": st.INK, "width": 0, "marker": "o", "hollow": True}))
     legend(d, x0 + w + 14, y0 + h - FS, items)
     note_y = y0 + h - FS - (len(items) + 0.6) * FS * 1.55
     d.add(_text(x0 + w + 14, note_y, ratio_note(groups), color=st.MUTED))

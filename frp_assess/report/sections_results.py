@@ -120,8 +120,8 @@ def options(results: Results) -> list[Block]:
                 para(
                     "Figure 3. Capacity/demand of the IDA against the FRP installed on the "
                     "wall. The target line belongs to the IDA check alone: an option passes "
-                    "only when every deciding check passes (column 'deciding checks' of "
-                    "section 5.1), so an option above the line can still fail.",
+                    "only when every deciding check passes (column 'deciding checks' of the "
+                    "ranking above), so an option above the line can still fail.",
                     "caption",
                 ),
             ]
