@@ -21,7 +21,7 @@ import math
 import numpy as np
 from numba import njit
 
-from frp_assess.dynamics.kernel import Buffers, Ground, KernelParams, simulate
+from frp_assess.dynamics.kernel import Buffers, Ground, KernelParams, Outcome, simulate
 from frp_assess.dynamics.kernel import params as kp
 
 #: Relative margin of the quiet-start test [-]: an interval is skipped only when both its
@@ -79,6 +79,37 @@ def next_multiplier(
     return math.nan
 
 
+@njit(cache=True, nogil=True, inline="always")
+def _run_and_store(
+    acc: np.ndarray,
+    quiet: np.ndarray,
+    dt: float,
+    c: float,
+    n_tail: int,
+    prm: KernelParams,
+    out: Buffers,
+    n: int,
+    multiplier: np.ndarray,
+    fate: np.ndarray,
+    peak: np.ndarray,
+    ruptures: np.ndarray,
+) -> Outcome:
+    """Time history n of a search at the multiplier c, from the record's first sample that
+    may uplift the wall (:func:`quiet_intervals`), stored at index n; the kernel's outcome.
+
+    record_history is the constant False: numba compiles a version of the driver without the
+    history for it (a version of its own, beside the one of RockingModel.run: 8 CPU-s more
+    on a cold cache), 1.3-9 % faster per IDA than with a flag known only at run time
+    (docs/model.md §4.2)."""
+    start = quiet_intervals(quiet, c, prm)
+    res = simulate(Ground(acc[start:], dt, c, n_tail), prm, 0.0, 0.0, False, out)
+    multiplier[n] = c
+    fate[n] = res.fate
+    peak[n] = res.peak
+    ruptures[n] = res.ruptures
+    return res
+
+
 @njit(cache=True, nogil=True)
 def search(
     acc: np.ndarray,
@@ -114,16 +145,8 @@ def search(
             return n, kp.STATUS_OK
         if n >= multiplier.shape[0]:
             return n, STATUS_TOO_MANY_RUNS
-        start = quiet_intervals(quiet, c, prm)
-        # record_history as the constant False: numba compiles a version of the driver
-        # without the history for it (a version of its own, beside the one of
-        # RockingModel.run: 8 CPU-s more on a cold cache), 1.3-9 % faster per IDA than with
-        # a flag known only at run time (docs/model.md §4.2)
-        res = simulate(Ground(acc[start:], dt, c, n_tail), prm, 0.0, 0.0, False, out)
-        multiplier[n] = c
-        fate[n] = res.fate
-        peak[n] = res.peak
-        ruptures[n] = res.ruptures
+        res = _run_and_store(acc, quiet, dt, c, n_tail, prm, out, n, multiplier, fate, peak,
+                             ruptures)  # fmt: skip
         n += 1
         if res.status != kp.STATUS_OK:
             return n, res.status
@@ -293,13 +316,8 @@ def sample(
             return n, kp.STATUS_OK
         if n >= multiplier.shape[0]:
             return n, STATUS_TOO_MANY_RUNS
-        start = quiet_intervals(quiet, c, prm)
-        # as in search: the driver without the history (record_history the constant False)
-        out = simulate(Ground(acc[start:], dt, c, n_tail), prm, 0.0, 0.0, False, buffers)
-        multiplier[n] = c
-        fate[n] = out.fate
-        peak[n] = out.peak
-        ruptures[n] = out.ruptures
+        out = _run_and_store(acc, quiet, dt, c, n_tail, prm, buffers, n, multiplier, fate,
+                             peak, ruptures)  # fmt: skip
         n += 1
         if out.status != kp.STATUS_OK:
             return n, out.status
