@@ -5,7 +5,8 @@ limit state T_R = −V_R/ln(1 − P_VR) (clamped to 30-2475 years), then a_g, F0
 site: the inverse-distance mean of the four vertices of the grid cell that contains the site
 (the 4 nearest nodes where no complete cell does, at the grid's border) at the two grid
 return periods around T_R, then the log-log interpolation between them
-(docs/site-hazard.md).
+(docs/site-hazard.md).  A site the grid reaches but that lies abroad is refused, and a site
+near the land border carries a warning (:func:`~frp_assess.motions.site.territory.check_in_italy`).
 """
 
 from __future__ import annotations
@@ -28,6 +29,7 @@ from frp_assess.motions.site.formulas import (
     log_interpolation,
 )
 from frp_assess.motions.site.grid import NearNode, load_grid, near_nodes, nearest_nodes
+from frp_assess.motions.site.territory import check_in_italy
 
 #: how the site's values were interpolated: the four vertices of the grid cell that
 #: contains the site (NTC 2008 Allegato A), or the four nearest nodes (no complete cell
@@ -52,7 +54,8 @@ class SiteHazard:
     """The site: latitude, longitude [°]; V_N [years]; use class; C_U [-]; V_R [years]; the
     four limit states (SLO, SLD, SLV, SLC, in order); the grid nodes used, nearest first;
     ``interpolation`` "cell" (the vertices of the cell containing the site) or "nearest"
-    (the four nearest nodes, for a site in no complete cell)."""
+    (the four nearest nodes, for a site in no complete cell); ``border_warning`` the
+    warning for a site near Italy's land border ("" elsewhere)."""
 
     latitude: float
     longitude: float
@@ -63,6 +66,7 @@ class SiteHazard:
     states: dict[str, LimitStateHazard]
     nodes: tuple[NearNode, ...]
     interpolation: str = "cell"
+    border_warning: str = ""
 
     def __getitem__(self, limit_state: str) -> LimitStateHazard:
         return self.states[limit_state]
@@ -115,10 +119,12 @@ def site_hazard(
     """The NTC parameters of the four limit states at a site given by its coordinates [°],
     its nominal life V_N [years] and use class ("I"-"IV").  Raises
     :class:`~frp_assess.motions.site.grid.OutsideGridError` (an InputError) for a site the
-    grid does not cover, ValueError for a bad V_N or use class."""
+    grid does not cover or :class:`~frp_assess.motions.site.territory.OutsideItalyError` for
+    one abroad (both InputError), ValueError for a bad V_N or use class."""
     c_u = C_U(use_class)
     v_r = V_R(nominal_life, c_u)
     nodes, interpolation = site_nodes(latitude, longitude)
+    warning = check_in_italy(latitude, longitude) or ""
     states: dict[str, LimitStateHazard] = {}
     for state in LIMIT_STATES:
         tr = T_R(v_r, P_VR[state])
@@ -126,5 +132,14 @@ def site_hazard(
         ag, f0, tc = parameters_at(nodes, used)
         states[state] = LimitStateHazard(tr, used, ag, f0, tc)
     return SiteHazard(
-        latitude, longitude, nominal_life, use_class, c_u, v_r, states, nodes, interpolation
+        latitude,
+        longitude,
+        nominal_life,
+        use_class,
+        c_u,
+        v_r,
+        states,
+        nodes,
+        interpolation,
+        warning,
     )
