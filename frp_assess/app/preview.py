@@ -24,7 +24,7 @@ from frp_assess.assess.wall_model import (
     weight_depth,
 )
 from frp_assess.config import FrpMaterial, Project
-from frp_assess.config.schema import Spectrum, WallSpec
+from frp_assess.config.schema import Ntc2018Spectrum, Spectrum, WallSpec
 from frp_assess.dynamics import ModelOptions, Position
 from frp_assess.dynamics.base_reaction import PivotRule
 from frp_assess.motions import ElasticSpectrum
@@ -82,6 +82,14 @@ def wall_derived(spec: WallSpec, pivot: PivotRule = "crushing", level: str = "LC
 def elastic_spectrum(spec: Spectrum) -> ElasticSpectrum:
     """The elastic spectrum of a valid ``seismic.spectrum`` block (its ``pga_g`` is a_g·S)."""
     return spectrum_of(spec)
+
+
+def site_warning(spec: Spectrum) -> str:
+    """The warning of a site near Italy's land border (the one ``site``, ``validate`` and
+    ``run`` print: :func:`~frp_assess.motions.site.territory.check_in_italy`) for a spectrum
+    given by coordinates; "" for any other spectrum or site."""
+    hazard = spec.site_hazard() if isinstance(spec, Ntc2018Spectrum) else None
+    return "" if hazard is None else hazard.border_warning
 
 
 def frp_mass_per_metre(

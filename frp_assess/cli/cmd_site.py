@@ -2,13 +2,15 @@
 
 For each limit state (SLO, SLD, SLV, SLC): the return period T_R and a_g [g], F0, T_C* [s]
 interpolated on the NTC reference grid (docs/site-hazard.md).  ``--json`` prints them as one
-JSON object keyed by limit state.  A site the grid does not cover is refused with one line.
+JSON object keyed by limit state.  A site the grid does not cover, or abroad, is refused with
+one line; a site near Italy's land border is computed with a warning on stderr.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import sys
 
 from frp_assess.app.site import LIMIT_STATES, P_VR, USE_CLASSES, SiteHazard, site_hazard
 from frp_assess.cli.arg_types import number_in
@@ -87,6 +89,8 @@ def as_table(hazard: SiteHazard) -> str:
 
 def run(args: argparse.Namespace) -> int:
     hazard = site_hazard(args.lat, args.lon, args.nominal_life, args.use_class)
+    if hazard.border_warning:
+        print(f"frp-assess: warning: --lat/--lon: {hazard.border_warning}", file=sys.stderr)
     if args.json:
         print(json.dumps(as_json(hazard), indent=1))
     else:

@@ -145,12 +145,17 @@ TIES_NOT_IN_TIME_HISTORIES = (
 
 def project_warnings(project: Project) -> tuple[PlausibilityWarning, ...]:
     """One :class:`PlausibilityWarning` per value of ``project`` outside its range of practice,
-    and one for tie-rods, which the time histories do not model yet."""
+    one for a site near Italy's land border (the site module's warning), and one for
+    tie-rods, which the time histories do not model yet."""
     found = [
         warning
         for value, practice, loc in _values(project)
         for warning in _check(value, practice, loc)
     ]
+    spectrum = project.seismic.spectrum
+    hazard = spectrum.site_hazard() if isinstance(spectrum, Ntc2018Spectrum) else None
+    if hazard is not None and hazard.border_warning:
+        found.append(PlausibilityWarning(("seismic", "spectrum", "site"), hazard.border_warning))
     loads = project.wall.loads
     if loads is not None and loads.ties:
         found.append(PlausibilityWarning(("wall", "loads", "ties"), TIES_NOT_IN_TIME_HISTORIES))

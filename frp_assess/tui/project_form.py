@@ -24,6 +24,7 @@ from frp_assess.tui.core.editor_state import (
     record_file_problem,
     set_path,
     spectrum_preview,
+    spectrum_site_warning,
     validate_edit,
     wall_derived,
     without_paths,
@@ -308,12 +309,15 @@ class ProjectForm:
     def show_derived(self, data: dict[str, Any], project: Project | None) -> None:
         """Derived wall values, spectrum preview, FRP quantities and record summary."""
         wall = wall_derived(data.get("wall"), data.get("analysis"), data.get("code_check"))
-        spectrum = spectrum_preview(get_path(data, ("seismic", "spectrum")))
+        spectrum_data = get_path(data, ("seismic", "spectrum"))
+        spectrum = spectrum_preview(spectrum_data)
         pga = None if isinstance(spectrum, str) else spectrum.pga_g
         n_options = None if project is None else len(project.expand_interventions())
         q = self.root.query_one
         q(WallPane).show_derived(wall, pga, n_options)
-        q(SitePane).show_spectrum(spectrum, get_path(data, ("seismic", "t1"), 1.0))
+        q(SitePane).show_spectrum(
+            spectrum, get_path(data, ("seismic", "t1"), 1.0), spectrum_site_warning(spectrum_data)
+        )
         table = material_table(data.get("materials"))
         q(RetrofitsPane).show_project(project, wall, data.get("wall"), table)
         q(MaterialsPane).refresh_view()

@@ -54,10 +54,13 @@ class SitePane(VerticalScroll):
     def on_mount(self) -> None:
         self.shown: Any = None
 
-    def show_spectrum(self, spectrum: Any, t1: Any) -> None:
+    def show_spectrum(self, spectrum: Any, t1: Any, warning: str = "") -> None:
         """Plot the spectrum (Se [g] against T [s]) with the period T1 [s] of the checks;
-        ``spectrum`` is a string when it cannot be built (the reason)."""
-        key = spectrum if isinstance(spectrum, str) else (spectrum, spectrum.description, t1)
+        ``spectrum`` is a string when it cannot be built (the reason); ``warning`` the site's
+        (near Italy's land border), shown under the values."""
+        key = (
+            spectrum if isinstance(spectrum, str) else (spectrum, spectrum.description, t1, warning)
+        )
         if key == self.shown:
             return
         self.shown = key
@@ -94,5 +97,6 @@ class SitePane(VerticalScroll):
                 (f"   plateau {spectrum.plateau_g:.4f} g\n", ""),
                 (ntc_parameters(spectrum), ""),
                 (corners, "dim"),
+                (f"\nwarning: {warning}" if warning else "", "bold yellow"),
             )
         )

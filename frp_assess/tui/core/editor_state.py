@@ -17,7 +17,12 @@ from typing import Any
 
 from pydantic import TypeAdapter, ValidationError
 
-from frp_assess.app.preview import WallDerived, elastic_spectrum, frp_mass_per_metre
+from frp_assess.app.preview import (
+    WallDerived,
+    elastic_spectrum,
+    frp_mass_per_metre,
+    site_warning,
+)
 from frp_assess.app.preview import wall_derived as wall_preview
 from frp_assess.app.project import check_record_files, parse_yaml, validate_data
 from frp_assess.config.library import FRP_MATERIALS, FrpMaterial
@@ -275,6 +280,15 @@ def spectrum_preview(spec: Any) -> Any:
         return elastic_spectrum(model)
     except (InputError, ValueError) as exc:
         return f"spectrum: {exc}"
+
+
+def spectrum_site_warning(spec: Any) -> str:
+    """The warning of a site near Italy's land border for a ``seismic.spectrum`` block given
+    by coordinates ("" otherwise, or if the block is invalid: its error shows elsewhere)."""
+    try:
+        return site_warning(_SPECTRUM.validate_python(spec))
+    except (ValidationError, InputError, ValueError):
+        return ""
 
 
 def material_table(materials: Any) -> dict[str, FrpMaterial]:
