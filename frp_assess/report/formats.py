@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from frp_assess.numbers import fmt_against
+from frp_assess.report.lang import Lang
 from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.text_safety import Markup, pdf
 
@@ -146,3 +147,54 @@ def case_by_name(results: Results, name: str | None) -> CaseResult | None:
 
 def position_text(pos: str | None) -> str:
     return DASH if pos is None else pos
+
+
+def crushing_shift(results: Results) -> float | None:
+    """x [m] of the unreinforced wall's crushing pivot, None when its model turns about the
+    edge (docs/model.md §1.1): results.json ``wall.a_rm`` is about that pivot."""
+    piv = results.urm.pivot
+    if piv is None or piv.model_pivot != "crushing" or piv.pivot_shift <= 0.0:
+        return None
+    return piv.depth
+
+
+def design_strain(results: Results) -> bool:
+    """True when the bars' rupture strain is the design value c·η_a·ε_fk/γ_f (some option
+    has bars as built with ``bars.design_values``), False for the mean c·ε_u (docs/model.md
+    §2.1)."""
+    return any(c.as_built is not None and c.as_built.strain.design_values for c in results.cases)
+
+
+def rupture_strain_words(results: Results) -> str:
+    """ε_max in symbols, as the model used it: c·η_a·ε_fk/γ_f or c·ε_u."""
+    return "c·η_a·ε_fk/γ_f" if design_strain(results) else "c·ε_u"
+
+
+def permille(x: float | None, lang: Lang) -> str:
+    """ρ in ‰: at most 2 decimals, trailing zeros dropped (2 → '2', 1.579 → '1.58'), the
+    language's decimal separator."""
+    return lang.numbers_in(fmt_permille(x))
+
+
+def capacity_text(case: CaseResult, target: float, lang: Lang) -> str:
+    """:func:`fmt_capacity` with the language's decimal separator."""
+    return lang.numbers_in(fmt_capacity(case, target))
+
+
+def shows_run_prose(lang: Lang) -> bool:
+    """The prose the run writes into results.json is English: a report in English shows it,
+    one in another language rebuilds its words from the values or leaves it out."""
+    return lang.code == "en"
+
+
+def run_text(text: str | None, lang: Lang) -> str:
+    """Prose the run wrote in English into results.json (a compliance requirement, a pivot
+    reason, the ranking rule...): shown as written in an English report, a dash in another
+    language (the annex rebuilds what it can from the values)."""
+    return run_words(text, lang) or DASH
+
+
+def run_words(text: str | None, lang: Lang) -> str | None:
+    """:func:`run_text` for a paragraph: the run's English prose, None in another language
+    or when there is none."""
+    return text if text and shows_run_prose(lang) else None
