@@ -8,8 +8,8 @@ pivot check of every case (``cases[i].pivot``), with the options it drops and wh
 
 Table contents are pure functions of the typed results (:class:`TableData`, plain text);
 :func:`section` lays them out.  Formats: lengths of bar in m with 2 decimals, spacings in m
-with 3, forces in kN per bar with 1 decimal, ratios in ‰ as
-:func:`~frp_assess.report.formats.permille`.
+with 3, forces in kN per bar with 1 decimal, the ratio installed in ‰ with 3 (1.001 ‰ for
+1 ‰ asked), the other ratios as :func:`~frp_assess.report.formats.permille`.
 """
 
 from __future__ import annotations
@@ -52,7 +52,7 @@ def layout_table(results: Results, lang: Lang) -> TableData:
     ]
     rows = [
         [label, layout_text(b, lang),
-         f"{permille(b.ratio_installed, lang)} / {permille(b.ratio_asked, lang)}",
+         f"{n(b.ratio_installed, 3)} / {permille(b.ratio_asked, lang)}",
          permille(b.ratio_model, lang), n(b.bar_length, 2), n(b.metres, 1), n(b.mass, 1),
          n(b.cost, 0, grouping=True)]
         for label, b in built(results, lang)

@@ -119,7 +119,8 @@ def checks_table(results: Results, lang: Lang) -> TableData | None:
     for c in kc.cases:
         rows.extend(_case_rows(c, labels.get(c.case, c.case), lang))
     header = [lang.t("annex.col.option"), lang.t("ax.col.check"), lang.t("ax.col.capacity"),
-              lang.t("ax.col.demand"), Markup("ζ<sub>E</sub>"), lang.t("ax.code.verdict")]  # fmt: skip
+              lang.t("ax.col.demand"), Markup("ζ<sub>E</sub>"),
+              lang.t("ax.code.verdict")]  # fmt: skip
     return TableData(header, rows)
 
 

@@ -137,7 +137,11 @@ def model_rows(results: Results, lang: Lang) -> list[list[str]]:
             ]
         )
     if m.design_value:
-        stat = "ax.model.design_value.mean" if results.design_is_mean else "ax.model.design_value.least"
+        stat = (
+            "ax.model.design_value.mean"
+            if results.design_is_mean
+            else "ax.model.design_value.least"
+        )
         value = run_words(m.design_value, lang) or lang.t(stat)
         rows.append([lang.t("ax.model.design_value"), value])
     capacity = f"ax.model.capacity.{ida.capacity}"
@@ -233,7 +237,8 @@ def fmt_margin(margin: float | None, unit: str | None, lang: Lang) -> str:
         return DASH
     if not unit:
         return lang.numbers_in(f"{margin:+.1%}")
-    return lang.numbers_in(f"{margin:+g} {unit}")
+    key = f"ax.unit.{unit}"
+    return lang.numbers_in(f"{margin:+g} {lang.t(key) if lang.has(key) else unit}")
 
 
 def compliance_table(results: Results, lang: Lang) -> TableData:

@@ -68,7 +68,7 @@ def seismic(results: Results, lang: Lang) -> list[Block]:
     out.append(cond_break(60 * mm))
     out.append(h2("3.3  " + lang.t("ax.h.compliance")))
     widths = [18 * mm, 30 * mm, 46 * mm, 42 * mm, 20 * mm, 14 * mm]
-    out.append(grid(ti.compliance_table(results, lang), widths, wrap=(0, 1, 2, 3),
+    out.append(grid(ti.compliance_table(results, lang), widths, wrap=(0, 1, 2, 3, 4, 5),
                     numeric_from=4))  # fmt: skip
     ok = bool(results.compliance.passed)
     out.append(markup(lang.t("ax.compliance.ok" if ok else "ax.compliance.bad"),

@@ -30,7 +30,7 @@ from frp_assess.report.flow import (
     page_break,
     para,
 )
-from frp_assess.report.formats import column_blocks, run_words
+from frp_assess.report.formats import column_blocks, run_words, shows_run_prose
 from frp_assess.report.lang import Lang
 from frp_assess.report.verdict_text import robustness_lines
 from frp_assess.results.model import AssessmentResult
@@ -72,7 +72,7 @@ def _ranking(results: Results, lang: Lang) -> list[Block]:
     rec = results.recommended
     hl = [i for i, c in enumerate([results.urm, *tr.ranked_options(results)]) if c.name == rec]
     widths = [12, 22, 11, 14, 8, 11, 11, 11, 14, 12, 16, 15, 15]  # rank: "dropped"
-    out.append(grid(data, [x * mm for x in widths], wrap=(1, 2, 3), small=True, numeric_from=4,
+    out.append(grid(data, [x * mm for x in widths], wrap=(1, 2, 3, 12), small=True, numeric_from=4,
                     highlight_rows=hl))  # fmt: skip
     key = "ax.rank.caption.compliant" if results.input_code_compliant else "ax.rank.caption.not"
     out.append(markup(lang.t("ax.rank.caption", highlighted=lang.t(key)), "caption"))
@@ -95,8 +95,9 @@ def _design(results: Results, lang: Lang) -> list[Block]:
     design = adt.design_table(results, lang)
     if design is None:
         return [markup(lang.t("ax.design.not_run"))]
-    widths = [16, 18, 20, 20, 18, 18, 64] if len(design.header) == 7 else [28, 30, 30, 28, 28, 30]
-    wrap = (6,) if len(design.header) == 7 else (1,)
+    notes = shows_run_prose(lang)  # the run's note in a last column
+    widths = [16, 18, 20, 20, 18, 18, 64] if notes else [28, 30, 30, 28, 28, 30]
+    wrap = (6,) if notes else (1,)
     out: list[Block] = [grid(design, [x * mm for x in widths], wrap=wrap, numeric_from=2)]
     out.append(markup(lang.t("annex.design.note"), "caption"))
     return out

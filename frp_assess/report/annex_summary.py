@@ -32,7 +32,7 @@ from frp_assess.rules.record_sets import MEAN_OF_RECORDS_FROM
 Results = AssessmentResult
 
 
-def design_statistic(results: Results, lang: Lang) -> str:
+def statistic_words(results: Results, lang: Lang) -> str:
     """What the design a_dyn is: the mean of the records or the least favourable one."""
     if results.design_is_mean:
         return lang.t("ax.sum.stat.mean")
@@ -112,7 +112,7 @@ def _as_is(results: Results, lang: Lang) -> list[Block]:
                 "ax.sum.as_is",
                 n=len(results.records),
                 a=esc(bound(n(urm.design_a_dyn, 3), lb)),
-                stat=design_statistic(results, lang),
+                stat=statistic_words(results, lang),
                 cd=cd,
                 fc=fc,
             )
