@@ -188,7 +188,7 @@ def summary(results: Results, lang: Lang) -> list[Block]:
     out += _retrofit(results, lang)
     out.append(gap(4))
     rec = case_by_name(results, results.recommended)
-    widths = [x * mm for x in (24, 33, 17, 17, 20, 17, 20, 22)]
+    widths = [x * mm for x in (24, 31, 17, 17, 20, 17, 20, 24)]
     out.append(grid(summary_table(results, lang), widths, wrap=(0, 1), numeric_from=2,
                     highlight_rows=[1] if rec is not None else []))  # fmt: skip
     out.append(markup(lang.t("ax.sum.caption", cur=esc(results.costs.currency)), "caption"))

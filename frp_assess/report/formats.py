@@ -1,24 +1,23 @@
-"""Number formats and small helpers of the report's tables (plain text, not markup):
-
-- accelerations in g: 3 decimals (:func:`fmt_acc`);
-- ratios (capacity/demand, improvement): 2 decimals (:func:`fmt_ratio`);
-- IDA multipliers: 3 decimals; masses: 1 decimal (kg); costs: 0 decimals with thousands commas.
+"""The table builders' shared pieces (plain text, not markup): :class:`TableData`, the
+cutting of a table with a column per record, and the helpers every annex and body table
+uses.  Numbers in the language's format come from :class:`~frp_assess.report.lang.Lang`
+(accelerations in g with 3 decimals, ratios with 2, masses in kg with 1, costs with 0 and
+grouped thousands); here only what needs more: ρ in ‰ (:func:`permille`), capacity/demand
+against its verdict (:func:`capacity_text`), and the run's English prose
+(:func:`run_text`: shown in an English report only).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
 
 from frp_assess.numbers import fmt_against
 from frp_assess.report.lang import Lang
 from frp_assess.results.model import AssessmentResult, CaseResult
-from frp_assess.text_safety import Markup, pdf
 
 Results = AssessmentResult
 
 DASH = "—"
-NO_COLLAPSE = "no collapse ≤ C_max"
 
 
 @dataclass(frozen=True)
@@ -53,23 +52,7 @@ def column_blocks(
     return blocks
 
 
-def head(template: str, **user: object) -> Markup:
-    """A header cell of constant markup ``template`` with user values (escaped) filled in."""
-    return Markup(template.format(**{k: pdf(v) for k, v in user.items()}))
-
-
 # --- number formats -----------------------------------------------------------------------
-
-
-def fmt_acc(x: float | None) -> str:
-    return DASH if x is None else f"{x:.3f}"
-
-
-def fmt_ratio(x: float | None) -> str:
-    return DASH if x is None else f"{x:.2f}"
-
-
-fmt_q = fmt_ratio
 
 
 def fmt_capacity(case: CaseResult, target: float) -> str:
@@ -78,44 +61,11 @@ def fmt_capacity(case: CaseResult, target: float) -> str:
     return fmt_against(case.capacity_demand, target, case.meets_target)
 
 
-def fmt_mult(x: float | None) -> str:
-    return NO_COLLAPSE if x is None else f"{x:.3f}"
-
-
-def fmt_mass(x: float | None) -> str:
-    return DASH if x is None else f"{x:.1f}"
-
-
-def fmt_cost(x: float | None) -> str:
-    return DASH if x is None else f"{x:,.0f}"
-
-
 def fmt_permille(x: float | None) -> str:
     """ρ in ‰: at most 2 decimals, trailing zeros dropped (2 → '2', 1.579 → '1.58')."""
     if x is None:
         return DASH
     return f"{x:.2f}".rstrip("0").rstrip(".")
-
-
-def fmt_num(x: Any, digits: int = 3) -> str:
-    """Generic value: numbers to ``digits`` significant figures, others as text."""
-    if x is None:
-        return DASH
-    if isinstance(x, bool):
-        return "yes" if x else "no"
-    if isinstance(x, int):
-        return str(x)
-    if isinstance(x, float):
-        return f"{x:.{digits}g}"
-    return str(x)
-
-
-def yes_no(x: bool | None) -> str:
-    return DASH if x is None else ("yes" if x else "no")
-
-
-def pass_fail(x: bool | None) -> str:
-    return DASH if x is None else ("pass" if x else "FAIL")
 
 
 # --- helpers on the results ---------------------------------------------------------------
@@ -127,13 +77,6 @@ def ranked_options(results: Results) -> list[CaseResult]:
     return sorted(opts, key=lambda c: (c.rank is None, c.rank or 0))
 
 
-def a_dyn_label(results: Results) -> str:
-    """Header markup of the design a_dyn column."""
-    return Markup(
-        "mean a<sub>dyn</sub> [g]" if results.design_is_mean else "min a<sub>dyn</sub> [g]"
-    )
-
-
 def bound(text: str, lower: bool) -> str:
     return f"≥ {text}" if lower and text != DASH else text
 
@@ -143,10 +86,6 @@ def case_by_name(results: Results, name: str | None) -> CaseResult | None:
         if c.name == name:
             return c
     return None
-
-
-def position_text(pos: str | None) -> str:
-    return DASH if pos is None else pos
 
 
 def crushing_shift(results: Results) -> float | None:

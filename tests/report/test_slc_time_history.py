@@ -148,7 +148,7 @@ def test_both_renderers_show_the_slc_check(code: str, tmp_path: Path):
     if code == "en":
         assert "time history SLC at a_g·S = 0.355 g: d_SLC vs mean peak" in text
     else:
-        assert not ENGLISH.search(slc + Lang(code).t("annex.checks.note"))
+        assert not ENGLISH.search(slc + Lang(code).t("ax.chk.lead"))
 
 
 def test_the_short_check_names_tell_the_two_time_histories_apart():
