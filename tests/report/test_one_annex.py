@@ -7,6 +7,7 @@ shows in a last column (report/formats.run_text)."""
 from __future__ import annotations
 
 import json
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
@@ -15,6 +16,7 @@ from frp_assess.report.doc_model import Block, Heading, Keep, Table
 from frp_assess.report.document import build_document
 from frp_assess.report.lang import Lang
 from frp_assess.results.json_io import from_json
+from frp_assess.results.model import ReportSettings
 from tests.report.test_document_model import results_in
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -28,10 +30,6 @@ def annex_shape(code: str, path: Path | None = None) -> list[tuple[str, int, int
     if path is None:
         results = results_in(code)
     else:
-        from dataclasses import replace
-
-        from frp_assess.results.model import ReportSettings
-
         run = from_json(path.read_text(encoding="utf-8"), file=str(path))
         results = replace(run, report=ReportSettings(language=code))
     blocks = build_document(results).blocks()
