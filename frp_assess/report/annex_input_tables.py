@@ -5,6 +5,7 @@ text, but for headers that are :class:`~frp_assess.text_safety.Markup`."""
 
 from __future__ import annotations
 
+from frp_assess.report.body_analysis import PARAM_SYMBOL
 from frp_assess.report.body_front import masonry_words
 from frp_assess.report.formats import (
     DASH,
@@ -175,12 +176,21 @@ def software_rows(results: Results, lang: Lang) -> list[list[str]]:
     ]
 
 
+def param_name(key: str, lang: Lang) -> str:
+    """A spectrum parameter of results.json by its name (``soil``, ``damping``...) in an
+    English report, by the body's words for it in another language."""
+    symbol = PARAM_SYMBOL.get(key, key)
+    if shows_run_prose(lang) or not symbol.startswith("spectrum."):
+        return key
+    return lang.t(symbol)
+
+
 def spectrum_rows(results: Results, lang: Lang) -> list[list[str]]:
     s = results.seismic
     sp = s.spectrum
     n = lang.num
     params = ", ".join(
-        f"{k} = {lang.numbers_in(f'{v:.4g}') if isinstance(v, float) else v}"
+        f"{param_name(k, lang)} = {lang.numbers_in(f'{v:.4g}') if isinstance(v, float) else v}"
         for k, v in (sp.parameters or {}).items()
     )
     rows = [

@@ -23,6 +23,7 @@ from frp_assess.report.formats import (
     crushing_shift,
     ranked_options,
     run_words,
+    shows_run_prose,
 )
 from frp_assess.report.lang import Lang
 from frp_assess.report.verdict_text import governing, passes, robustness_lines, verdict_sentence
@@ -80,6 +81,8 @@ def _wall(results: Results, lang: Lang) -> str:
                        tan=n(math.tan(w.alpha), 3))  # fmt: skip
     masonry = masonry_text(results, lang) if w.masonry_description or w.masonry else None
     masonry = masonry or lang.t("ax.sum.wall.masonry")
+    if not shows_run_prose(lang):  # the catalogue's name of the type, inside a sentence
+        masonry = masonry[:1].lower() + masonry[1:]
     return lang.t("ax.sum.wall", b=n(w.thickness, 2), h=n(w.height, 2), l=n(w.length, 2),
                   masonry=esc(masonry), w=lang.gnum(w.unit_weight),
                   mechanism=esc(mechanism_text(w.mechanism, lang)), alpha=n(w.alpha_deg, 2),
