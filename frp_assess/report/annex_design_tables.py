@@ -1,30 +1,104 @@
-"""The annex tables of the design mode, of the model conventions (sensitivity) and of the
-anchorage of the bars, in the report's language (the Italian annex; the English report has
-them in its detailed sections).  Words from the catalogue, numbers from the results; the
-English free text the run writes (the design mode's note, a convention's label) is not
-copied: the words are rebuilt from the values."""
+"""The annex's tables of every case (the collapse acceleration under every accelerogram,
+the scatter), of the design mode, of the model conventions (sensitivity) and of the anchorage
+of the bars, in the report's language.  Words from the catalogue, numbers from the results;
+the English free text the run writes (the design mode's note, a convention's label) is
+rebuilt from the values (the design mode's note is shown in an English report only)."""
 
 from __future__ import annotations
 
-from frp_assess.report.body_annex import case_label
+from collections.abc import Callable
+
 from frp_assess.report.body_front import position_words
-from frp_assess.report.formats import TableData
+from frp_assess.report.formats import TableData, shows_run_prose
 from frp_assess.report.lang import Lang, short
-from frp_assess.report.verdict_text import convention_cells, variant_words
+from frp_assess.report.verdict_text import (
+    collapse_probability,
+    convention_cells,
+    probability_text,
+    variant_words,
+)
 from frp_assess.results.as_built import AsBuilt
-from frp_assess.results.model import AssessmentResult
+from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.text_safety import Markup
 
 Results = AssessmentResult
 
 
-def design_table(results: Results, lang: Lang, *, notes: bool = False) -> TableData | None:
+def case_label(c: CaseResult, lang: Lang) -> str:
+    """A case in a table: the wall as it is, or the option's name as the user wrote it (the
+    project file's ``interventions[].name``, whatever the report's language; its material,
+    position and ρ are in the ranking)."""
+    if c.is_unreinforced:
+        return lang.t("annex.urm")
+    return c.name
+
+
+def cases(results: Results) -> list[CaseResult]:
+    """The wall as it is, then the options by rank."""
+    return [results.urm, *results.ranked_options]
+
+
+def a_dyn_table(
+    results: Results, lang: Lang, label: Callable[[CaseResult], str] | None = None
+) -> TableData:
+    """a_dyn [g] of every case and record, the wall as it is first, then by rank
+    (``label(case)`` names a case; default :func:`case_label`)."""
+    name_of = label or (lambda c: case_label(c, lang))
+    names = [r.name for r in results.records]
+    rows = []
+    for c in cases(results):
+        by_rec = {r.record: r for r in c.records}
+        cells = []
+        for name in names:
+            r = by_rec.get(name)
+            if r is None:
+                cells.append("—")
+            else:
+                cells.append(lang.t("annex.nc") if r.a_dyn is None else lang.num(r.a_dyn, 3))
+        rows.append([name_of(c), *cells])
+    return TableData([lang.t("annex.col.option"), *names], rows)
+
+
+def scatter_table(
+    results: Results, lang: Lang, label: Callable[[CaseResult], str] | None = None
+) -> TableData:
+    """Record-to-record scatter of a_dyn and the lognormal fragility of every case (the wall
+    as it is first, then by rank): mean, median, CoV, least favourable (record), fragility
+    median, β and P(collapse) at FC·a_g·S; dashes where no lognormal was fitted.
+    ``label(case)`` names a case (default :func:`case_label`)."""
+    n = lang.num
+    name = label or (lambda c: case_label(c, lang))
+    header = [
+        lang.t("annex.col.option"),
+        Markup(lang.t("annex.col.mean")),
+        Markup(lang.t("annex.col.median")),
+        lang.t("annex.col.cov"),
+        lang.t("annex.col.least"),
+        lang.t("annex.col.frag_median"),
+        "β [-]",
+        Markup(lang.t("annex.col.pcollapse")),
+    ]
+    rows = []
+    for c in cases(results):
+        sc = c.scatter
+        fr = sc.fragility
+        at = collapse_probability(results, c)
+        rows.append([name(c), n(c.mean_a_dyn, 3), n(sc.median_a_dyn, 3), n(sc.cov, 2),
+                     f"{n(c.min_a_dyn, 3)} ({sc.least_favourable_record})",
+                     "—" if fr is None else n(fr.median, 3),
+                     "—" if fr is None else n(fr.beta, 2),
+                     "—" if at is None else probability_text(at[1], lang)])  # fmt: skip
+    return TableData(header, rows)
+
+
+def design_table(results: Results, lang: Lang) -> TableData | None:
     """Design mode, one row per (material, position): the smallest ratio ρ [‰] that passes
-    every deciding check, its capacity/demand, FRP mass [kg] and cost, and with ``notes`` the
-    run's one-line note (English); None when the design mode was not run."""
+    every deciding check, its capacity/demand, FRP mass [kg] and cost, and in an English report
+    the run's one-line note; None when the design mode was not run."""
     if not results.design:
         return None
     n = lang.num
+    notes = shows_run_prose(lang)
     header = [
         lang.t("annex.col.material"),
         lang.t("annex.col.position"),
@@ -109,7 +183,7 @@ def anchorage_table(results: Results, lang: Lang) -> TableData | None:
     rows = []
     for label, b in items:
         a = b.anchorage
-        ok = "—" if a.cone_ok is None else lang.t("annex.ok" if a.cone_ok else "annex.ko")
+        ok = "—" if a.cone_ok is None else lang.t("ax.cone.ok" if a.cone_ok else "ax.cone.fails")
         rows.append([label, n(a.design_force, 1), n(a.length_required, 3),
                      n(a.cone_resistance, 1), ok])  # fmt: skip
     return TableData(header, rows)

@@ -12,8 +12,8 @@ from frp_assess.report import charts, ida_words
 from frp_assess.report.charts import localize_drawing
 from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import cond_break, esc, figure, grid, h1, h2, keep, key_value, markup
+from frp_assess.report.formats import TableData
 from frp_assess.report.lang import Lang
-from frp_assess.report.tables import TableData
 from frp_assess.results.model import AssessmentResult
 from frp_assess.text_safety import Markup
 

@@ -11,8 +11,8 @@ from frp_assess.report.body_front import option_words, position_words
 from frp_assess.report.charts import localize_drawing
 from frp_assess.report.doc_model import Block, markup_text
 from frp_assess.report.flow import cond_break, figure, grid, h1, h2, keep, key_value, markup
+from frp_assess.report.formats import TableData
 from frp_assess.report.lang import Lang, short
-from frp_assess.report.tables import TableData
 from frp_assess.report.verdict_text import (
     cell,
     passes,

@@ -7,11 +7,10 @@ from __future__ import annotations
 
 from reportlab.lib.units import mm
 
-from frp_assess.report import tables as tb
 from frp_assess.report.doc_model import Block, Heading
 from frp_assess.report.flow import esc, grid, h1, h2, key_value, markup
+from frp_assess.report.formats import TableData, design_strain
 from frp_assess.report.lang import Lang, short
-from frp_assess.report.tables import TableData
 from frp_assess.results.model import AssessmentResult
 from frp_assess.text_safety import Markup
 
@@ -197,5 +196,5 @@ def rupture_strain_text(results: Results, lang: Lang) -> str:
     """The rupture strain of the model as the run computed it: ε_max = c·ε_u (mean values)
     or c·η_a·ε_fk/γ_f (design values), with c of the run."""
     c = lang.gnum(results.model.strain_factor)
-    key = "mat.rupture.design" if tb.design_strain(results) else "mat.rupture.mean"
+    key = "mat.rupture.design" if design_strain(results) else "mat.rupture.mean"
     return lang.t(key, c=c)

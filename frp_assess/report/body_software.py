@@ -23,9 +23,9 @@ from reportlab.lib.units import mm
 from frp_assess.report import ida_words
 from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import esc, grid, h1, h2, keep, key_value, markup
+from frp_assess.report.formats import TableData
 from frp_assess.report.lang import Lang
 from frp_assess.report.loads_section import t as loads_words
-from frp_assess.report.tables import TableData
 from frp_assess.results.model import AssessmentResult
 from frp_assess.text_safety import Markup
 

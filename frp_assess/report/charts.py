@@ -19,8 +19,8 @@ from frp_assess.report.chart_axes import (
     new_drawing,
     nice_range,
 )
+from frp_assess.report.formats import fmt_permille
 from frp_assess.report.lang import Lang
-from frp_assess.report.tables import fmt_permille
 from frp_assess.results.model import AssessmentResult, CaseResult
 
 Results = AssessmentResult

@@ -9,13 +9,11 @@ Public API: :func:`load_results`, :func:`build_document`, :func:`build_docx`.
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable
 from pathlib import Path
 
 from frp_assess.errors import InputError
 from frp_assess.report import (
-    as_built_section,
     body_analysis,
     body_annex,
     body_checks,
@@ -23,11 +21,9 @@ from frp_assess.report import (
     body_front,
     body_software,
     loads_section,
-    sections,
-    sections_results,
 )
-from frp_assess.report.doc_model import MM, Block, Document, Heading, Para, split_sections
-from frp_assess.report.flow import cond_break, h1, markup, page_break
+from frp_assess.report.doc_model import MM, Block, Document, Heading, split_sections
+from frp_assess.report.flow import cond_break, page_break
 from frp_assess.report.lang import Lang
 from frp_assess.report.render_docx import write_docx
 from frp_assess.report.wording import engineer_blocks
@@ -108,18 +104,6 @@ BODY: tuple[tuple[Callable[[AssessmentResult, Lang], list[Block]], bool], ...] =
     (body_closing.appendix, True),
 )
 
-#: the calculation details (the English annex): the sections of the detailed report
-ANNEX = (
-    sections.summary,
-    sections.inputs,
-    sections.seismic,
-    sections_results.unreinforced,
-    sections_results.options,
-    as_built_section.section,
-    sections_results.governing,
-)
-_SECTION_REF = re.compile(r"\b(sections?|Figure) (\d)")
-
 
 def number_headings(blocks: list[Block]) -> list[Block]:
     """Level-1 and level-2 headings numbered 1, 1.1... (a heading whose text starts with a
@@ -138,25 +122,9 @@ def number_headings(blocks: list[Block]) -> list[Block]:
     return out
 
 
-def annex_blocks(results: AssessmentResult, letter: str = "B") -> list[Block]:
-    """The detailed sections as an annex: headings and cross-references prefixed ``B.``."""
-    out: list[Block] = []
-    for part in ANNEX:
-        blocks = part(results)
-        if part is sections.summary:
-            blocks = blocks[2:]  # the title and subtitle: the body has them
-        for b in blocks:
-            if isinstance(b, Heading) and b.level in (1, 2):
-                b = Heading(f"{letter}.{b.text}", b.level)
-            elif isinstance(b, Para):
-                b = Para(_SECTION_REF.sub(rf"\1 {letter}.\2", b.markup), b.style)
-            out.append(b)
-    return out
-
-
 def build_blocks(results: AssessmentResult) -> list[Block]:
-    """The blocks of the report, in order: title, numbered body, appendix A and (English)
-    the annex B of calculation details."""
+    """The blocks of the report, in order: title, numbered body, appendix A and the annex B
+    of calculation details."""
     lang = _lang(results)
     body: list[Block] = []
     for part, new_page in BODY:
@@ -166,11 +134,7 @@ def build_blocks(results: AssessmentResult) -> list[Block]:
         body += [page_break() if new_page else cond_break(40 * MM), *blocks]
     story: list[Block] = body_front.title(results, lang) + number_headings(body[1:])
     story += [page_break(), *_appendix(results, lang)]
-    if lang.code == "en":  # the detailed sections, as written in English
-        story += [page_break(), h1(lang.t("h.annex")), markup(lang.t("annex.lead"))]
-        story += annex_blocks(results)
-    else:  # the calculation details in the report's language
-        story += [page_break(), *body_annex.annex(results, lang)]
+    story += [page_break(), *body_annex.annex(results, lang)]
     return engineer_blocks(story, results)
 
 

@@ -1,23 +1,23 @@
-"""Number formats and small helpers of the report's tables (plain text, not markup):
-
-- accelerations in g: 3 decimals (:func:`fmt_acc`);
-- ratios (capacity/demand, improvement): 2 decimals (:func:`fmt_ratio`);
-- IDA multipliers: 3 decimals; masses: 1 decimal (kg); costs: 0 decimals with thousands commas.
+"""The table builders' shared pieces (plain text, not markup): :class:`TableData`, the
+cutting of a table with a column per record, and the helpers every annex and body table
+uses.  Numbers in the language's format come from :class:`~frp_assess.report.lang.Lang`
+(accelerations in g with 3 decimals, ratios with 2, masses in kg with 1, costs with 0 and
+grouped thousands); here only what needs more: ρ in ‰ (:func:`permille`), capacity/demand
+against its verdict (:func:`capacity_text`), and the run's English prose
+(:func:`run_text`: shown in an English report only).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
 
 from frp_assess.numbers import fmt_against
+from frp_assess.report.lang import Lang
 from frp_assess.results.model import AssessmentResult, CaseResult
-from frp_assess.text_safety import Markup, pdf
 
 Results = AssessmentResult
 
 DASH = "—"
-NO_COLLAPSE = "no collapse ≤ C_max"
 
 
 @dataclass(frozen=True)
@@ -52,41 +52,13 @@ def column_blocks(
     return blocks
 
 
-def head(template: str, **user: object) -> Markup:
-    """A header cell of constant markup ``template`` with user values (escaped) filled in."""
-    return Markup(template.format(**{k: pdf(v) for k, v in user.items()}))
-
-
 # --- number formats -----------------------------------------------------------------------
-
-
-def fmt_acc(x: float | None) -> str:
-    return DASH if x is None else f"{x:.3f}"
-
-
-def fmt_ratio(x: float | None) -> str:
-    return DASH if x is None else f"{x:.2f}"
-
-
-fmt_q = fmt_ratio
 
 
 def fmt_capacity(case: CaseResult, target: float) -> str:
     """capacity/demand of a case with enough decimals to agree with its verdict against
     ``target`` (0.997 → '0.997', not '1.00', when it does not meet 1)."""
     return fmt_against(case.capacity_demand, target, case.meets_target)
-
-
-def fmt_mult(x: float | None) -> str:
-    return NO_COLLAPSE if x is None else f"{x:.3f}"
-
-
-def fmt_mass(x: float | None) -> str:
-    return DASH if x is None else f"{x:.1f}"
-
-
-def fmt_cost(x: float | None) -> str:
-    return DASH if x is None else f"{x:,.0f}"
 
 
 def fmt_permille(x: float | None) -> str:
@@ -96,27 +68,6 @@ def fmt_permille(x: float | None) -> str:
     return f"{x:.2f}".rstrip("0").rstrip(".")
 
 
-def fmt_num(x: Any, digits: int = 3) -> str:
-    """Generic value: numbers to ``digits`` significant figures, others as text."""
-    if x is None:
-        return DASH
-    if isinstance(x, bool):
-        return "yes" if x else "no"
-    if isinstance(x, int):
-        return str(x)
-    if isinstance(x, float):
-        return f"{x:.{digits}g}"
-    return str(x)
-
-
-def yes_no(x: bool | None) -> str:
-    return DASH if x is None else ("yes" if x else "no")
-
-
-def pass_fail(x: bool | None) -> str:
-    return DASH if x is None else ("pass" if x else "FAIL")
-
-
 # --- helpers on the results ---------------------------------------------------------------
 
 
@@ -124,13 +75,6 @@ def ranked_options(results: Results) -> list[CaseResult]:
     """Retrofit options by rank (1 first); unranked options last, in file order."""
     opts = [c for c in results.cases if c.material is not None]
     return sorted(opts, key=lambda c: (c.rank is None, c.rank or 0))
-
-
-def a_dyn_label(results: Results) -> str:
-    """Header markup of the design a_dyn column."""
-    return Markup(
-        "mean a<sub>dyn</sub> [g]" if results.design_is_mean else "min a<sub>dyn</sub> [g]"
-    )
 
 
 def bound(text: str, lower: bool) -> str:
@@ -144,5 +88,52 @@ def case_by_name(results: Results, name: str | None) -> CaseResult | None:
     return None
 
 
-def position_text(pos: str | None) -> str:
-    return DASH if pos is None else pos
+def crushing_shift(results: Results) -> float | None:
+    """x [m] of the unreinforced wall's crushing pivot, None when its model turns about the
+    edge (docs/model.md §1.1): results.json ``wall.a_rm`` is about that pivot."""
+    piv = results.urm.pivot
+    if piv is None or piv.model_pivot != "crushing" or piv.pivot_shift <= 0.0:
+        return None
+    return piv.depth
+
+
+def design_strain(results: Results) -> bool:
+    """True when the bars' rupture strain is the design value c·η_a·ε_fk/γ_f (some option
+    has bars as built with ``bars.design_values``), False for the mean c·ε_u (docs/model.md
+    §2.1)."""
+    return any(c.as_built is not None and c.as_built.strain.design_values for c in results.cases)
+
+
+def rupture_strain_words(results: Results) -> str:
+    """ε_max in symbols, as the model used it: c·η_a·ε_fk/γ_f or c·ε_u."""
+    return "c·η_a·ε_fk/γ_f" if design_strain(results) else "c·ε_u"
+
+
+def permille(x: float | None, lang: Lang) -> str:
+    """ρ in ‰: at most 2 decimals, trailing zeros dropped (2 → '2', 1.579 → '1.58'), the
+    language's decimal separator."""
+    return lang.numbers_in(fmt_permille(x))
+
+
+def capacity_text(case: CaseResult, target: float, lang: Lang) -> str:
+    """:func:`fmt_capacity` with the language's decimal separator."""
+    return lang.numbers_in(fmt_capacity(case, target))
+
+
+def shows_run_prose(lang: Lang) -> bool:
+    """The prose the run writes into results.json is English: a report in English shows it,
+    one in another language rebuilds its words from the values or leaves it out."""
+    return lang.code == "en"
+
+
+def run_text(text: str | None, lang: Lang) -> str:
+    """Prose the run wrote in English into results.json (a compliance requirement, a pivot
+    reason, the ranking rule...): shown as written in an English report, a dash in another
+    language (the annex rebuilds what it can from the values)."""
+    return run_words(text, lang) or DASH
+
+
+def run_words(text: str | None, lang: Lang) -> str | None:
+    """:func:`run_text` for a paragraph: the run's English prose, None in another language
+    or when there is none."""
+    return text if text and shows_run_prose(lang) else None

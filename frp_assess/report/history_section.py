@@ -9,10 +9,9 @@ import re
 from frp_assess.report import charts
 from frp_assess.report.doc_model import Block, with_subscripts
 from frp_assess.report.flow import esc, figure, keep, markup
-from frp_assess.report.formats import TableData
+from frp_assess.report.formats import TableData, rupture_strain_words
 from frp_assess.report.ida_words import rule_key
 from frp_assess.report.lang import Lang
-from frp_assess.report.tables_inputs import rupture_strain_words
 from frp_assess.results.model import AssessmentResult, HistoryRun
 from frp_assess.text_safety import Markup
 

@@ -18,8 +18,8 @@ from reportlab.lib.units import mm
 
 from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import esc, grid, h1, h2, markup
+from frp_assess.report.formats import TableData
 from frp_assess.report.lang import Lang
-from frp_assess.report.tables import TableData
 from frp_assess.results.carried_loads import (
     BASE_REACTION,
     WALL_WEIGHT,

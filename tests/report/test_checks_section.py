@@ -1,12 +1,16 @@
-"""The report section of the code's kinematic checks (frp_assess.report.checks_section)."""
+"""The annex's section of the code's kinematic checks (frp_assess.report.annex_checks)."""
 
 from __future__ import annotations
 
 from pathlib import Path
+from types import SimpleNamespace
+from typing import Any
 
 from reportlab.platypus import Paragraph, SimpleDocTemplate
 
-from frp_assess.report.checks_section import checks_section, checks_table, curves_table
+from frp_assess.report import annex_checks
+from frp_assess.report.formats import TableData
+from frp_assess.report.lang import Lang
 from frp_assess.report.render_pdf import flowables
 from frp_assess.results.checks import (
     CapacitySummary,
@@ -55,6 +59,30 @@ CHECKS = KinematicChecks(
     FloorBasis(2 / 3, 3, 0.2598, 0.05, 2.15),
     (_case("Unreinforced", FELL, IDA), _case("CFRP <external> & 1‰", QUIET, None)),
 )
+
+
+EN = Lang("en")
+
+
+def _results(checks: KinematicChecks) -> Any:
+    """Results holding only ``checks`` (no case of results.json: cases named as checked)."""
+    return SimpleNamespace(kinematic_checks=checks, cases=())
+
+
+def checks_table(checks: KinematicChecks) -> TableData:
+    table = annex_checks.checks_table(_results(checks), EN)
+    assert table is not None
+    return table
+
+
+def curves_table(checks: KinematicChecks) -> TableData:
+    table = annex_checks.curves_table(_results(checks), EN)
+    assert table is not None
+    return table
+
+
+def checks_section(checks: KinematicChecks) -> list[Any]:
+    return annex_checks.checks_section(_results(checks), EN)
 
 
 def _text(flowables: list[object]) -> str:

@@ -1,4 +1,4 @@
-"""The report's issue-15 parts (frp_assess.report.floor_section): the wall above ground on page 1
+"""The report's issue-15 parts (frp_assess.report.annex_floor): the wall above ground on page 1
 and in §3.4 with the floor spectra, the code's checks in §4.4 and their verdicts in the summary,
 FC in the capacity/demand wording.  Built on the fixture with the issue-15 fields added."""
 
@@ -10,17 +10,15 @@ from pathlib import Path
 from reportlab.graphics.shapes import Drawing
 
 from frp_assess.numbers import check_verdicts, checks_line, checks_summary, no_retrofit_caveats
-from frp_assess.report import build_report, build_story
-from frp_assess.report.floor_section import (
-    floor_rows,
-    floor_spectra_chart,
-    linear_check,
-)
+from frp_assess.report import annex_floor, build_report, build_story
+from frp_assess.report.annex_floor import linear_check
+from frp_assess.report.lang import Lang
 from frp_assess.results.json_io import from_json, to_json
 from frp_assess.results.model import AssessmentResult, BuildingResult, FloorSpectraResult
 from tests.report.test_checks_section import CHECKS
 from tests.report.test_report import DATA, story_text
 
+EN, IT = Lang("en"), Lang("it")
 BUILDING = BuildingResult(
     height=9.0,
     storeys=3,
@@ -70,7 +68,7 @@ def test_story_states_the_floor_motion_the_checks_and_fc():
     assert "2.00–2.00 times the ground records'" in page1  # floor_pga = 2·pga in the fixture
     assert "The code's checks" in page1
     assert (
-        f"{results.urm.name}: passes nonlinear SLC, IDA; fails linear, nonlinear SLV, "
+        f"{EN.t('annex.urm')}: passes nonlinear SLC, IDA; fails linear, nonlinear SLV, "
         "time history" in page1
     )
     assert "B.3.4 The motion at the wall's base" in text
@@ -90,18 +88,28 @@ def test_ground_level_results_have_none_of_it():
 
 
 def test_floor_rows_say_whether_t1_is_the_default():
-    rows = dict(floor_rows(_above_ground()))
+    rows = dict(annex_floor.floor_rows(_above_ground(), EN))
     # 0.30 s given; the default 0.05·9^0.75 = 0.2598 s is named beside it
     assert rows["first-mode period T_1"].startswith("0.300 s (given; the default")
     assert "0.260 s" in rows["first-mode period T_1"]
     default = replace(BUILDING, period=BUILDING.period_default)
-    rows = dict(floor_rows(replace(_above_ground(), building=default)))
+    rows = dict(annex_floor.floor_rows(replace(_above_ground(), building=default), EN))
     assert "(default C1·H_b^0.75" in rows["first-mode period T_1"]
 
 
 def test_floor_chart_is_drawn_only_with_the_spectra():
-    assert isinstance(floor_spectra_chart(_above_ground()), Drawing)
-    assert floor_spectra_chart(replace(_above_ground(), floor_spectra=None)) is None
+    assert isinstance(annex_floor.floor_spectra_chart(_above_ground(), EN), Drawing)
+    assert annex_floor.floor_spectra_chart(replace(_above_ground(), floor_spectra=None), EN) is None
+
+
+def test_the_italian_annex_rebuilds_the_floor_sentence_from_the_values():
+    """The run's English sentence (building.shaken_by) is not copied into an Italian report:
+    the annex says it from Z and the records' floor PGA (2·PGA in the fixture)."""
+    text = annex_floor.floor_sentence(_above_ground(), IT)
+    assert text is not None and "Z = 6 m" in text and "da 2,00 a 2,00 volte" in text
+    assert BUILDING.shaken_by not in text
+    rows = dict(annex_floor.floor_rows(_above_ground(), IT))
+    assert rows["periodo del primo modo T_1"].startswith("0,300 s (assegnato")
 
 
 def test_check_verdict_lines():
@@ -117,6 +125,11 @@ def test_check_verdict_lines():
     ]
     assert checks_line(urm_checks) == (
         "passes nonlinear SLC, IDA; fails linear, nonlinear SLV, time history"
+    )
+    # the annex says the console's line in words of the catalogue, in both languages
+    assert annex_floor.checks_line(urm_checks, EN) == checks_line(urm_checks)
+    assert annex_floor.checks_line(urm_checks, IT) == (
+        "soddisfa non lineare SLC, IDA; non soddisfa lineare, non lineare SLV, analisi al passo"
     )
     results = _above_ground()
     rows = checks_summary(results)

@@ -1,10 +1,10 @@
-"""The report's sentence on the action each limit state is checked at (report.body_annex)."""
+"""The report's sentence on the action each limit state is checked at (report.annex_checks)."""
 
 from __future__ import annotations
 
 from types import SimpleNamespace
 
-from frp_assess.report.body_annex import intensities_text
+from frp_assess.report.annex_checks import intensities_text
 from frp_assess.report.lang import Lang
 from frp_assess.results.checks import KinematicChecks, LimitStateIntensity
 

@@ -16,10 +16,10 @@ from pathlib import Path
 
 import pytest
 
-from frp_assess.report import as_built_section, build_story
-from frp_assess.report import tables as tb
+from frp_assess.report import annex_input_tables as tb
+from frp_assess.report import build_story, pivot_section
 from frp_assess.results.model import AssessmentResult
-from tests.report.test_report import story_text
+from tests.report.test_report import EN, story_text
 from tests.results.test_pivot_and_as_built import small_result
 
 
@@ -47,7 +47,7 @@ def strain_values(r: AssessmentResult, design: bool) -> AssessmentResult:
 
 def test_crushing_pivot_a_rm_is_labelled_with_its_formula(tmp_path: Path) -> None:
     r = small_result(tmp_path)
-    label, value = tb.wall_property_rows(r)[-1]
+    label, value = tb.wall_property_rows(r, EN)[-1]
     assert "g·tan α" not in label
     m = re.search(r"g·\(B − x\)/H \(crushing pivot, x = (\d+) mm\)", label)
     assert m is not None, label
@@ -61,7 +61,7 @@ def test_crushing_pivot_a_rm_is_labelled_with_its_formula(tmp_path: Path) -> Non
 
 def test_edge_pivot_a_rm_is_g_tan_alpha(tmp_path: Path) -> None:
     r = edge_pivot(small_result(tmp_path))
-    label, value = tb.wall_property_rows(r)[-1]
+    label, value = tb.wall_property_rows(r, EN)[-1]
     assert label == "rocking activation a_RM = g·tan α"
     assert value == "0.100 g"
     assert "half the compressed zone under its weight" not in story_text(build_story(r))
@@ -71,13 +71,13 @@ def test_rupture_strain_words_follow_design_values(tmp_path: Path) -> None:
     r = small_result(tmp_path)
     assert all(c.as_built is not None for c in r.options)
     design = strain_values(r, design=True)
-    rows = dict((k, v) for k, v in tb.model_rows(design) if isinstance(k, str))
+    rows = dict((k, v) for k, v in tb.model_rows(design, EN) if isinstance(k, str))
     assert "cyclic strain factor c (ε_max = c·η_a·ε_fk/γ_f)" in rows
     text = story_text(build_story(design))
     assert "ε_max = c·η_a·ε_fk/γ_f with c = 0.5 (CNR-DT 200 design values" in text
     assert "ε_max = c·ε_u with c" not in text
     mean = strain_values(r, design=False)
-    rows = dict((k, v) for k, v in tb.model_rows(mean) if isinstance(k, str))
+    rows = dict((k, v) for k, v in tb.model_rows(mean, EN) if isinstance(k, str))
     assert "cyclic strain factor c (ε_max = c·ε_u)" in rows
     assert "ε_max = c·ε_u with c = 0.5 (mean values)" in story_text(build_story(mean))
 
@@ -89,7 +89,7 @@ def test_pivot_paragraph_states_the_rule_the_model_ran(tmp_path: Path) -> None:
     with the edge pivot the paragraph states the x/B = 0.10 limit (DEFAULT_PIVOT_LIMIT) at
     which the edge model overstates the lever arm, without dropping anything."""
     r = small_result(tmp_path)
-    text = as_built_section.masonry_text(r)
+    text = pivot_section.masonry_text(r, EN)
     assert "follows the bars at every instant" in text
     assert "the toe crushes" in text and "No option is dropped" in text
     assert "held for the whole" not in text and "sized on" not in text
@@ -100,7 +100,7 @@ def test_pivot_paragraph_states_the_rule_the_model_ran(tmp_path: Path) -> None:
             for c in r.cases
         ),
     )
-    text = as_built_section.masonry_text(edge)
+    text = pivot_section.masonry_text(edge, EN)
     assert "deeper than x/B = 0.10" in text
     assert "dropped when" not in text and "stated fraction" not in text
 

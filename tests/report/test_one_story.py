@@ -30,6 +30,7 @@ from frp_assess.numbers import recommendation_label, recommendation_text
 from frp_assess.report import build_document
 from frp_assess.report.doc_model import Keep, Para, Table, markup_text
 from frp_assess.report.document import load_results
+from frp_assess.report.lang import Lang
 from frp_assess.results.model import AssessmentResult
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -52,7 +53,7 @@ NOT_ROBUST = {
 }
 VERDICT_COLUMN = {
     "en": ("deciding checks", "deciding<br/>checks"),
-    "it": ("verifiche determinanti",),
+    "it": ("verifiche determinanti", "verifiche<br/>determinanti"),
 }
 #: the last column of the sensitivity table (its verdict column is the one before)
 GOVERNING_MARGIN = ("governing margin", "margine che governa")
@@ -124,6 +125,8 @@ def test_every_verdict_word_is_the_decision(results, code: str) -> None:
             # the body's ranking and the Italian annex start with the rank; the English
             # annex's ranking with the rank, then the case's name
             case = r.case(row[1]) or by_rank.get(int(row[0]) if row[0].isdigit() else None)
+            if row[1] == Lang(code).t("annex.urm"):  # the annex's name of the wall as it is
+                case = r.urm
             if row[0] in ("—", "-") and case is None:
                 case = r.urm
             assert case is not None, (name, code, row)

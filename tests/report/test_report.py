@@ -15,12 +15,14 @@ from reportlab.platypus import Paragraph, Table
 
 from frp_assess.cli import main
 from frp_assess.errors import InputError
-from frp_assess.report import build_report, build_story, load_results
-from frp_assess.report import tables as tb
+from frp_assess.report import annex_result_tables as tb
+from frp_assess.report import build_report, build_story, ida_words, load_results
+from frp_assess.report.lang import Lang
 from frp_assess.results.json_io import from_data, from_json
 from frp_assess.results.model import SCHEMA_VERSION, AssessmentResult
 
 DATA = Path(__file__).with_name("data") / "results.json"
+EN = Lang("en")
 REPORT_PKG = Path(tb.__file__).parent
 
 
@@ -112,10 +114,10 @@ def test_build_replaces_existing_file(results: AssessmentResult, tmp_path: Path)
 
 
 def test_ranking_rows_equal_results(results: AssessmentResult) -> None:
-    data = tb.ranking_table(results)
+    data = tb.ranking_table(results, EN)
     assert len(data.header) == 13 and len(data.rows) == 19
-    assert data.rows[0][1] == "Unreinforced" and data.rows[0][0] == "—"
-    by_name = {c.name: c for c in results.cases}
+    assert data.rows[0][1] == EN.t("annex.urm") and data.rows[0][0] == "—"
+    by_name = {c.name: c for c in results.cases} | {EN.t("annex.urm"): results.urm}
     ranks = [int(r[0]) for r in data.rows[1:]]
     assert ranks == sorted(ranks) == list(range(1, 19))
     for row in data.rows:
@@ -142,7 +144,7 @@ def test_story_shows_user_text_as_typed(results: AssessmentResult) -> None:
     assert results.project.notes in text
     assert results.project.engineer in text
     assert "&lt;" not in text and "&amp;" not in text
-    for row in tb.ranking_table(results).rows:
+    for row in tb.ranking_table(results, EN).rows:
         for cell in row:
             assert cell in text
 
@@ -162,20 +164,22 @@ def test_pdf_text_contains_name_and_ranking_numbers(
     for sym in ("θ", "α", "ρ", "ε", "‰", "²", "³"):
         assert sym in text
     words = set(text.split())
-    for row in tb.ranking_table(results).rows:
+    for row in tb.ranking_table(results, EN).rows:
         for cell in row[4:12]:
             assert cell.removeprefix("≥ ") in words, cell
 
 
 def test_null_multiplier_is_no_collapse(results: AssessmentResult) -> None:
+    """A record without collapse up to C_max (multiplier null) reads "no collapse" in the
+    annex's record-by-record table, its a_dyn and q dashes."""
     case = next(c for c in results.cases if c.lower_bound)
-    rows = tb.case_records_table(case).rows
-    nc = [r for r in rows if r[2] == "no collapse ≤ C_max"]
+    rows = ida_words.records_table(case, results, EN).rows
+    nc = [r for r in rows if r[2] == EN.t("word.no_collapse")]
     assert len(nc) == 1 and nc[0][3] == "—" and nc[0][4] == "—"
 
 
 def test_summary_table_recommended_and_alternatives(results: AssessmentResult) -> None:
-    rows = tb.summary_table(results).rows
+    rows = tb.summary_table(results, EN).rows
     assert [r[0] for r in rows] == [
         "existing",
         "recommended",
@@ -191,7 +195,7 @@ def test_summary_table_when_no_retrofit_is_needed(results: AssessmentResult) -> 
     'recommended' (the summary says no retrofit is needed)."""
     r = raw()
     r["cases"][0]["meets_target"] = True
-    rows = tb.summary_table(typed(r)).rows
+    rows = tb.summary_table(typed(r), EN).rows
     assert rows[1][0] == "cheapest (optional)" and rows[1][1] == r["recommended"]
 
 

@@ -1,7 +1,7 @@
 """The report shows the time-history check at SLC beside the one at SLV (Circolare 2019
 §C8.7.1.2.1.9; docs/model.md, "Displacement-based checks"): both decide, so both are in the
-per-case lines, the English checks table and the annex table, in both languages and both
-renderers (one document model).
+per-case lines and the annex's checks table, in both languages and both renderers (one
+document model).
 
 The checks are built here with hand-picked peaks; every value the report must show is worked
 out in the test from those inputs (ζ_E = d_limit / mean peak, displacements in mm)."""
@@ -14,13 +14,12 @@ from pathlib import Path
 import pytest
 
 from frp_assess.numbers import check_verdicts
-from frp_assess.report.body_annex import checks_table as annex_checks_table
+from frp_assess.report.annex_checks import checks_table
 from frp_assess.report.body_checks import _checks_lines
-from frp_assess.report.checks_section import checks_table
 from frp_assess.report.doc_model import plain_texts
 from frp_assess.report.document import build_document, build_docx
 from frp_assess.report.lang import LANGUAGES, Lang
-from frp_assess.results.checks import CaseChecks, TimeHistoryResult
+from frp_assess.results.checks import CaseChecks, KinematicChecks, TimeHistoryResult
 from frp_assess.results.model import AssessmentResult
 from tests.report.test_checks_section import CAPACITY, CHECKS, IDA, LINEAR, _ls
 from tests.report.test_document_model import (
@@ -73,9 +72,18 @@ def _results(code: str) -> AssessmentResult:
     return replace(results_in(code), kinematic_checks=KC)
 
 
+def th_rows(checks: KinematicChecks, code: str = "en") -> list[list[str]]:
+    """The time-history rows of the annex's checks table of ``checks`` in language ``code``."""
+    lang = Lang(code)
+    table = checks_table(replace(results_in(code), kinematic_checks=checks), lang)
+    assert table is not None
+    th = lang.t("ax.chk.th", ls="", at="", what="").split()[0]  # "time", "analisi"
+    return [r for r in table.rows if r[1].startswith(th)]
+
+
 def test_the_checks_table_has_a_row_per_limit_state():
     """English checks table: SLV then SLC, each with its own a_g·S, d_limit and mean peak."""
-    rows = [r for r in checks_table(KC).rows if r[1].startswith("time history")]
+    rows = th_rows(KC)
     assert [r[1] for r in rows[:2]] == [
         "time history SLV at a_g·S = 0.295 g: d_SLV vs mean peak",
         "time history SLC at a_g·S = 0.355 g: d_SLC vs mean peak",
@@ -87,7 +95,7 @@ def test_the_checks_table_has_a_row_per_limit_state():
 
 def test_results_without_the_slc_check_keep_one_row():
     """A file written before the SLC check (no time_history_slc, no a_g): one row, at SLV."""
-    rows = [r[1] for r in checks_table(CHECKS).rows if r[1].startswith("time history")]
+    rows = [r[1] for r in th_rows(CHECKS)]
     assert rows == ["time history SLV: d_SLV vs mean peak"] * 2
 
 
@@ -106,23 +114,21 @@ def test_the_case_lines_name_the_slc_check(code: str, zeta: str, word: str):
 
 
 @pytest.mark.parametrize("code", LANGUAGES)
-def test_the_annex_table_has_an_slc_column(code: str):
+def test_the_annex_table_has_an_slc_row(code: str):
+    """The annex's checks table, in both languages: the SLV then the SLC time history of
+    each case, ζ_E and the verdict worked out above."""
     lang = Lang(code)
-    table = annex_checks_table(_results(code), lang)
-    assert table is not None
-    assert table.header[4:] == [lang.t("check.th", ls="SLV"), lang.t("check.th", ls="SLC"), "IDA"]
-    urm, option = table.rows
     num = lang.num
-    assert urm[5] == f"{num(ZETA_URM_SLC, 2)} {lang.t('annex.ok')}"
-    assert option[5] == f"{num(ZETA_OPT_SLC, 2)} {lang.t('annex.ko')}"
-    assert option[4] == f"{num(D_SLV / 0.025, 2)} {lang.t('annex.ok')}"
+    rows = th_rows(KC, code)
+    assert [("SLV" in r[1], "SLC" in r[1]) for r in rows] == [(True, False), (False, True)] * 2
+    assert rows[1][4:] == [num(ZETA_URM_SLC, 2), lang.t("ax.pass")]
+    assert rows[3][4:] == [num(ZETA_OPT_SLC, 2), lang.t("ax.fail")]
+    assert rows[2][4:] == [num(D_SLV / 0.025, 2), lang.t("ax.pass")]
 
 
-def test_the_annex_table_of_an_older_file_has_no_slc_column():
-    results = replace(results_in("it"), kinematic_checks=CHECKS)
-    table = annex_checks_table(results, Lang("it"))
-    assert table is not None and len(table.header) == 6
-    assert all(len(r) == 6 for r in table.rows)
+def test_the_annex_table_of_an_older_file_has_no_slc_row():
+    rows = th_rows(CHECKS, "it")
+    assert len(rows) == len(CHECKS.cases) and not any("SLC" in r[1] for r in rows)
 
 
 @pytest.mark.parametrize("code", LANGUAGES)
@@ -142,7 +148,7 @@ def test_both_renderers_show_the_slc_check(code: str, tmp_path: Path):
     if code == "en":
         assert "time history SLC at a_g·S = 0.355 g: d_SLC vs mean peak" in text
     else:
-        assert not ENGLISH.search(slc + Lang(code).t("annex.checks.note"))
+        assert not ENGLISH.search(slc + Lang(code).t("ax.chk.lead"))
 
 
 def test_the_short_check_names_tell_the_two_time_histories_apart():
@@ -169,7 +175,7 @@ def test_a_record_beyond_d0_gives_the_zeta_that_decides(code: str):
     case line and the annex cell print ζ_E < 1 with the failure."""
     th = D0_GOVERNS.time_history_slc
     assert th is not None and not th.passed and th.ratio > 1.0
-    rows = checks_table(replace(KC, cases=(D0_GOVERNS,))).rows
+    rows = th_rows(replace(KC, cases=(D0_GOVERNS,)))
     row = next(r for r in rows if r[1].startswith("time history SLC"))
     assert row[1] == "time history SLC at a_g·S = 0.355 g: d0 vs largest peak"
     assert row[2:] == [f"{1e3 * D0:.1f} mm", "210.0 mm", f"{ZETA_D0:.2f}", "FAIL (d0 exceeded)"]
@@ -178,7 +184,5 @@ def test_a_record_beyond_d0_gives_the_zeta_that_decides(code: str):
     assert f"{lang.t('check.th', ls='SLC')}: ζ<sub>E</sub> = {zeta} (" in _checks_lines(
         D0_GOVERNS, lang
     )
-    results = replace(results_in(code), kinematic_checks=replace(KC, cases=(URM, D0_GOVERNS)))
-    table = annex_checks_table(results, lang)
-    assert table is not None
-    assert table.rows[1][5] == f"{zeta} {lang.t('annex.ko')}"
+    rows = th_rows(replace(KC, cases=(URM, D0_GOVERNS)), code)
+    assert rows[3][4:] == [zeta, lang.t("ax.fail") + lang.t("ax.chk.d0_exceeded")]

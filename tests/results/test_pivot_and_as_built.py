@@ -25,13 +25,17 @@ from frp_assess.assess.results import case_failure_mode
 from frp_assess.assess.runner import design_search
 from frp_assess.cli.cmd_run import built_lines
 from frp_assess.cli.ranking import dropped_lines, ranking_rows
-from frp_assess.report import as_built_section, pivot_section
+from frp_assess.report import annex_as_built, pivot_section
+from frp_assess.report.annex_design_tables import anchorage_table
+from frp_assess.report.annex_result_tables import ranking_table
+from frp_assess.report.lang import Lang
 from frp_assess.report.pdf_document import build_report
-from frp_assess.report.tables import EN, ranking_table
 from frp_assess.results.json_io import from_json, to_json
 from frp_assess.results.model import AssessmentResult
 from tests.assess.test_as_built import RatioRunner, inputs_of
 from tests.assess.test_run import small_inputs
+
+EN = Lang("en")
 
 _CACHE: dict[str, AssessmentResult] = {}
 
@@ -120,8 +124,8 @@ def test_a_file_with_a_dropped_option_still_reads_and_shows_why(tmp_path: Path) 
     rows = ranking_rows(result)
     assert [row[0] for row in rows] == ["—", "1", "dropped"]
     assert dropped_lines(result) == ["B: x/B = 0.600; dropped: too deep"]
-    assert [row[0] for row in ranking_table(result).rows] == ["—", "1", "dropped"]
-    assert as_built_section.dropped_reasons(result) == ["B: x/B = 0.600; dropped: too deep"]
+    assert [row[0] for row in ranking_table(result, EN).rows] == ["—", "1", "dropped"]
+    assert annex_as_built.dropped_reasons(result, EN) == ["B: x/B = 0.600; dropped: too deep"]
     # the pivot table states how each record's collapse ended, not "holds"/"dropped"
     # (issue 39: "holds" beside options whose every record fails by crushing)
     pivot_rows = pivot_section.pivot_table(result, EN).rows
@@ -179,18 +183,18 @@ def test_the_report_sections_render(tmp_path: Path) -> None:
     ext = r.options[0].as_built
     assert ext is not None
     # the layout in words, as the layout's numbers say: n × Ød per face at s m
-    assert as_built_section.layout_text(ext) == (
+    assert annex_as_built.layout_text(ext, EN) == (
         f"{ext.bars_per_line} × Ø{ext.diameter:g} per face (2 faces) at {ext.spacing:.3f} m "
         f"({2 * ext.bars_per_line} bars)"
     )
-    flow = as_built_section.section(r)
+    flow = annex_as_built.section(r, EN)
     text = " ".join(getattr(f, "text", "") or getattr(f, "markup", "") for f in flow)
     assert "The retrofit as built" in text and "The masonry at the base" in text
     assert "c·η_a·ε_fk/γ_f" in text or "mean producer values" in text
-    assert len(as_built_section.layout_table(r).rows) == 2
-    assert [row[0] for row in as_built_section.anchorage_table(r).rows] == [
-        c.name for c in r.options
-    ]
+    assert len(annex_as_built.layout_table(r, EN).rows) == 2
+    anchorage = anchorage_table(r, EN)
+    assert anchorage is not None
+    assert [row[0] for row in anchorage.rows] == [c.name for c in r.options]
     out = tmp_path / "report.pdf"
     build_report(r, out)
     assert out.stat().st_size > 10_000
@@ -200,7 +204,7 @@ def test_the_report_sections_render(tmp_path: Path) -> None:
         masonry_strength=None,
         cases=tuple(replace(c, as_built=None, pivot=None) for c in r.cases),
     )
-    assert as_built_section.section(bare) == []
+    assert annex_as_built.section(bare, EN) == []
     assert math.isfinite(r.urm.mean_q)
 
 

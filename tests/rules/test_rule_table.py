@@ -36,12 +36,7 @@ ROWS = table_rows(DOC.read_text(encoding="utf-8"))
 
 #: (name, module) defining a row's name for something else, each with why; each must still be
 #: there (the entry goes with the clash)
-SAME_NAME_ELSEWHERE: dict[tuple[str, str], str] = {
-    ("design_statistic", "frp_assess.report.sections"): "the report's sentence saying which "
-    "statistic the design value is (it calls the rule through results.design_is_mean); "
-    "report/ is outside this branch: renamed when the report's two section families are "
-    "merged (issue 37 step 3b)",
-}
+SAME_NAME_ELSEWHERE: dict[tuple[str, str], str] = {}
 
 
 def module_level_definitions(path: Path) -> set[str]:
