@@ -8,13 +8,13 @@ from pathlib import Path
 import pytest
 
 from frp_assess.config import load_project_text
-from frp_assess.config.building import (
+from frp_assess.config.problems import problems_of
+from frp_assess.config.walls_file import (
     LoadedBuilding,
     load_building,
     load_building_text,
     wall_slug,
 )
-from frp_assess.config.problems import problems_of
 from frp_assess.errors import InputError
 
 FIXTURE = Path(__file__).parents[1] / "fixtures" / "building-small.yaml"

@@ -21,8 +21,8 @@ from frp_assess.config import (
     load_project_text,
     validate_data,
 )
-from frp_assess.config.building import PER_WALL_BLOCKS as PER_WALL
 from frp_assess.config.schema import CONFIDENCE_FACTORS, format_ratio
+from frp_assess.config.walls_file import PER_WALL_BLOCKS as PER_WALL
 from frp_assess.errors import InputError
 
 PACKAGE = Path(frp_assess.__file__).parent

@@ -1,4 +1,4 @@
-"""The JSON Schema's view of a building file (``walls:``, :mod:`frp_assess.config.building`).
+"""The JSON Schema's view of a building file (``walls:``, :mod:`frp_assess.config.walls_file`).
 
 A building file is validated wall by wall as one-wall :class:`Project` files (so that every
 check is the one-wall project's); these models only describe it, for ``frp-assess schema``
@@ -15,9 +15,9 @@ from frp_assess.config.schema.retrofit_spec import DesignSpec, InterventionItem
 from frp_assess.config.schema.spec_base import MAX_OPTIONS, FreeText
 from frp_assess.config.schema.wall_spec import BuildingSpec, WallSpec
 
-#: longest name of a wall of a building [characters] (as frp_assess.config.building)
+#: longest name of a wall of a building [characters] (as frp_assess.config.walls_file)
 MAX_WALL_NAME = 80
-#: most walls in one building file (as frp_assess.config.building)
+#: most walls in one building file (as frp_assess.config.walls_file)
 MAX_WALLS = 60
 
 
