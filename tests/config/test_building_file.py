@@ -136,3 +136,23 @@ def test_slugs() -> None:
     assert wall_slug("Facciata sud, piano terra") == "facciata-sud-piano-terra"
     assert wall_slug("Città — è ") == "citta-e"
     assert wall_slug("???") == "wall"
+
+
+def test_validate_summarises_a_building_and_locates_its_problems(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    from frp_assess.cli import main
+
+    assert main(["validate", str(FIXTURE)]) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert out[0] == f"{FIXTURE}: OK — building 'Casa di prova': 3 walls"
+    assert sum(line.startswith("  spectrum:") for line in out) == 1  # shared: once
+    assert "  walls[1] 'Timpano est' (results in walls/timpano-est/):" in out
+    assert any(line.startswith("    building: H_b = 10 m") for line in out)
+    bad = tmp_path / "b.yaml"
+    bad.write_text(_text().replace("    height: 2.5\n", "    height: 0.2\n"), encoding="utf-8")
+    assert main(["validate", str(bad)]) == 2
+    err = capsys.readouterr().err.splitlines()
+    line = _line_of(bad.read_text(encoding="utf-8"), "height: 0.2")
+    assert len(err) == 1
+    assert err[0].startswith(f"frp-assess: error: {bad}:{line}: walls[1].height: expected")
