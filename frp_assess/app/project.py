@@ -142,14 +142,21 @@ def _relocated_line(wall: LoadedWall, line: str) -> str:
 
 def ensure_project_file(path: Path) -> None:
     """Refuse, as one line, a file that is not a readable YAML project file: a folder, FIFO,
-    device or oversized file, a YAML syntax error, or a study file (which names the command
-    that runs it).  A valid project is not checked further here."""
+    device or oversized file, a YAML syntax error, a study file or a building file (which
+    name the command that runs them).  A valid project is not checked further here."""
     text = read_text_file(path, "project file")
     data, _lines = parse_yaml(text, str(path))
     if looks_like_study(data):
         raise InputError(
             "is a study file: the terminal UI edits project files; run it with "
             f"`frp-assess study {path}` (check it with `frp-assess validate`)",
+            file=str(path),
+        )
+    if is_building(data):  # not yet: the TUI edits one wall (issue 41 item 5)
+        raise InputError(
+            "is a building file (walls:): the terminal UI edits one-wall projects; run it with "
+            f"`frp-assess run {path}` (one wall: --wall NAME; check it with `frp-assess "
+            "validate`)",
             file=str(path),
         )
 

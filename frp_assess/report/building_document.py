@@ -64,7 +64,22 @@ def _proposed(w: WallSummary, lang: Lang) -> str:
         if w.closest is not None:
             return _t(lang, "proposed.none_passes", closest=w.closest)
         return _t(lang, "proposed.none")
-    return w.proposed if w.as_built is None else f"{w.proposed}: {w.as_built}"
+    if w.bars is None:
+        return w.proposed
+    b = w.bars
+    where = _t(lang, "bars.centred" if b.lines == 1 else "bars.external", lines=b.lines)
+    bars = _t(
+        lang,
+        "bars",
+        per_line=b.bars_per_line,
+        d=lang.gnum(b.diameter),
+        where=where,
+        s=lang.num(b.spacing, 3),
+        total=b.total_bars,
+        installed=lang.num(b.ratio_installed, 2),
+        asked=lang.num(b.ratio_asked, 2),
+    )
+    return f"{w.proposed}: {bars}"
 
 
 def retrofit_rows(b: BuildingResults, lang: Lang) -> list[tuple[str, ...]]:
@@ -149,7 +164,7 @@ def building_blocks(b: BuildingResults, lang: Lang) -> list[Block]:
         _t(lang, "col.governing"),
     )
     name_w = 0.22 * FRAME_WIDTH
-    governing_w = 0.12 * FRAME_WIDTH
+    governing_w = 0.14 * FRAME_WIDTH
     rest = (FRAME_WIDTH - name_w - governing_w) / (len(checks_header) - 2)
     retrofit_header = (
         _t(lang, "col.wall"),

@@ -15,6 +15,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from frp_assess.results.as_built import AsBuilt
 from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.results.run_inputs import ProjectInfo, Software
 
@@ -51,6 +52,24 @@ class CaseZeta:
 
 
 @dataclass(frozen=True)
+class BarsBuilt:
+    """The proposed retrofit's bars as built (a wall's ``cases[i].as_built``, in short): the
+    material and position, Ø [mm], lines (1 centred, 2 external: one per face), whole bars per
+    line and in all, their spacing [m], the ratio installed and asked [‰], metres of bar [m]."""
+
+    material: str
+    position: str
+    diameter: float
+    lines: int
+    bars_per_line: int
+    total_bars: int
+    spacing: float
+    ratio_installed: float
+    ratio_asked: float
+    metres: float
+
+
+@dataclass(frozen=True)
 class WallSummary:
     """One wall (local mechanism) of the building: where its results are, its geometry
     (B, H, L [m]; wall_base Z [m], None at ground level), the code check's α₀ [-] and a₀* [g],
@@ -73,7 +92,8 @@ class WallSummary:
     #: when the wall passes as it is, the cheapest option for extra margin is not proposed
     proposed: str | None
     proposed_checks: CaseZeta | None
-    as_built: str | None  #: the proposed retrofit's bars as built, one line
+    as_built: str | None  #: the proposed retrofit's bars as built, one line (English)
+    bars: BarsBuilt | None  #: the same bars, number by number
     frp_mass: float | None
     frp_cost: float | None
     #: when nothing passes: the option with the largest governing margin; else None
@@ -135,6 +155,22 @@ def case_zeta(results: AssessmentResult, case: CaseResult) -> CaseZeta:
     )
 
 
+def bars_built(b: AsBuilt) -> BarsBuilt:
+    """The short form of bars as built."""
+    return BarsBuilt(
+        b.material,
+        b.position,
+        b.diameter,
+        b.lines,
+        b.bars_per_line,
+        b.total_bars,
+        b.spacing,
+        b.ratio_installed,
+        b.ratio_asked,
+        b.metres,
+    )
+
+
 def _verdict(passes: bool | None) -> str:
     return "passes" if passes else "fails"
 
@@ -162,6 +198,7 @@ def wall_summary(name: str, folder: str, results: AssessmentResult) -> WallSumma
         proposed=None if proposed is None else proposed.name,
         proposed_checks=None if proposed is None else case_zeta(results, proposed),
         as_built=None if built is None else built.note,
+        bars=None if built is None else bars_built(built),
         frp_mass=None if proposed is None else proposed.frp_mass,
         frp_cost=None if proposed is None else proposed.frp_cost,
         closest=results.closest if results.retrofit_required and proposed is None else None,

@@ -195,7 +195,9 @@ def test_the_summary_s_numbers_are_each_wall_s_results(building_run: Path) -> No
         if proposed is not None:
             assert row["frp_mass"] == cases[proposed]["frp_mass"]
             assert row["frp_cost"] == cases[proposed]["frp_cost"]
-            assert row["as_built"] == cases[proposed]["as_built"]["note"]
+            built = cases[proposed]["as_built"]
+            assert row["as_built"] == built["note"]
+            assert {k: built[k] for k in row["bars"]} == row["bars"]
             mass += cases[proposed]["frp_mass"]
             cost += cases[proposed]["frp_cost"]
         margins[row["name"]] = cases["Unreinforced"]["governing_margin"]
