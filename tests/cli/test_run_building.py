@@ -213,3 +213,27 @@ def test_report_of_the_building_folder_points_to_the_walls(
     assert main(["report", str(building_run), "--out", str(building_run.parent / "r.pdf")]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "is a building's summary" in err and "walls/" in err
+
+
+def test_a_users_file_in_a_wall_s_folder_or_a_link_for_walls_is_refused(
+    building_run: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A wall's folder follows a results folder's rules (checked before any work), and the
+    walls/ folder itself is never a link or a file."""
+    out = tmp_path / "out"
+    shutil.copytree(building_run, out)
+    (out / "walls" / "parapetto" / "results.csv").write_bytes(b"the user's own table")
+    before = tree(out)
+    assert main(["run", str(FIXTURE), "--out", str(out), "--no-pdf"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "parapetto" in err and "results.csv" in err, err
+    assert tree(out) == before
+    other = tmp_path / "other"
+    other.mkdir()
+    linked = tmp_path / "linked"
+    linked.mkdir()
+    (linked / "walls").symlink_to(other)
+    assert main(["run", str(FIXTURE), "--out", str(linked), "--no-pdf"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "walls" in err and "link" in err, err
+    assert list(other.iterdir()) == []
