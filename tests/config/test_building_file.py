@@ -156,3 +156,29 @@ def test_validate_summarises_a_building_and_locates_its_problems(
     line = _line_of(bad.read_text(encoding="utf-8"), "height: 0.2")
     assert len(err) == 1
     assert err[0].startswith(f"frp-assess: error: {bad}:{line}: walls[1].height: expected")
+
+
+def test_the_template_s_walls_example_uncommented_is_a_valid_building(tmp_path: Path) -> None:
+    """templates/wall.yaml's commented `walls:` block, uncommented in place of `wall:`, is a
+    building of two walls (the gable with its own floor and options)."""
+    import frp_assess
+
+    template = Path(frp_assess.__file__).parent / "templates" / "wall.yaml"
+    lines = template.read_text(encoding="utf-8").splitlines()
+    start = next(i for i, ln in enumerate(lines) if ln.startswith("# walls:"))
+    out = list(lines)
+    i = start
+    while lines[i].startswith("#") and not lines[i].startswith("#   frp-assess run"):
+        out[i] = lines[i][2:]
+        i += 1
+    wall = out.index("wall:")  # the one wall: replaced by the building's walls
+    end = next(j for j in range(wall + 1, len(out)) if out[j] and not out[j].startswith(" "))
+    del out[wall:end]
+    path = tmp_path / "b.yaml"
+    path.write_text("\n".join(out) + "\n", encoding="utf-8")
+    b = load_building(path)
+    assert b.names() == ["south facade, ground floor", "gable, top storey"]
+    gable = b.walls[1].loaded.project
+    assert gable.building is not None and gable.building.wall_base == 9.0
+    assert len(gable.expand_interventions()) == 1
+    assert len(b.walls[0].loaded.project.expand_interventions()) > 1  # the file's options
