@@ -15,6 +15,8 @@ report.pdf / report.docx, which opens with the summary.
 
 from __future__ import annotations
 
+import hashlib
+import json
 import os
 import sys
 import threading
@@ -22,14 +24,17 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from frp_assess import __version__
 from frp_assess.app.assessment import Progress, RunStats, run_assessment, run_date
+from frp_assess.app.rerun import file_hash, referenced_paths, unchanged_folder, write_sidecar
 from frp_assess.assess.from_project import as_built_warnings, inputs_of_loaded
 from frp_assess.assess.inputs import AssessmentInputs
 from frp_assess.assess.seismic import SeismicInput, build_records
+from frp_assess.config.loader import project_data
 from frp_assess.config.problems import problems_of, raise_all
 from frp_assess.config.walls_file import LoadedBuilding, LoadedWall, load_building
 from frp_assess.errors import InputError
-from frp_assess.io_utils import atomic_write_text
+from frp_assess.io_utils import atomic_write_text, read_results_text
 from frp_assess.output_set import (
     FolderLock,
     check_out_dir,
@@ -38,7 +43,7 @@ from frp_assess.output_set import (
 )
 from frp_assess.results.building_csv import building_csv
 from frp_assess.results.building_summary import BuildingResults, building_results
-from frp_assess.results.json_io import to_json
+from frp_assess.results.json_io import from_json, to_json
 from frp_assess.results.model import AssessmentResult
 from frp_assess.results.run_inputs import ProjectInfo
 
@@ -149,6 +154,8 @@ class WallOutcome:
     wall: WallInputs
     results: AssessmentResult
     stats: RunStats
+    #: the wall's folder held the results of its inputs as they are: read, nothing run
+    unchanged: bool = False
 
 
 @dataclass(frozen=True)
@@ -190,6 +197,35 @@ def shared_records() -> Callable[[AssessmentInputs], SeismicInput]:
     return records_of
 
 
+def wall_digest(wall: WallInputs, input_file: str) -> str:
+    """``"sha256:<hex>"`` of what a wall's results depend on (as
+    :func:`~frp_assess.app.rerun.inputs_digest` for a one-wall file): its one-wall project
+    (every value), the bytes of the files it references, the building file's name, the
+    frp-assess version and the integration options of its inputs (``--rtol``, ``--verify``)."""
+    loaded = wall.wall.loaded
+    content = {
+        "frp_assess": __version__,
+        "input_file": input_file,
+        "project": project_data(loaded.project),
+        "files": [[f, file_hash(loaded.base_dir / f)] for f in referenced_paths(loaded.project)],
+        "options": {"rtol": wall.inputs.model.tolerance, "verify": wall.inputs.verify},
+    }
+    text = json.dumps(content, sort_keys=True, ensure_ascii=True, separators=(",", ":"))
+    return "sha256:" + hashlib.sha256(text.encode("ascii")).hexdigest()
+
+
+def _stored(wall: WallInputs, folder: Path, digest: str, pdf: bool) -> AssessmentResult | None:
+    """The wall's stored results when its folder holds the run of its inputs as they are
+    (:func:`~frp_assess.app.rerun.unchanged_folder`), else None."""
+    if unchanged_folder(folder, digest, pdf=pdf) is None:
+        return None
+    stored = folder / "results.json"
+    try:
+        return from_json(read_results_text(stored), file=str(stored))
+    except InputError:
+        return None
+
+
 def run_building(
     building: BuildingInputs,
     out_dir: Path,
@@ -201,11 +237,16 @@ def run_building(
     cancel: threading.Event | None = None,
     created: str | None = None,
     pdf: bool = True,
+    reuse: bool = True,
 ) -> BuildingRun:
     """Run every wall of ``building`` into ``out_dir/walls/<slug>/`` and, when every wall of
     the file was run, write the building's output set in ``out_dir``.  ``progress`` is each
     wall's (:func:`~frp_assess.app.assessment.run_assessment`), ``wall_started`` says which
-    wall it is about; ``records_ready`` receives the shared records once they are made."""
+    wall it is about; ``records_ready`` receives the shared records once they are made.
+
+    ``reuse``: a wall whose folder holds the complete run of its inputs as they are now (the
+    digest of :func:`wall_digest` in its sidecar, as an unchanged one-wall ``run``) is read,
+    not run again; a changed wall runs with its IDA cache."""
     created = created or run_date()
     out_dir = Path(out_dir)
     records_of = shared_records()
@@ -221,16 +262,25 @@ def run_building(
                     records_ready(seismic)
             if wall_started is not None:
                 wall_started(i, len(building.walls), wall)
+            folder = out_dir / wall.folder
+            digest = wall_digest(wall, building.building.path.name)
+            stored = _stored(wall, folder, digest, pdf) if reuse else None
+            if stored is not None:
+                outcomes.append(WallOutcome(wall, stored, RunStats(0, 0, folder), True))
+                continue
             results, stats = run_assessment(
                 wall.inputs,
-                out_dir / wall.folder,
+                folder,
                 jobs=jobs,
                 progress=progress,
                 cancel=cancel,
                 seismic=seismic,
                 created=created,
                 pdf=pdf,
+                inputs_digest=digest,
             )
+            files = referenced_paths(wall.wall.loaded.project)
+            write_sidecar(folder, digest, results.created, files, pdf=pdf)
             outcomes.append(WallOutcome(wall, results, stats))
         summary = None
         if building.complete:
@@ -238,6 +288,7 @@ def run_building(
                 _building_info(building.building, outcomes[0].results),
                 building.building.path.name,
                 [(o.wall.name, o.wall.folder, o.results) for o in outcomes],
+                created=created,
             )
             write_building_outputs(summary, outcomes, out_dir, pdf=pdf)
     assert records is not None  # a building has at least one wall

@@ -98,17 +98,23 @@ def run_building_file(args: argparse.Namespace, path: Path, out: Path) -> int:
                 cancel=cancel,
                 created=args.created,
                 pdf=not args.no_pdf,
+                reuse=args.created is None,  # --created (the golden tests): always run
             )
         except KeyboardInterrupt:
             cancel.set()
             raise Cancelled("interrupted") from None
     for outcome in run.walls:
         console.rule(user(f"{outcome.wall.name}: {outcome.wall.folder}/"))
+        if outcome.unchanged:
+            console.print(f"unchanged since {user(outcome.results.created)}: nothing recomputed")
         print_summary(console, outcome.results)
     if run.building is not None:
         print_building_summary(console, run.building)
     per_wall = "; ".join(
-        f"{o.wall.name}: {o.stats.computed} computed, {o.stats.reused} reused" for o in run.walls
+        f"{o.wall.name}: unchanged"
+        if o.unchanged
+        else f"{o.wall.name}: {o.stats.computed} computed, {o.stats.reused} reused"
+        for o in run.walls
     )
     where = f"{out_dir}/" if run.building is not None else f"{out_dir}/{run.walls[0].wall.folder}/"
     console.print(

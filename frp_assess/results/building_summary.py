@@ -217,8 +217,11 @@ def building_results(
     project: ProjectInfo,
     input_file: str,
     walls: Sequence[tuple[str, str, AssessmentResult]],
+    *,
+    created: str | None = None,
 ) -> BuildingResults:
-    """The building's results from its walls' (name, folder, results), in file order."""
+    """The building's results from its walls' (name, folder, results), in file order;
+    ``created``: the date of the run (default: the first wall's)."""
     if not walls:
         raise ValueError("a building has at least one wall")
     rows = tuple(wall_summary(name, folder, results) for name, folder, results in walls)
@@ -240,7 +243,7 @@ def building_results(
         kind=BUILDING_KIND,
         building_schema_version=BUILDING_SCHEMA_VERSION,
         software=first.software,
-        created=first.created,
+        created=created or first.created,
         input_file=input_file,
         project=project,
         walls=rows,

@@ -98,7 +98,7 @@ def test_an_edit_of_one_wall_recomputes_that_wall_only(building_run: Path, tmp_p
     assert text.count("    height: 1.0\n") == 1
     project.write_text(text.replace("    height: 1.0\n", "    height: 1.2\n"), "utf-8")
     building = load_building_inputs(project, warn=None)
-    run = run_building(building, out, jobs=2, created=CREATED, pdf=False)
+    run = run_building(building, out, jobs=2, created=CREATED, pdf=False, reuse=False)
     stats = {o.wall.name: (o.stats.computed, o.stats.reused) for o in run.walls}
     records = 2
     assert stats["Facciata sud, piano terra"] == (0, 2 * records)  # unreinforced + 1 option
@@ -106,6 +106,19 @@ def test_an_edit_of_one_wall_recomputes_that_wall_only(building_run: Path, tmp_p
     assert stats["Parapetto"] == (2 * records, 0)
     assert run.building is not None
     assert [w.height for w in run.building.walls] == [3.5, 2.5, 1.2]
+    # run again as `run` does (without --created): every wall's folder holds the run of its
+    # inputs as they are now, so none runs; then an edit of the gable runs the gable alone
+    again = run_building(building, out, jobs=2, pdf=False)
+    assert [o.unchanged for o in again.walls] == [True, True, True]
+    assert (again.computed, again.reused) == (0, 0)
+    text = project.read_text(encoding="utf-8").replace("length: 7.0", "length: 7.5")
+    project.write_text(text, "utf-8")
+    edited = run_building(load_building_inputs(project, warn=None), out, jobs=2, pdf=False)
+    assert [o.unchanged for o in edited.walls] == [True, False, True]
+    gable = edited.walls[1]
+    # 7.5 m holds 60 bars per face at the same spacing as 56 on 7 m: the same ratio and model
+    assert gable.stats.computed == 0 and gable.stats.reused == 2 * records
+    assert gable.results.wall.length == 7.5
 
 
 def test_one_wall_by_name(building_run: Path, tmp_path: Path) -> None:
