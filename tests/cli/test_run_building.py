@@ -250,3 +250,26 @@ def test_a_users_file_in_a_wall_s_folder_or_a_link_for_walls_is_refused(
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "walls" in err and "link" in err, err
     assert list(other.iterdir()) == []
+
+
+@pytest.mark.parametrize(
+    ("text", "building"),
+    [
+        ("walls:\n  - name: a\n", True),
+        ("project: {name: x}\nwalls: []\n", True),
+        ("\ufeff'walls' : []\n", True),
+        ("project:\n  notes: |\n    walls: many\nwall: {}\n", False),  # a block scalar's text
+        ("# walls:\nwall: {}\n", False),  # the template's comment
+        ('# c\n{"project": {"name": "x"}, "walls": []}\n', True),  # flow style: parsed
+        ('{"project": {"notes": "walls: x"}, "wall": {}}\n', False),
+    ],
+)
+def test_run_tells_a_building_file_before_importing_the_schema(
+    tmp_path: Path, text: str, building: bool
+) -> None:
+    from frp_assess.app.building_file import is_building_file
+
+    path = tmp_path / "f.yaml"
+    path.write_text(text, encoding="utf-8")
+    assert is_building_file(path) is building
+    assert is_building_file(path, "a wall") is True  # --wall: a building is expected
