@@ -15,6 +15,7 @@ import yaml
 from frp_assess.app.assessment import prepare_run, run_prepared
 from frp_assess.app.preview import frp_mass_per_metre, wall_derived
 from frp_assess.app.project import (
+    CheckedBuilding,
     CheckedProject,
     CheckedStudy,
     check_file,
@@ -43,6 +44,10 @@ def test_check_file_tells_a_project_from_a_study(tmp_path: Path) -> None:
     with pytest.raises(InputError, match="is a study file"):
         ensure_project_file(study)
     ensure_project_file(project)  # a project passes
+    building = Path(__file__).parent / "fixtures" / "building-small.yaml"
+    assert isinstance(check_file(building), CheckedBuilding)
+    with pytest.raises(InputError, match="is a building file.*frp-assess run"):
+        ensure_project_file(building)  # the TUI edits one wall: refused before the screen
 
 
 def test_prepare_run_reports_the_records_stage_and_a_cancelled_run_writes_nothing(

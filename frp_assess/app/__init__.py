@@ -5,6 +5,9 @@ cancellation are plain callables and :class:`threading.Event`, never UI objects:
 
 - :mod:`~frp_assess.app.project`: read, check, create and save a project file;
 - :mod:`~frp_assess.app.assessment`: prepare and run an assessment, show the last run again;
+- :mod:`~frp_assess.app.building_run`: run a building file (several walls) and its summary
+  (:mod:`~frp_assess.app.building_file`: is it one; :mod:`~frp_assess.app.building_report`:
+  its report);
 - :mod:`~frp_assess.app.report`: the output set, the PDF report, the export of a run;
 - :mod:`~frp_assess.app.history`: a run's time history of one case under one record;
 - :mod:`~frp_assess.app.study`: load, check and run a parametric study;

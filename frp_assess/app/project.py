@@ -28,6 +28,12 @@ from frp_assess.config import (
 )
 from frp_assess.config.loader import check_record_files, load_parsed
 from frp_assess.config.problems import problems_of, raise_all
+from frp_assess.config.walls_file import (
+    LoadedBuilding,
+    LoadedWall,
+    is_building,
+    load_building_parsed,
+)
 from frp_assess.config.yaml_source import parse_yaml, read_text_file
 from frp_assess.config.yaml_update import update_project_text
 from frp_assess.errors import InputError
@@ -37,6 +43,7 @@ from frp_assess.study.schema import StudyFile, looks_like_study, parse_study
 
 __all__ = [
     "TEMPLATE_NAME",
+    "CheckedBuilding",
     "CheckedProject",
     "CheckedStudy",
     "LoadedProject",
@@ -68,6 +75,14 @@ class CheckedProject:
 
 
 @dataclass(frozen=True)
+class CheckedBuilding:
+    """A valid building file (``walls:``): every wall's project checked as a one-wall file."""
+
+    building: LoadedBuilding
+    warnings: tuple[str, ...]
+
+
+@dataclass(frozen=True)
 class CheckedStudy:
     """A valid study file."""
 
@@ -75,7 +90,7 @@ class CheckedStudy:
     file: str  #: its name as given
 
 
-def check_file(path: Path) -> CheckedProject | CheckedStudy:
+def check_file(path: Path) -> CheckedProject | CheckedStudy | CheckedBuilding:
     """Validate a project or a study file (told apart by their keys); a project's record
     files are read too (their problems are errors, an implausible PGA a warning).
 
@@ -92,6 +107,8 @@ def check_file(path: Path) -> CheckedProject | CheckedStudy:
         study = parse_study(data, file=name, lines=lines)
         raise_all(study_problems(study, name, lines))
         return CheckedStudy(study, name)
+    if is_building(data):
+        return check_building(load_building_parsed(data, lines, name, base_dir=path.parent))
     loaded = load_parsed(data, lines, name, base_dir=path.parent)
     records, problems = read_record_files(loaded.project, loaded.base_dir)
     layout_errors, as_built = layout_problems(loaded)
@@ -99,16 +116,47 @@ def check_file(path: Path) -> CheckedProject | CheckedStudy:
     return CheckedProject(loaded, (*loaded.warnings, *as_built, *plausibility_warnings(records)))
 
 
+def check_building(building: LoadedBuilding) -> CheckedBuilding:
+    """A building's walls checked as :func:`check_file` checks a one-wall file (the records
+    once: they are the building's), every problem located in the building file."""
+    first = building.walls[0].loaded
+    records, problems = read_record_files(first.project, first.base_dir)
+    warnings = [*building.warnings]
+    for wall in building.walls:
+        layout_errors, as_built = layout_problems(wall.loaded)
+        problems += [wall.entry.relocated(e) for e in layout_errors]
+        warnings += [_relocated_line(wall, w) for w in as_built]
+    raise_all(problems)
+    return CheckedBuilding(building, (*warnings, *plausibility_warnings(records)))
+
+
+def _relocated_line(wall: LoadedWall, line: str) -> str:
+    """A located warning line ``file:line: key: message`` of a wall's one-wall project with
+    the building file's key (``interventions[0].ratio`` -> ``walls[1].interventions[0]...``)."""
+    head, sep, rest = line.partition(": ")
+    key, sep2, message = rest.partition(": ")
+    if not sep or not sep2:
+        return line
+    return f"{head}: {wall.entry.file_key(key)}: {message}"
+
+
 def ensure_project_file(path: Path) -> None:
     """Refuse, as one line, a file that is not a readable YAML project file: a folder, FIFO,
-    device or oversized file, a YAML syntax error, or a study file (which names the command
-    that runs it).  A valid project is not checked further here."""
+    device or oversized file, a YAML syntax error, a study file or a building file (which
+    name the command that runs them).  A valid project is not checked further here."""
     text = read_text_file(path, "project file")
     data, _lines = parse_yaml(text, str(path))
     if looks_like_study(data):
         raise InputError(
             "is a study file: the terminal UI edits project files; run it with "
             f"`frp-assess study {path}` (check it with `frp-assess validate`)",
+            file=str(path),
+        )
+    if is_building(data):  # not yet: the TUI edits one wall (issue 41 item 5)
+        raise InputError(
+            "is a building file (walls:): the terminal UI edits one-wall projects; run it with "
+            f"`frp-assess run {path}` (one wall: --wall NAME; check it with `frp-assess "
+            "validate`)",
             file=str(path),
         )
 

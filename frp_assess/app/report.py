@@ -161,19 +161,19 @@ def build_word(results: AssessmentResult, path: Path) -> bool:
     try:
         from frp_assess.report.document import build_docx
     except ImportError as exc:
-        _report_warning("report.docx", f"python-docx is not installed: {exc}")
+        report_warning("report.docx", f"python-docx is not installed: {exc}")
         return False
     try:
         build_docx(results, path)
     except (OSError, MemoryError):  # a full disk is not the report's fault: the set fails
         raise
     except Exception as exc:  # a template python-docx cannot read, ...
-        _report_warning("report.docx", str(exc).splitlines()[0] if str(exc) else type(exc).__name__)
+        report_warning("report.docx", str(exc).splitlines()[0] if str(exc) else type(exc).__name__)
         return False
     return True
 
 
-def _report_warning(name: str, reason: str) -> None:
+def report_warning(name: str, reason: str) -> None:
     print(
         f"frp-assess: warning: {name} not written: {plain(reason)[:160]}; the other results "
         "are complete",

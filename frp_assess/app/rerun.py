@@ -17,7 +17,7 @@ from __future__ import annotations
 import hashlib
 import json
 import os
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -36,6 +36,8 @@ __all__ = [
     "inputs_digest",
     "project_changed",
     "project_digest",
+    "file_hash",
+    "unchanged_folder",
     "referenced_paths",
     "unchanged_run",
     "write_sidecar",
@@ -53,7 +55,7 @@ _MAX_HASHED_BYTES = 64_000_000
 _MAX_SIDECAR_BYTES = 4_000_000
 
 
-def _file_hash(path: Path) -> str:
+def file_hash(path: Path) -> str:
     """SHA-256 of a regular file; ``"missing"`` for anything that cannot be read as one (a
     FIFO, a device, a folder, a file too large is never read: :func:`read_regular`)."""
     try:
@@ -77,8 +79,8 @@ def inputs_digest(
     base = project_file.parent
     content = {
         "frp_assess": __version__,
-        "project": _file_hash(project_file),
-        "files": [[f, _file_hash(base / f)] for f in files],
+        "project": file_hash(project_file),
+        "files": [[f, file_hash(base / f)] for f in files],
         "options": {"rtol": rtol, "verify": bool(verify)},
     }
     text = json.dumps(content, sort_keys=True, ensure_ascii=True, separators=(",", ":"))
@@ -109,7 +111,7 @@ def write_sidecar(
     run stopped between the two writes or a file replaced by hand, is not believed)."""
     from frp_assess.io_utils import atomic_write_text
 
-    results = _file_hash(Path(out_dir) / "results.json")
+    results = file_hash(Path(out_dir) / "results.json")
     data = {
         "digest": digest,
         "created": created,
@@ -141,7 +143,22 @@ def unchanged_run(
     spectra.csv, records/ and, if ``pdf``, report.pdf and report.docx) and its digest is
     that of the inputs now; else None (then the run happens as usual).  Never raises for a
     missing or broken sidecar: that is simply "not unchanged"."""
-    out_dir = Path(out_dir)
+    return _unchanged(
+        Path(out_dir),
+        pdf,
+        lambda files: inputs_digest(project_file, files, rtol=rtol, verify=verify),
+    )
+
+
+def unchanged_folder(out_dir: Path, digest: str, *, pdf: bool = True) -> Unchanged | None:
+    """:func:`unchanged_run` for inputs whose digest is known (a wall of a building:
+    :func:`frp_assess.app.building_run.wall_digest`)."""
+    return _unchanged(Path(out_dir), pdf, lambda files: digest)
+
+
+def _unchanged(out_dir: Path, pdf: bool, expected: Callable[[list[str]], str]) -> Unchanged | None:
+    """The stored run in ``out_dir`` if complete and its sidecar's digest is ``expected`` of
+    the files it lists (see :func:`unchanged_run`)."""
     try:
         data = json.loads(read_regular(out_dir / SIDECAR, "sidecar", _MAX_SIDECAR_BYTES))
         digest, created, files = data["digest"], data["created"], data["files"]
@@ -153,9 +170,9 @@ def unchanged_run(
     needed = [*_SET_FILES, *(("report.pdf", "report.docx") if pdf else ())]
     if not all(os.path.isfile(out_dir / n) for n in needed) or not (out_dir / "records").is_dir():
         return None
-    if inputs_digest(project_file, files, rtol=rtol, verify=verify) != digest:
+    if expected(files) != digest:
         return None
-    if _file_hash(out_dir / "results.json") != data.get("results"):
+    if file_hash(out_dir / "results.json") != data.get("results"):
         return None
     if not set_on_record(out_dir, REPORT_NAMES if pdf else ()):
         return None  # a member changed by hand, a report not made from these results

@@ -352,7 +352,13 @@ def load_inputs(
         warn: called with each warning line of the file (placeholders left unchanged...);
             the default prints it on stderr as ``frp-assess: warning: ...``; None: silent.
     """
-    loaded = load_project(path)
+    return inputs_of_loaded(load_project(path), warn=warn)
+
+
+def inputs_of_loaded(
+    loaded: LoadedProject, *, warn: Callable[[str], None] | None = _print_warning
+) -> AssessmentInputs:
+    """:func:`load_inputs` of a project already loaded (a wall of a building file)."""
     _, problems = read_record_files(loaded.project, loaded.base_dir)
     raise_all(problems)  # before any output folder is made: a bad record writes nothing
     if warn is not None:

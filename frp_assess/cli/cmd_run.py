@@ -6,12 +6,15 @@ import argparse
 import datetime as _dt
 import sys
 import threading
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from rich.console import Console
 
+from frp_assess.app.building_file import is_building_file
 from frp_assess.app.rerun import (
     inputs_digest,
     referenced_paths,
@@ -32,6 +35,9 @@ from frp_assess.numbers import (
 )
 from frp_assess.results.model import AssessmentResult
 from frp_assess.text_safety import plain
+
+#: progress(stage, done, total), as frp_assess.app.assessment.Progress
+ProgressFn = Callable[[str, int, int], None]
 
 if TYPE_CHECKING:  # the numerics are imported only when a run computes (not when unchanged)
     from frp_assess.app.assessment import AssessmentInputs, ComplianceReport
@@ -64,6 +70,12 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--verify",
         action="store_true",
         help="repeat every IDA at a 10x tighter tolerance and report the largest change of C",
+    )
+    p.add_argument(
+        "--wall",
+        metavar="NAME",
+        default=None,
+        help="a building file (walls:): assess only the wall called NAME",
     )
     # hidden: fixes results.json's `created` (tests/golden; or SOURCE_DATE_EPOCH, api.run_date)
     p.add_argument("--created", type=iso_date, default=None, help=argparse.SUPPRESS)
@@ -153,6 +165,10 @@ def print_floor_and_checks(console: Console, results: AssessmentResult) -> None:
 def run(args: argparse.Namespace) -> int:
     path = Path(args.file)
     out = Path(args.out) if args.out else default_out_dir(path)
+    if is_building_file(path, args.wall):  # several walls: cli/cmd_run_building.py
+        from frp_assess.cli.cmd_run_building import run_building_file
+
+        return run_building_file(args, path, out)
     if args.created is None and (args.jobs is None or args.jobs >= 1):
         same = unchanged_run(path, out, rtol=args.rtol, verify=args.verify, pdf=not args.no_pdf)
         if same is not None:
@@ -204,9 +220,9 @@ def activation_text(results: AssessmentResult) -> str:
     return text
 
 
-def _run(
-    args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path, files: list[str]
-) -> int:
+@contextmanager
+def progress_bars(console: Console, n_cases: int, n_records: int) -> Iterator[ProgressFn]:
+    """A progress callback (stage, done, total) drawing one bar per stage of a run."""
     from rich.progress import (
         BarColumn,
         MofNCompleteColumn,
@@ -215,6 +231,37 @@ def _run(
         TimeElapsedColumn,
     )
 
+    with Progress(
+        TextColumn("{task.description}"),
+        BarColumn(),
+        MofNCompleteColumn(),
+        TimeElapsedColumn(),
+        console=console,
+        transient=False,
+    ) as bar:
+        tasks: dict[str, Any] = {}
+
+        def progress(stage: str, done: int, total: int) -> None:
+            label = {
+                "ida": f"IDA {n_cases} cases × {n_records} records",
+                "design": "design mode",
+                "sensitivity": "sensitivity to the model conventions",
+                "checks": "code checks (time histories at a_g·S)",
+                "writing": "writing results",
+                "verify": "numerical check (10x tighter tolerance)",
+            }.get(stage)
+            if label is None:
+                return
+            if stage not in tasks:
+                tasks[stage] = bar.add_task(label, total=total)
+            bar.update(tasks[stage], completed=done, total=total)
+
+        yield progress
+
+
+def _run(
+    args: argparse.Namespace, inputs: AssessmentInputs, out_dir: Path, files: list[str]
+) -> int:
     from frp_assess.app.assessment import prepare_records, run_assessment
     from frp_assess.app.kernel import compile_notice
 
@@ -229,32 +276,7 @@ def _run(
         print(f"frp-assess: warning: {plain(line)}", file=sys.stderr)
     print_compliance(console, seismic.compliance)
     cancel = threading.Event()
-    n_cases = 1 + len(inputs.options)
-    with Progress(
-        TextColumn("{task.description}"),
-        BarColumn(),
-        MofNCompleteColumn(),
-        TimeElapsedColumn(),
-        console=console,
-        transient=False,
-    ) as bar:
-        tasks: dict[str, Any] = {}
-
-        def progress(stage: str, done: int, total: int) -> None:
-            label = {
-                "ida": f"IDA {n_cases} cases × {len(seismic.records)} records",
-                "design": "design mode",
-                "sensitivity": "sensitivity to the model conventions",
-                "checks": "code checks (time histories at a_g·S)",
-                "writing": "writing results",
-                "verify": "numerical check (10x tighter tolerance)",
-            }.get(stage)
-            if label is None:
-                return
-            if stage not in tasks:
-                tasks[stage] = bar.add_task(label, total=total)
-            bar.update(tasks[stage], completed=done, total=total)
-
+    with progress_bars(console, 1 + len(inputs.options), len(seismic.records)) as progress:
         try:
             results, stats = run_assessment(
                 inputs,

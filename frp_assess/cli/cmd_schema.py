@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import json
 
-from frp_assess.config.schema import Project
+from frp_assess.config.schema.building_spec import ProjectFileSchema
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -19,8 +19,10 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def project_json_schema() -> dict[str, object]:
-    """The JSON Schema of :class:`~frp_assess.config.schema.Project`."""
-    schema = Project.model_json_schema()
+    """The JSON Schema of a project file: :class:`~frp_assess.config.schema.Project`, with
+    ``walls:`` (a building) in place of ``wall:`` as the alternative (exactly one of them)."""
+    schema = ProjectFileSchema.model_json_schema()
+    schema["oneOf"] = [{"required": ["wall"]}, {"required": ["walls"]}]
     schema["$schema"] = "https://json-schema.org/draft/2020-12/schema"
     schema["title"] = "frp-assess project file"
     return schema

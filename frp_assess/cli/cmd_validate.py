@@ -8,6 +8,7 @@ import sys
 from pathlib import Path
 
 from frp_assess.app.project import (
+    CheckedBuilding,
     CheckedStudy,
     LoadedProject,
     check_file,
@@ -164,6 +165,24 @@ def summary(loaded: LoadedProject) -> list[str]:
     return lines
 
 
+#: the lines of :func:`summary` that belong to a wall of a building (the rest is shared)
+_WALL_LINES = ("  wall:", "  loads:", "  building:", "  options:", "  design:")
+
+
+def building_file_summary(checked: CheckedBuilding) -> list[str]:
+    """The lines printed by `validate` for a building file: the shared blocks once, then
+    each wall's own lines under its name."""
+    b = checked.building
+    first = summary(b.walls[0].loaded)
+    lines = [f"{b.path}: OK — building {b.name!r}: {len(b.walls)} walls"]
+    lines += [ln for ln in first[1:] if not ln.startswith(_WALL_LINES)]
+    for w in b.walls:
+        lines.append(f"  walls[{w.entry.index}] {w.name!r} (results in walls/{w.entry.slug}/):")
+        own = summary(w.loaded)[1:]
+        lines += [f"  {ln}" for ln in own if ln.startswith(_WALL_LINES)]
+    return lines
+
+
 def study_summary(study: StudyFile, file: str) -> list[str]:
     """The lines printed by `validate` for a study file."""
     rec = study.records
@@ -191,6 +210,8 @@ def validate_file(path: Path) -> tuple[list[str], tuple[str, ...]]:
     checked = check_file(path)
     if isinstance(checked, CheckedStudy):
         return study_summary(checked.study, checked.file), ()
+    if isinstance(checked, CheckedBuilding):
+        return building_file_summary(checked), checked.warnings
     return summary(checked.loaded), checked.warnings
 
 

@@ -78,6 +78,14 @@ def validate_data(
             file=file,
             line=1 if lines is not None else None,
         )
+    if "walls" in data:  # a building (config/walls_file.py): one project per wall
+        raise InputError(
+            "is a building file (walls:); this takes a one-wall project (wall:): assess the "
+            "building with 'frp-assess run' (one wall: 'frp-assess run --wall NAME')",
+            file=file,
+            line=lines.get(("walls",)) if lines is not None else None,
+            key="walls",
+        )
     try:
         return Project.model_validate(data)
     except ValidationError as exc:

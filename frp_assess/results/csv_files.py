@@ -84,7 +84,7 @@ def csv_style(results: AssessmentResult) -> CsvStyle:
     return CsvStyle(results.report.language if results.report is not None else "en")
 
 
-def _case_columns(results: AssessmentResult, st: CsvStyle) -> Callable[[CaseResult], list[str]]:
+def case_columns(results: AssessmentResult, st: CsvStyle) -> Callable[[CaseResult], list[str]]:
     """The ``case_*`` cells of a case (the same on every row of the case)."""
     target = float(results.model.target)
 
@@ -123,7 +123,7 @@ def results_csv(results: AssessmentResult) -> str:
     buf = io.StringIO()
     w = csv.writer(buf, delimiter=st.delimiter, lineterminator="\n")
     w.writerow(CSV_FIELDS)
-    case_cells = _case_columns(results, st)
+    case_cells = case_columns(results, st)
     for c in results.cases:
         shared = case_cells(c)
         for r in c.records:

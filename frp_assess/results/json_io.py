@@ -66,6 +66,13 @@ def from_json(text: str, *, file: str | None = None) -> AssessmentResult:
         raise InputError(f"invalid JSON: {exc}", file=file) from None
     if not isinstance(data, dict):
         raise InputError("not a results object", file=file)
+    if data.get("kind") == "building":  # results/building_summary.py: not a wall's results
+        raise InputError(
+            "is a building's summary (several walls); each wall's results are in its folder "
+            "walls/<name>/ beside it (frp-assess report <folder>/walls/<name>)",
+            file=file,
+            key="kind",
+        )
     version = data.get("schema_version")
     if version != SCHEMA_VERSION:
         raise InputError(

@@ -22,6 +22,7 @@ from frp_assess.config import (
     validate_data,
 )
 from frp_assess.config.schema import CONFIDENCE_FACTORS, format_ratio
+from frp_assess.config.walls_file import PER_WALL_BLOCKS as PER_WALL
 from frp_assess.errors import InputError
 
 PACKAGE = Path(frp_assess.__file__).parent
@@ -264,9 +265,12 @@ def test_cli_validate_prints_a_summary(capsys: pytest.CaptureFixture[str]) -> No
 def test_cli_schema_prints_valid_json_schema(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["schema"]) == 0
     schema = json.loads(capsys.readouterr().out)
-    assert set(schema["properties"]) == set(Project.model_fields)
+    assert set(schema["properties"]) == {*Project.model_fields, "walls"}
     assert schema["additionalProperties"] is False
-    assert set(schema["required"]) == {"wall", "seismic"}
+    assert set(schema["required"]) == {"seismic"}  # and exactly one of wall / walls:
+    assert schema["oneOf"] == [{"required": ["wall"]}, {"required": ["walls"]}]
+    item = schema["$defs"]["WallItemSpec"]["properties"]  # a building's wall: wall's keys + 4
+    assert set(item) == {*schema["$defs"]["WallSpec"]["properties"], *PER_WALL, "name"}
     wall = schema["$defs"]["WallSpec"]["properties"]
     assert all("description" in field for field in wall.values())
 
