@@ -26,9 +26,9 @@ from frp_assess.assess.inputs import (
     RetrofitOption,
 )
 from frp_assess.assess.kinematic_checks import ida_capacity_demand
-from frp_assess.assess.loads_record import loads_result
+from frp_assess.assess.loads_record import loads_result, tie_result
 from frp_assess.assess.pivot_check import case_pivot
-from frp_assess.assess.quantities import built_quantity
+from frp_assess.assess.quantities import Quantity, built_quantity, tie_quantity
 from frp_assess.assess.recorded_inputs import (
     building_result,
     compliance_result,
@@ -48,6 +48,7 @@ from frp_assess.assess.statistics import (
 from frp_assess.assess.verification import NumericalCheck
 from frp_assess.dynamics import IdaSettings, RockingModel
 from frp_assess.motions import G
+from frp_assess.results.carried_loads import TieOptionResult
 from frp_assess.results.checks import KinematicChecks
 from frp_assess.results.model import (
     SCHEMA_VERSION,
@@ -174,21 +175,20 @@ def case_result(
         for name, res, a, fp in zip(names, summary.results, summary.a_dyn, pgas, strict=True)
     )
     built = None if option is None else option_as_built(inputs, option)
-    if option is None:
-        q_mass = q_mass_m = cost = 0.0
-    else:
-        q = built_quantity(inputs, built, option.material, option.position, option.ratio)
-        q_mass, q_mass_m, cost = q.mass, q.mass_per_m, q.cost
+    material = None if option is None else option.material
+    q = Quantity(0.0, 0.0, 0.0)
+    if option is not None and material is not None and option.position is not None:
+        q = built_quantity(inputs, built, material, option.position, option.ratio)
     cd = ida_capacity_demand(summary.design_a_dyn, demand, fc)
     return CaseResult(
         name=option.name if option else UNREINFORCED,
-        material=option.material.name if option else None,
+        material=material.name if material else None,
         position=option.position if option else None,
         ratio=option.ratio if option else 0.0,
-        elastic_modulus=option.material.elastic_modulus if option else None,
-        ultimate_strain=option.material.ultimate_strain if option else None,
+        elastic_modulus=material.elastic_modulus if material else None,
+        ultimate_strain=material.ultimate_strain if material else None,
         K=model.K,
-        theta_max=_finite(model.theta_max) if option else None,
+        theta_max=_finite(model.theta_max) if material else None,
         records=records,
         mean_a_dyn=summary.mean_a_dyn,
         min_a_dyn=summary.min_a_dyn,
@@ -198,9 +198,9 @@ def case_result(
         capacity_demand=cd,
         improvement=summary.design_a_dyn / urm_design,
         scatter=scatter_result(summary, names, demand, inputs.ida),
-        frp_mass_per_m=q_mass_m,
-        frp_mass=q_mass,
-        frp_cost=cost,
+        frp_mass_per_m=q.mass_per_m,
+        frp_mass=q.mass,
+        frp_cost=q.cost,
         # the IDA check alone; the decision sets it again (false for a dropped option)
         meets_target=cd >= inputs.target,
         rank=None,
@@ -209,6 +209,26 @@ def case_result(
         pivot=case_pivot(inputs, option).result(),
         fc=fc,
         failure_mode=case_failure_mode(records),
+        kind=None if option is None or option.kind == "bars" else option.kind,
+        tie=None if option is None else tie_option_result(inputs, option),
+    )
+
+
+def tie_option_result(inputs: AssessmentInputs, option: RetrofitOption) -> TieOptionResult | None:
+    """The tie of ``option`` (None: none) as results.json records it, with its steel and cost
+    (:func:`~frp_assess.assess.quantities.tie_quantity`)."""
+    if option.tie is None:
+        return None
+    prices = inputs.costs.ties
+    q = tie_quantity(option.tie, prices, inputs.length)
+    return TieOptionResult(
+        tie=tie_result(option.tie),
+        steel_mass_per_m=q.mass_per_m,
+        steel_mass=q.mass,
+        cost_per_tie=q.cost_per_tie,
+        cost_per_m=q.cost_per_m,
+        cost=q.cost,
+        prices_given=prices.given,
     )
 
 
