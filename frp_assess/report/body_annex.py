@@ -69,7 +69,7 @@ def options_table(results: Results, lang: Lang) -> TableData:
         rank = str(c.rank) if c.rank is not None else lang.t("annex.dropped")
         rows.append([rank, _described(c, lang), _bound(n(c.design_a_dyn, 3), lb),
                      _bound(n(c.capacity_demand, 2), lb), _bound(n(c.improvement, 2), lb),
-                     n(c.frp_mass, 1), n(c.frp_cost, 0, grouping=True),
+                     n(c.frp_mass, 1), n(c.option_cost, 0, grouping=True),
                      cell(c, lang)])  # fmt: skip
     return TableData(header, rows)
 

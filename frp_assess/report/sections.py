@@ -64,7 +64,7 @@ def _option_sentence(results: Results, c: CaseResult) -> str:
     return (
         f"<b>{esc(c.name)}</b>: {tb.fmt_mass(c.frp_mass)} kg of {esc(c.material)} "
         f"({tb.fmt_mass(c.frp_mass_per_m)} kg per metre of wall), indicative cost "
-        f"{tb.fmt_cost(c.frp_cost)} {esc(cur)}; capacity/demand "
+        f"{tb.fmt_cost(c.option_cost)} {esc(cur)}; capacity/demand "
         f"{esc(tb.bound(tb.fmt_capacity(c, results.model.target), lb))}, improvement "
         f"{esc(tb.bound(tb.fmt_ratio(c.improvement), lb))} × the unreinforced wall"
         + ("" if passes(c) else f" (does <b>not</b> pass every deciding check: {governing(c, EN)})")
