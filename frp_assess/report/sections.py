@@ -61,9 +61,19 @@ def _verdict(ok: bool, text: str) -> Block:
 def _option_sentence(results: Results, c: CaseResult) -> str:
     cur = results.costs.currency
     lb = c.lower_bound
+    parts = []
+    if c.material is not None:
+        parts.append(
+            f"{tb.fmt_mass(c.frp_mass)} kg of {esc(c.material)} "
+            f"({tb.fmt_mass(c.frp_mass_per_m)} kg per metre of wall)"
+        )
+    if c.tie is not None:
+        parts.append(
+            f"tie-rods of {tb.fmt_mass(c.tie.steel_mass)} kg of steel "
+            f"({tb.fmt_mass(c.tie.steel_mass_per_m)} kg per metre of wall)"
+        )
     return (
-        f"<b>{esc(c.name)}</b>: {tb.fmt_mass(c.frp_mass)} kg of {esc(c.material)} "
-        f"({tb.fmt_mass(c.frp_mass_per_m)} kg per metre of wall), indicative cost "
+        f"<b>{esc(c.name)}</b>: {' and '.join(parts)}, indicative cost "
         f"{tb.fmt_cost(c.option_cost)} {esc(cur)}; capacity/demand "
         f"{esc(tb.bound(tb.fmt_capacity(c, results.model.target), lb))}, improvement "
         f"{esc(tb.bound(tb.fmt_ratio(c.improvement), lb))} × the unreinforced wall"

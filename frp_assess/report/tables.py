@@ -159,7 +159,7 @@ def ranking_row(case: CaseResult, target: float) -> list[str]:
     return [
         rank_text(case),
         case.name,
-        case.material or "none",
+        case.material or ("tie" if case.tie is not None else "none"),
         position_text(case.position),
         fmt_permille(case.ratio),
         fmt_mass(case.frp_mass_per_m),
