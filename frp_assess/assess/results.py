@@ -26,9 +26,9 @@ from frp_assess.assess.inputs import (
     RetrofitOption,
 )
 from frp_assess.assess.kinematic_checks import ida_capacity_demand
-from frp_assess.assess.loads_record import loads_result, tie_result
+from frp_assess.assess.loads_record import loads_result, tie_option_result, tie_prices_result
 from frp_assess.assess.pivot_check import case_pivot
-from frp_assess.assess.quantities import Quantity, built_quantity, tie_quantity
+from frp_assess.assess.quantities import Quantity, built_quantity
 from frp_assess.assess.recorded_inputs import (
     building_result,
     compliance_result,
@@ -48,7 +48,6 @@ from frp_assess.assess.statistics import (
 from frp_assess.assess.verification import NumericalCheck
 from frp_assess.dynamics import IdaSettings, RockingModel
 from frp_assess.motions import G
-from frp_assess.results.carried_loads import TieOptionResult
 from frp_assess.results.checks import KinematicChecks
 from frp_assess.results.model import (
     SCHEMA_VERSION,
@@ -211,24 +210,6 @@ def case_result(
         failure_mode=case_failure_mode(records),
         kind=None if option is None or option.kind == "bars" else option.kind,
         tie=None if option is None else tie_option_result(inputs, option),
-    )
-
-
-def tie_option_result(inputs: AssessmentInputs, option: RetrofitOption) -> TieOptionResult | None:
-    """The tie of ``option`` (None: none) as results.json records it, with its steel and cost
-    (:func:`~frp_assess.assess.quantities.tie_quantity`)."""
-    if option.tie is None:
-        return None
-    prices = inputs.costs.ties
-    q = tie_quantity(option.tie, prices, inputs.length)
-    return TieOptionResult(
-        tie=tie_result(option.tie),
-        steel_mass_per_m=q.mass_per_m,
-        steel_mass=q.mass,
-        cost_per_tie=q.cost_per_tie,
-        cost_per_m=q.cost_per_m,
-        cost=q.cost,
-        prices_given=prices.given,
     )
 
 
@@ -425,6 +406,7 @@ def build_results(
         costs=Costs(
             currency=inputs.costs.currency,
             installation_per_metre=inputs.costs.installation_per_metre,
+            ties=tie_prices_result(inputs),
         ),
         seismic=seismic_result(inputs, seismic),
         demand=Demand(pga=inputs.spectrum.pga_g),

@@ -29,6 +29,7 @@ from frp_assess.report import build_document
 from frp_assess.report.doc_model import Keep, Para, markup_text
 from frp_assess.report.document import load_results
 from frp_assess.results.model import AssessmentResult
+from frp_assess.results.run_inputs import TiePricesResult
 
 PROJECT = """\
 project: {name: Tie option run}
@@ -94,6 +95,7 @@ def test_results_record_the_tie_options_by_hand(run: tuple[Path, str]) -> None:
     assert replace(both.tie, tie=replace(both.tie.tie, name=q.tie.name)) == q
     assert both.frp_cost == pytest.approx(bars.frp_cost) and both.frp_mass == bars.frp_mass
     assert both.option_cost == pytest.approx(bars.frp_cost + 778.917, abs=5e-4)
+    assert r.costs.ties == TiePricesResult(2.0, 0.0, 50.0, 250.0)
     # the static α₀ of eq. C8.7.1.1, the tie at its capacity (module docstring)
     assert r.kinematic_checks is not None
     alpha0 = {c.case: c.linear.alpha0 for c in r.kinematic_checks.cases}
