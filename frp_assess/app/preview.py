@@ -13,9 +13,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from frp_assess.assess.from_project import loads_of, material_of, spectrum_of
+from frp_assess.assess.from_project import costs_of, loads_of, material_of, option_of, spectrum_of
 from frp_assess.assess.inputs import CostSettings
-from frp_assess.assess.quantities import frp_quantity
+from frp_assess.assess.quantities import frp_quantity, tie_quantity
 from frp_assess.assess.runner import design_value_rule
 from frp_assess.assess.wall_model import (
     WallInput,
@@ -103,28 +103,33 @@ def frp_mass_per_metre(
 
 @dataclass(frozen=True)
 class OptionRow:
-    """One retrofit option the run will compare, with its FRP quantity and cost."""
+    """One retrofit option the run will compare, with its FRP and tie steel quantities and
+    its cost."""
 
     name: str
     mass_per_m: float  #: FRP mass per metre of wall length [kg/m]
     mass: float  #: FRP mass over the wall length [kg]
-    cost: float  #: FRP and installation cost [currency]
+    cost: float  #: FRP, tie and installation cost [currency]
+    kind: str = "bars"  #: bars | tie | bars+tie
+    steel_per_m: float = 0.0  #: the tie's steel per metre of wall length [kg/m]
 
 
 def option_rows(project: Project) -> list[OptionRow]:
     """The options after expanding sweeps, with their quantities (wall length L)."""
-    w, table = project.wall, project.material_table()
-    costs = CostSettings(str(project.costs.currency), project.costs.installation_per_metre)
+    w = project.wall
+    table = {name: material_of(m) for name, m in project.material_table().items()}
+    costs = costs_of(project)
     rows = []
-    for o in project.expand_interventions():
-        q = frp_quantity(
-            w.thickness,
-            w.height,
-            w.length,
-            material_of(table[o.material]),
-            o.position,
-            o.ratio,
-            costs,
-        )
-        rows.append(OptionRow(str(o.name), q.mass_per_m, q.mass, q.cost))
+    for expanded in project.expand_interventions():
+        o = option_of(expanded, table)
+        mass_per_m = mass = cost = steel = 0.0
+        if o.material is not None and o.position is not None:
+            q = frp_quantity(
+                w.thickness, w.height, w.length, o.material, o.position, o.ratio, costs
+            )
+            mass_per_m, mass, cost = q.mass_per_m, q.mass, q.cost
+        if o.tie is not None:
+            t = tie_quantity(o.tie, costs.ties, w.length)
+            steel, cost = t.mass_per_m, cost + t.cost
+        rows.append(OptionRow(o.name, mass_per_m, mass, cost, o.kind, steel))
     return rows

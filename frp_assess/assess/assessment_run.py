@@ -44,7 +44,8 @@ def materials_of(inputs: AssessmentInputs) -> dict[str, Material]:
     those design mode may choose."""
     materials: dict[str, Material] = {}
     for o in inputs.options:
-        materials.setdefault(o.material.name, o.material)
+        if o.material is not None:
+            materials.setdefault(o.material.name, o.material)
     if inputs.design is not None:
         for mat in inputs.design.materials:
             materials.setdefault(mat.name, mat)

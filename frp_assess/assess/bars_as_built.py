@@ -157,8 +157,11 @@ def option_with_layout(inputs: AssessmentInputs, option: RetrofitOption) -> Retr
 
     With ``bars.whole_bars`` an option that cannot be built is an InputError (as
     :func:`choose_layout`); without, the model uses the ratio asked anyway (the paper's
-    smeared idealisation) and such an option has no layout (``layout`` None).
+    smeared idealisation) and such an option has no layout (``layout`` None).  A tie alone
+    has no bars: returned as it is.
     """
+    if option.material is None or option.position is None:
+        return option
     asked = option.asked
     try:
         lay = choose_layout(
@@ -175,15 +178,7 @@ def option_with_layout(inputs: AssessmentInputs, option: RetrofitOption) -> Retr
             raise
         return replace(option, ratio=asked, ratio_asked=asked, layout=None)
     used = lay.ratio_installed if inputs.bars.whole_bars else asked
-    return RetrofitOption(
-        option.name,
-        option.material,
-        option.position,
-        used,
-        ratio_asked=asked,
-        diameter=option.diameter,
-        layout=lay,
-    )
+    return replace(option, ratio=used, ratio_asked=asked, layout=lay)
 
 
 #: the fraction by which the ratio installed in whole bars may differ from the ratio asked
@@ -384,8 +379,8 @@ def option_as_built(inputs: AssessmentInputs, option: RetrofitOption) -> AsBuilt
     option that cannot be built, which only ``bars.whole_bars: false`` lets through."""
     if option.layout is None:
         option = option_with_layout(inputs, option)
-    if option.layout is None:
-        return None
+    if option.layout is None or option.material is None:
+        return None  # cannot be built, or a tie alone (no bars)
     rule = DIAMETER_GIVEN if option.diameter is not None else DIAMETER_CHOSEN
     return as_built(inputs, option.material, option.layout, option.ratio, rule)
 

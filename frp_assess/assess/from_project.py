@@ -26,6 +26,7 @@ from frp_assess.assess.inputs import (
     Material,
     RecordFile,
     RetrofitOption,
+    TiePrices,
 )
 from frp_assess.assess.load_inputs import (
     NO_LOAD_INPUTS,
@@ -48,8 +49,9 @@ from frp_assess.config.schema import (
     Ntc2018Spectrum,
     PresetSpectrum,
     TableSpectrum,
+    TieOption,
 )
-from frp_assess.config.schema.loads_spec import WallLoadsSpec
+from frp_assess.config.schema.loads_spec import TieSpec, WallLoadsSpec
 from frp_assess.errors import InputError
 from frp_assess.motions import (
     ElasticSpectrum,
@@ -122,21 +124,51 @@ def loads_of(spec: WallLoadsSpec | None) -> LoadsInput:
             ThrustInput(default_name("thrust", i, f.name), float(f.force), float(f.height))
             for i, f in enumerate(spec.thrust)
         ),
-        ties=tuple(
-            TieInput(
-                default_name("tie", i, t.name),
-                float(t.height),
-                t.area_mm2,
-                float(t.spacing),
-                float(t.length),
-                float(t.yield_strength),
-                float(t.elastic_modulus),
-                None if t.anchorage is None else float(t.anchorage),
-                None if t.diameter is None else float(t.diameter),
-            )
-            for i, t in enumerate(spec.ties)
-        ),
+        ties=tuple(tie_of(t, default_name("tie", i, t.name)) for i, t in enumerate(spec.ties)),
     )
+
+
+def tie_of(spec: TieSpec, name: str) -> TieInput:
+    """A tie of ``wall.loads.ties`` or of a tie option, named ``name``."""
+    return TieInput(
+        name,
+        float(spec.height),
+        spec.area_mm2,
+        float(spec.spacing),
+        float(spec.length),
+        float(spec.yield_strength),
+        float(spec.elastic_modulus),
+        None if spec.anchorage is None else float(spec.anchorage),
+        None if spec.diameter is None else float(spec.diameter),
+    )
+
+
+def option_of(option: Intervention | TieOption, table: Mapping[str, Material]) -> RetrofitOption:
+    """An expanded (named) option of ``interventions`` as the assessment's option: its bars
+    (none for ``type: tie``) and its tie, named as the option for a tie alone."""
+    if isinstance(option, TieOption):
+        return RetrofitOption(str(option.name), None, None, 0.0, tie=tie_of(option, option.name))
+    return RetrofitOption(
+        str(option.name),
+        table[option.material],
+        option.position,
+        float(option.ratio),
+        ratio_asked=float(option.ratio),
+        diameter=None if option.diameter is None else float(option.diameter),
+        tie=None if option.tie is None else tie_of(option.tie, option.tie.name or "tie"),
+    )
+
+
+def costs_of(project: Project) -> CostSettings:
+    """The ``costs`` block: the bars' installation and the prices of a tie."""
+    c = project.costs
+    ties = TiePrices(
+        float(c.tie_steel_per_kg),
+        float(c.tie_steel_per_metre),
+        float(c.tie_plate),
+        float(c.tie_installation),
+    )
+    return CostSettings(str(c.currency), c.installation_per_metre, ties)
 
 
 def bar_settings_of(spec: BarsSpec) -> BarSettings:
@@ -160,7 +192,11 @@ def bar_settings_of(spec: BarsSpec) -> BarSettings:
 
 def _option_loc(project: Project, option: RetrofitOption, key: str) -> Loc:
     """Where in the file an expanded option comes from (its item, or the sweep's ratio)."""
+    if option.material is None:
+        return ("interventions",)  # a tie alone: never laid out
     for i, item in enumerate(project.interventions):
+        if isinstance(item, TieOption):
+            continue
         if isinstance(item, Intervention):
             if (
                 item.material == option.material.name
@@ -237,17 +273,7 @@ def inputs_from_project(
     """
     wall, seismic, analysis = project.wall, project.seismic, project.analysis
     table = {name: material_of(m) for name, m in project.material_table().items()}
-    options = tuple(
-        RetrofitOption(
-            str(o.name),
-            table[o.material],
-            o.position,
-            float(o.ratio),
-            ratio_asked=float(o.ratio),
-            diameter=None if o.diameter is None else float(o.diameter),
-        )
-        for o in project.expand_interventions()
-    )
+    options = tuple(option_of(o, table) for o in project.expand_interventions())
     spec = seismic.records
     records: ArtificialRecords | tuple[RecordFile, ...]
     if spec.artificial is not None:
@@ -298,7 +324,7 @@ def inputs_from_project(
         strain_factor=analysis.strain_factor,
         ida=analysis.ida.settings(),
         target=analysis.target,
-        costs=CostSettings(str(project.costs.currency), project.costs.installation_per_metre),
+        costs=costs_of(project),
         design=design,
         code_check=CodeCheckSettings(
             project.code_check.knowledge_level,

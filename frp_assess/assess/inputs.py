@@ -6,7 +6,7 @@ written into results.json; conversion to SI happens when the dynamics models are
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from frp_assess.assess.bar_catalogue import (
     DEFAULT_MAX_SPACING,
@@ -19,7 +19,7 @@ from frp_assess.assess.bar_strain import (
     bar_design_strain,
     fibre_of,
 )
-from frp_assess.assess.load_inputs import NO_LOAD_INPUTS, LoadsInput
+from frp_assess.assess.load_inputs import NO_LOAD_INPUTS, LoadsInput, TieInput
 from frp_assess.assess.masonry_strength import masonry_strength
 from frp_assess.assess.wall_model import BarsInput, WallInput, rocking_model
 from frp_assess.dynamics import (
@@ -78,25 +78,35 @@ class Material:
 
 @dataclass(frozen=True)
 class RetrofitOption:
-    """One retrofit option: a material, a position and a ratio.
+    """One retrofit option: FRP bars of a material, a position and a ratio, steel tie-rods
+    (``tie``), or both (docs/model.md §12).
 
     ``ratio`` is the ratio the model uses: the ratio installed by whole bars of ``layout``
     (``bars.whole_bars``, the default), else the ratio asked; ``ratio_asked`` is the
-    project's (0: not given, i.e. equal to ``ratio``).
+    project's (0: not given, i.e. equal to ``ratio``).  A tie alone has no ``material`` nor
+    ``position`` and ratio 0.
     """
 
     name: str
-    material: Material
-    position: Position
+    material: Material | None  #: None: a tie alone
+    position: Position | None  #: None: a tie alone
     ratio: float  #: ρ [‰], active bars, as the model uses it
     ratio_asked: float = 0.0  #: ρ asked [‰]
     diameter: float | None = None  #: bar diameter asked [mm]; None: chosen by the layout
     layout: BarLayout | None = None  #: the bars over the wall
+    tie: TieInput | None = None  #: tie-rods the option adds to the wall's loads
 
     @property
     def asked(self) -> float:
         """ρ asked [‰]."""
         return self.ratio_asked or self.ratio
+
+    @property
+    def kind(self) -> str:
+        """``bars``, ``tie`` or ``bars+tie`` (results.json's ``kind``)."""
+        if self.material is None:
+            return "tie"
+        return "bars" if self.tie is None else "bars+tie"
 
 
 @dataclass(frozen=True)
@@ -127,9 +137,27 @@ class DesignRequest:
 
 
 @dataclass(frozen=True)
+class TiePrices:
+    """Prices of a tie-rod (``costs.tie_*``), each 0 when not given."""
+
+    steel_per_kg: float = 0.0  #: [currency/kg] of the tie's bar
+    steel_per_metre: float = 0.0  #: [currency/m] of the tie's bar
+    plate: float = 0.0  #: [currency] per anchorage plate, two per tie
+    installation: float = 0.0  #: [currency] per tie
+
+    @property
+    def given(self) -> bool:
+        """Some price is given (else a tie costs 0: the outputs say costs not given)."""
+        return any(
+            p > 0 for p in (self.steel_per_kg, self.steel_per_metre, self.plate, self.installation)
+        )
+
+
+@dataclass(frozen=True)
 class CostSettings:
     currency: str = "EUR"
     installation_per_metre: float = 0.0  #: per metre of wall length and layer of bars
+    ties: TiePrices = TiePrices()
 
 
 @dataclass(frozen=True)
@@ -288,13 +316,21 @@ class AssessmentInputs:
             self.wall_input, self.mechanism, bars, self.model, loads=self.loads.loads()
         )
 
+    def loads_for(self, option: RetrofitOption | None) -> LoadsInput:
+        """The loads of the wall of ``option``: the wall's, with the option's tie added to its
+        ties (the path every tie takes into the model, docs/model.md §12)."""
+        if option is None or option.tie is None:
+            return self.loads
+        return replace(self.loads, ties=(*self.loads.ties, option.tie))
+
     def model_for(self, option: RetrofitOption | None) -> RockingModel:
-        """The dynamics model of the unreinforced wall (``None``) or of an option."""
-        if option is None:
-            return rocking_model(
-                self.wall_input, self.mechanism, None, self.model, loads=self.loads.loads()
-            )
-        return self.model_of(option.material, option.position, option.ratio)
+        """The dynamics model of the unreinforced wall (``None``) or of an option: its bars
+        (none for a tie alone) and the wall's loads with the option's tie."""
+        loads = self.loads_for(option).loads()
+        if option is None or option.material is None or option.position is None:
+            return rocking_model(self.wall_input, self.mechanism, None, self.model, loads=loads)
+        bars = self.bars_input(option.material, option.position, option.ratio)
+        return rocking_model(self.wall_input, self.mechanism, bars, self.model, loads=loads)
 
     def case_models(self) -> list[RockingModel]:
         """The models of every case of a run: the unreinforced wall, then each option."""

@@ -1,18 +1,27 @@
 """results.json's ``loads``: every load the wall carries, as the project gave it with its
 per-metre values, and α₀ of simple overturning term by term (docs/model.md §12,
 docs/results-json.md), so that a reviewer recomputes α₀ by hand.  None without loads (the
-key is then absent: a file without loads is the file it was before loads existed).
+key is then absent: a file without loads is the file it was before loads existed); and a
+tie option's tie with its steel and cost, and the tie's prices (docs/model.md §12.2).
 """
 
 from __future__ import annotations
 
 import math
 
-from frp_assess.assess.inputs import AssessmentInputs
+from frp_assess.assess.inputs import AssessmentInputs, RetrofitOption
 from frp_assess.assess.load_inputs import TieInput
 from frp_assess.assess.loaded_overturning import overturning_result
+from frp_assess.assess.quantities import tie_quantity
 from frp_assess.dynamics.units import N_PER_KN
-from frp_assess.results.carried_loads import LoadsResult, ThrustResult, TieResult, TopLoadResult
+from frp_assess.results.carried_loads import (
+    LoadsResult,
+    ThrustResult,
+    TieOptionResult,
+    TieResult,
+    TopLoadResult,
+)
+from frp_assess.results.run_inputs import TiePricesResult
 from frp_assess.rules.tie_rods import tie_capacity, tie_is_ductile
 
 #: what docs/model.md §12 does not model, for the report's assumptions
@@ -60,4 +69,30 @@ def loads_result(inputs: AssessmentInputs) -> LoadsResult | None:
         ties=tuple(tie_result(t) for t in loads.ties),
         overturning=overturning_result(inputs.model_for(None), loads),
         not_modelled=NOT_MODELLED,
+    )
+
+
+def tie_prices_result(inputs: AssessmentInputs) -> TiePricesResult | None:
+    """The tie's prices of ``costs`` when some option has a tie, else None (not written)."""
+    if not any(o.tie is not None for o in inputs.options):
+        return None
+    p = inputs.costs.ties
+    return TiePricesResult(p.steel_per_kg, p.steel_per_metre, p.plate, p.installation)
+
+
+def tie_option_result(inputs: AssessmentInputs, option: RetrofitOption) -> TieOptionResult | None:
+    """The tie of ``option`` (None: none) as results.json records it, with its steel and cost
+    (:func:`~frp_assess.assess.quantities.tie_quantity`)."""
+    if option.tie is None:
+        return None
+    prices = inputs.costs.ties
+    q = tie_quantity(option.tie, prices, inputs.length)
+    return TieOptionResult(
+        tie=tie_result(option.tie),
+        steel_mass_per_m=q.mass_per_m,
+        steel_mass=q.mass,
+        cost_per_tie=q.cost_per_tie,
+        cost_per_m=q.cost_per_m,
+        cost=q.cost,
+        prices_given=prices.given,
     )

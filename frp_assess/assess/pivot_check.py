@@ -104,8 +104,8 @@ def case_pivot(
     weight = wall_weight(inputs.unit_weight, b, inputs.height)  # [kN/m]
     f_d = inputs.masonry_strength.f_d
     rule = inputs.model.pivot
-    if option is None:
-        force, distance = 0.0, None
+    if option is None or option.material is None or option.position is None:
+        force, distance = 0.0, None  # no bars: a tie alone loads the base as the wall does
     else:
         strain = inputs.rupture_strain(option.material)  # ε_max the model uses [-]
         modulus = option.material.elastic_modulus * KPA_PER_GPA  # [kPa]: T in kN/m

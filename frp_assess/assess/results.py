@@ -26,9 +26,9 @@ from frp_assess.assess.inputs import (
     RetrofitOption,
 )
 from frp_assess.assess.kinematic_checks import ida_capacity_demand
-from frp_assess.assess.loads_record import loads_result
+from frp_assess.assess.loads_record import loads_result, tie_option_result, tie_prices_result
 from frp_assess.assess.pivot_check import case_pivot
-from frp_assess.assess.quantities import built_quantity
+from frp_assess.assess.quantities import Quantity, built_quantity
 from frp_assess.assess.recorded_inputs import (
     building_result,
     compliance_result,
@@ -174,21 +174,20 @@ def case_result(
         for name, res, a, fp in zip(names, summary.results, summary.a_dyn, pgas, strict=True)
     )
     built = None if option is None else option_as_built(inputs, option)
-    if option is None:
-        q_mass = q_mass_m = cost = 0.0
-    else:
-        q = built_quantity(inputs, built, option.material, option.position, option.ratio)
-        q_mass, q_mass_m, cost = q.mass, q.mass_per_m, q.cost
+    material = None if option is None else option.material
+    q = Quantity(0.0, 0.0, 0.0)
+    if option is not None and material is not None and option.position is not None:
+        q = built_quantity(inputs, built, material, option.position, option.ratio)
     cd = ida_capacity_demand(summary.design_a_dyn, demand, fc)
     return CaseResult(
         name=option.name if option else UNREINFORCED,
-        material=option.material.name if option else None,
+        material=material.name if material else None,
         position=option.position if option else None,
         ratio=option.ratio if option else 0.0,
-        elastic_modulus=option.material.elastic_modulus if option else None,
-        ultimate_strain=option.material.ultimate_strain if option else None,
+        elastic_modulus=material.elastic_modulus if material else None,
+        ultimate_strain=material.ultimate_strain if material else None,
         K=model.K,
-        theta_max=_finite(model.theta_max) if option else None,
+        theta_max=_finite(model.theta_max) if material else None,
         records=records,
         mean_a_dyn=summary.mean_a_dyn,
         min_a_dyn=summary.min_a_dyn,
@@ -198,9 +197,9 @@ def case_result(
         capacity_demand=cd,
         improvement=summary.design_a_dyn / urm_design,
         scatter=scatter_result(summary, names, demand, inputs.ida),
-        frp_mass_per_m=q_mass_m,
-        frp_mass=q_mass,
-        frp_cost=cost,
+        frp_mass_per_m=q.mass_per_m,
+        frp_mass=q.mass,
+        frp_cost=q.cost,
         # the IDA check alone; the decision sets it again (false for a dropped option)
         meets_target=cd >= inputs.target,
         rank=None,
@@ -209,6 +208,8 @@ def case_result(
         pivot=case_pivot(inputs, option).result(),
         fc=fc,
         failure_mode=case_failure_mode(records),
+        kind=None if option is None or option.kind == "bars" else option.kind,
+        tie=None if option is None else tie_option_result(inputs, option),
     )
 
 
@@ -405,6 +406,7 @@ def build_results(
         costs=Costs(
             currency=inputs.costs.currency,
             installation_per_metre=inputs.costs.installation_per_metre,
+            ties=tie_prices_result(inputs),
         ),
         seismic=seismic_result(inputs, seismic),
         demand=Demand(pga=inputs.spectrum.pga_g),

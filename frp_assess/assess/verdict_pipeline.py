@@ -84,8 +84,8 @@ def evidence(
     """What the decision reads of one case; ``demand`` = FC·a_g·S [g]."""
     return Evidence(
         name=case.name,
-        cost=case.frp_cost,
-        mass=case.frp_mass,
+        cost=case.option_cost,
+        mass=case.option_mass,
         a_dyn=summary.a_dyn_bound,
         censored=tuple(a is None for a in summary.a_dyn),
         demand=demand,
@@ -169,7 +169,9 @@ def design_options(
             (
                 o
                 for o in (*inputs.options, *added)
-                if o.material.name == d.material.name
+                if o.material is not None
+                and o.tie is None
+                and o.material.name == d.material.name
                 and o.position == d.position
                 and math.isclose(o.ratio, d.ratio_model, rel_tol=1e-9)
             ),

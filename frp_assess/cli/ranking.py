@@ -55,7 +55,7 @@ def ranking_rows(results: AssessmentResult) -> list[list[str]]:
             margin_text(c),
             fmt_capacity(c, target),
             f"{c.frp_mass:.1f}",
-            f"{c.frp_cost:.0f}",
+            f"{c.option_cost:.0f}",
         ]
         for c in (results.urm, *results.ranked_options)
     ]
@@ -83,12 +83,28 @@ def legend_lines(results: AssessmentResult) -> list[str]:
         "a record topples the wall; C/D: the IDA's design a_dyn/(FC·a_g·S) against the "
         f"target {results.model.target:g}, '≥' a lower bound"
     ]
+    lines.extend(tie_lines(results))
     if results.recommended and not results.retrofit_required:
         lines.append(
             "no retrofit needed (the unreinforced wall passes): no option is recommended; "
             f"{results.recommended} is the cheapest that passes, for extra margin"
         )
     return lines
+
+
+def tie_lines(results: AssessmentResult) -> list[str]:
+    """What the ranking says of the options with tie-rods (none: no line): the steel, the
+    cost counted, and whether the tie's prices were given."""
+    ties = [c for c in results.options if c.tie is not None]
+    if not ties:
+        return []
+    steel = "; ".join(f"{c.name}: {c.tie.steel_mass_per_m:.1f} kg/m" for c in ties if c.tie)
+    given = all(c.tie.prices_given for c in ties if c.tie)
+    return [
+        "tie options: cost = the bars + the ties (each its bar, two plates, installation); "
+        f"tie steel, not in FRP kg: {steel}"
+        + ("" if given else "; tie costs not given (costs.tie_*): counted as 0")
+    ]
 
 
 def dropped_lines(results: AssessmentResult) -> list[str]:

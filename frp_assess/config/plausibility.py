@@ -21,6 +21,7 @@ from frp_assess.config.schema import (
     Intervention,
     Ntc2018Spectrum,
     Project,
+    TieOption,
 )
 from frp_assess.errors import InputError
 
@@ -123,7 +124,7 @@ def _values(project: Project) -> Iterator[tuple[float | None, Practice, Loc]]:
     for i, item in enumerate(project.interventions):
         if isinstance(item, Intervention):
             yield item.ratio, RATIO, ("interventions", i, "ratio")
-        else:
+        elif not isinstance(item, TieOption):
             for j, ratio in enumerate(item.sweep.ratio):
                 yield ratio, RATIO, ("interventions", i, "sweep", "ratio", j)
     if project.design is not None:
@@ -140,6 +141,13 @@ TIES_NOT_IN_TIME_HISTORIES = (
     "the time histories (IDA, time-history checks: the deciding checks) do not model tie-rods "
     "yet and run without them (conservative for a tie that exists); the code's static checks "
     "count them (docs/model.md §12)"
+)
+
+#: what a project with a tie option is told, while the time histories do not model ties
+TIE_OPTION_NOT_IN_TIME_HISTORIES = (
+    "the time histories (IDA, time-history checks: the deciding checks) do not model tie-rods "
+    "yet and run this option without its tie, as if it were not there; the code's static "
+    "checks count it (docs/model.md §12)"
 )
 
 
@@ -159,4 +167,9 @@ def project_warnings(project: Project) -> tuple[PlausibilityWarning, ...]:
     loads = project.wall.loads
     if loads is not None and loads.ties:
         found.append(PlausibilityWarning(("wall", "loads", "ties"), TIES_NOT_IN_TIME_HISTORIES))
+    found.extend(
+        PlausibilityWarning(("interventions", i), TIE_OPTION_NOT_IN_TIME_HISTORIES)
+        for i, item in enumerate(project.interventions)
+        if isinstance(item, TieOption) or (isinstance(item, Intervention) and item.tie)
+    )
     return tuple(found)

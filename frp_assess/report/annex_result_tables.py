@@ -45,12 +45,12 @@ def ranking_row(case: CaseResult, target: float, lang: Lang) -> list[str]:
     return [
         rank_text(case, lang),
         case_label(case, lang),
-        case.material or lang.t("ax.none"),
+        case.material or lang.t("ax.tie" if case.tie is not None else "ax.none"),
         DASH if case.position is None else position_words(case.position, lang, short=True),
         permille(case.ratio, lang),
         n(case.frp_mass_per_m, 1),
         n(case.frp_mass, 1),
-        n(case.frp_cost, 0, grouping=True),
+        n(case.option_cost, 0, grouping=True),
         bound(n(case.design_a_dyn, 3), lb),
         bound(n(case.mean_q, 2), lb),
         bound(n(case.improvement, 2), lb),
@@ -114,7 +114,7 @@ def summary_table(results: Results, lang: Lang, n_alternatives: int = 3) -> Tabl
     for role, c in chosen:
         lb = c.lower_bound
         rows.append([role, case_label(c, lang), n(c.frp_mass, 1),
-                     n(c.frp_cost, 0, grouping=True), bound(n(c.design_a_dyn, 3), lb),
+                     n(c.option_cost, 0, grouping=True), bound(n(c.design_a_dyn, 3), lb),
                      bound(n(c.improvement, 2), lb), bound(capacity_text(c, target, lang), lb),
                      cell(c, lang)])  # fmt: skip
     return TableData(header, rows)

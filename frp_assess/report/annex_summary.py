@@ -50,13 +50,18 @@ def option_sentence(results: Results, c: CaseResult, lang: Lang) -> str:
     n = lang.num
     lb = c.lower_bound
     target = float(results.model.target)
+    parts = []
+    if c.material is not None:
+        parts.append(lang.t("ax.sum.option.frp", mass=n(c.frp_mass, 1), material=esc(c.material),
+                            per_m=n(c.frp_mass_per_m, 1)))  # fmt: skip
+    if c.tie is not None:
+        parts.append(lang.t("ax.sum.option.tie", mass=n(c.tie.steel_mass, 1),
+                            per_m=n(c.tie.steel_mass_per_m, 1)))  # fmt: skip
     text = lang.t(
         "ax.sum.option",
         name=esc(case_label(c, lang)),
-        mass=n(c.frp_mass, 1),
-        material=esc(c.material),
-        per_m=n(c.frp_mass_per_m, 1),
-        cost=n(c.frp_cost, 0, grouping=True),
+        what=lang.t("ax.sum.option.and").join(parts),
+        cost=n(c.option_cost, 0, grouping=True),
         cur=esc(results.costs.currency),
         cd=esc(bound(capacity_text(c, target, lang), lb)),
         improvement=esc(bound(n(c.improvement, 2), lb)),

@@ -5,9 +5,9 @@ from __future__ import annotations
 
 from reportlab.lib.units import mm
 
-from frp_assess.report import charts, ida_words
+from frp_assess.report import charts, ida_words, tie_options_section
 from frp_assess.report.body_closing import decision_lines
-from frp_assess.report.body_front import option_words, position_words
+from frp_assess.report.body_front import option_words, position_words, tie_words
 from frp_assess.report.charts import localize_drawing
 from frp_assess.report.doc_model import Block, markup_text
 from frp_assess.report.flow import cond_break, figure, grid, h1, h2, keep, key_value, markup
@@ -146,7 +146,7 @@ def _ranking_table(results: Results, lang: Lang, limit: int = 12) -> TableData:
                 _bound(n(c.capacity_demand, 2), lb),
                 _bound(n(c.improvement, 2), lb),
                 n(c.frp_mass, 1),
-                n(c.frp_cost, 0, grouping=True),
+                n(c.option_cost, 0, grouping=True),
                 cell(c, lang),
             ]
         )
@@ -159,7 +159,9 @@ def retrofit(results: Results, lang: Lang) -> list[Block]:
     if not results.options:
         out.append(markup(lang.t("retrofit.none_examined")))
         return out
-    out.append(markup(lang.t("retrofit.lead", n=len(results.options))))
+    any_tie = any(c.tie is not None for c in results.options)
+    lead = "retrofit.lead.ties" if any_tie else "retrofit.lead"
+    out.append(markup(lang.t(lead, n=len(results.options))))
     rec = results.case(results.recommended)
     compliant = bool(results.input_code_compliant)
     if rec is not None:
@@ -174,8 +176,10 @@ def retrofit(results: Results, lang: Lang) -> list[Block]:
             [lang.t("retrofit.improvement"), _bound(n(rec.improvement, 2), lb)],
             [lang.t("col.mass"), n(rec.frp_mass, 1)],
             [lang.t("col.cost", currency=short(results.costs.currency)),
-             n(rec.frp_cost, 0, grouping=True)],
+             n(rec.option_cost, 0, grouping=True)],
         ]  # fmt: skip
+        if rec.tie is not None:
+            rows.append([lang.t("retrofit.tie"), markup_text(tie_words(rec.tie.tie, lang))])
         b = rec.as_built
         if b is not None:
             rows.append(
@@ -219,6 +223,7 @@ def retrofit(results: Results, lang: Lang) -> list[Block]:
         out.append(markup(lang.t("retrofit.dropped", n=n_dropped, total=len(results.options))))
     if len(_ranked(results)) > 12:
         out.append(markup(lang.t("retrofit.more", n=len(_ranked(results)) - 12), "caption"))
+    out += tie_options_section.section(results, lang)  # nothing without a tie option
     kc = results.kinematic_checks
     if kc is not None and rec is not None:
         by_name = {c.case: c for c in kc.cases}

@@ -57,7 +57,7 @@ def conclusions(results: Results, lang: Lang) -> list[Block]:
                     cd=_bound(n(rec.capacity_demand, 2), rec.lower_bound),
                     improvement=_bound(n(rec.improvement, 2), rec.lower_bound),
                     mass=n(rec.frp_mass, 1),
-                    cost=n(rec.frp_cost, 0, grouping=True),
+                    cost=n(rec.option_cost, 0, grouping=True),
                     currency=esc(results.costs.currency),
                 )
             )

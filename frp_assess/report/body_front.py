@@ -11,6 +11,7 @@ from frp_assess.report.doc_model import Block, Heading
 from frp_assess.report.flow import esc, grid, h1, h2, key_value, markup
 from frp_assess.report.formats import TableData, design_strain
 from frp_assess.report.lang import Lang, short
+from frp_assess.results.carried_loads import TieOptionResult, TieResult
 from frp_assess.results.model import AssessmentResult
 from frp_assess.text_safety import Markup
 
@@ -29,13 +30,28 @@ def position_words(position: str | None, lang: Lang, *, short: bool = False) -> 
     return lang.t(key) if position and lang.has(key) else esc(position or "—")
 
 
+def tie_words(tie: TieResult, lang: Lang) -> str:
+    """Tie-rods in words: their bar (Ø, else A_s), spacing and height."""
+    bar = (
+        f"Ø{lang.gnum(tie.diameter)} mm"
+        if tie.diameter is not None
+        else f"A<sub>s</sub> = {lang.num(tie.area, 1)} mm²"
+    )
+    return lang.t("option.words.tie", bar=bar, s=lang.gnum(tie.spacing), h=lang.gnum(tie.height))
+
+
 def option_words(c: object, lang: Lang) -> str:
     """An option by its name as the user wrote it, then described from its fields:
-    ``<name> (material, position of the bars, ratio ρ [‰])``."""
+    ``<name> (material, position of the bars, ratio ρ [‰])``; tie-rods (``tie``) by their
+    bar, spacing and height, alone or after the bars."""
     material = esc(getattr(c, "material", None) or "")
     pos = position_words(getattr(c, "position", None), lang)
     words = lang.t("option.words", material=material, position=pos,
                    ratio=lang.num(float(getattr(c, "ratio", 0.0)), 2))  # fmt: skip
+    tie = getattr(c, "tie", None)
+    if isinstance(tie, TieOptionResult):
+        ties = tie_words(tie.tie, lang)
+        words = ties if not material else lang.t("option.words.both", bars=words, tie=ties)
     name = getattr(c, "name", None)
     return f"{esc(name)} ({words})" if name else words
 

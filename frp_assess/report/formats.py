@@ -73,7 +73,7 @@ def fmt_permille(x: float | None) -> str:
 
 def ranked_options(results: Results) -> list[CaseResult]:
     """Retrofit options by rank (1 first); unranked options last, in file order."""
-    opts = [c for c in results.cases if c.material is not None]
+    opts = list(results.options)
     return sorted(opts, key=lambda c: (c.rank is None, c.rank or 0))
 
 

@@ -67,7 +67,8 @@ def _rows(loads: LoadsResult, lang: Lang) -> list[list[str]]:
     return rows
 
 
-def _tie(x: TieResult, lang: Lang) -> Block:
+def tie_paragraph(x: TieResult, lang: Lang) -> Block:
+    """One tie as given and per metre of wall (k_t, F_y, F_a/i_t), ductile or brittle."""
     n = lang.num
     anchorage = (
         t(lang, "loads.tie.no_anchorage")
@@ -105,7 +106,7 @@ def section(results: AssessmentResult, lang: Lang) -> list[Block]:
         grid(TableData(header, _rows(loads, lang)), [x * mm for x in (40, 38, 26, 30, 30)],
              numeric_from=2),
     ]  # fmt: skip
-    out += [_tie(x, lang) for x in loads.ties]
+    out += [tie_paragraph(x, lang) for x in loads.ties]
     o = loads.overturning
     terms = [
         [_term_name(x, lang), t(lang, f"loads.role.{x.role}"), n(x.force, 2),

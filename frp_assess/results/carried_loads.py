@@ -57,6 +57,21 @@ class TieResult:
 
 
 @dataclass(frozen=True)
+class TieOptionResult:
+    """The tie-rods a retrofit option adds to the wall's loads, with their steel and cost
+    (per tie: its bar, two anchorage plates and its installation, ``costs.tie_*``)."""
+
+    tie: TieResult
+    steel_mass_per_m: float  #: ρ·A_s·L_t/i_t [kg per metre of wall]
+    steel_mass: float  #: for the wall's length [kg]
+    cost_per_tie: float  #: [currency]
+    cost_per_m: float  #: [currency per metre of wall]
+    cost: float  #: for the wall's length [currency]
+    #: some tie price is given in ``costs`` (false: the costs are 0, not given)
+    prices_given: bool
+
+
+@dataclass(frozen=True)
 class MomentTerm:
     """One term of α₀ (Circolare 2019 eq. C8.7.1.1), about the outer base corner O for a
     unit virtual rotation: force × lever = moment."""

@@ -47,6 +47,10 @@ CSV_FIELDS = [
     "case_failure_mode",
 ]
 
+#: the columns added after :data:`CSV_FIELDS` when some option has tie-rods (a file without
+#: them keeps its columns): the option's kind, its ties' steel and cost, its whole cost
+TIE_CSV_FIELDS = ["case_kind", "case_tie_steel_kg", "case_tie_cost", "case_option_cost"]
+
 #: the byte-order mark results.csv starts with (spreadsheets then read it as UTF-8)
 BOM = "\ufeff"
 
@@ -109,6 +113,15 @@ def case_columns(results: AssessmentResult, st: CsvStyle) -> Callable[[CaseResul
     return cells
 
 
+def _tie_cells(c: CaseResult, st: CsvStyle) -> list[str]:
+    """The :data:`TIE_CSV_FIELDS` cells of a case: kind (bars, tie, bars+tie; empty for the
+    unreinforced wall), the ties' steel [kg] and cost, the option's cost (bars + ties)."""
+    kind = "" if c.is_unreinforced else (c.kind or "bars")
+    steel = None if c.tie is None else c.tie.steel_mass
+    cost = None if c.tie is None else c.tie.cost
+    return [kind, st.number(steel, 1), st.number(cost, 0), st.number(c.option_cost, 0)]
+
+
 def results_csv(results: AssessmentResult) -> str:
     """One row per (case, record), after a byte-order mark; accelerations in g, mass kg,
     cost in the currency (docs/results-json.md, "results.csv").
@@ -122,10 +135,11 @@ def results_csv(results: AssessmentResult) -> str:
     st = csv_style(results)
     buf = io.StringIO()
     w = csv.writer(buf, delimiter=st.delimiter, lineterminator="\n")
-    w.writerow(CSV_FIELDS)
+    ties = any(c.tie is not None for c in results.cases)
+    w.writerow(CSV_FIELDS + (TIE_CSV_FIELDS if ties else []))
     case_cells = case_columns(results, st)
     for c in results.cases:
-        shared = case_cells(c)
+        shared = case_cells(c) + (_tie_cells(c, st) if ties else [])
         for r in c.records:
             w.writerow(
                 [

@@ -17,7 +17,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from frp_assess.results.as_built import AsBuilt
-from frp_assess.results.carried_loads import LoadsResult
+from frp_assess.results.carried_loads import LoadsResult, TieOptionResult
 from frp_assess.results.checks import KinematicChecks
 from frp_assess.results.independent import IndependentCheck
 from frp_assess.results.pivot import MasonryResult, PivotResult
@@ -247,11 +247,26 @@ class CaseResult:
     source: str = "option"
     #: one sentence explaining an odd result (weaker than the bare wall, q < 1); None: none
     remark: str | None = None
+    #: "tie" (tie-rods alone) or "bars+tie"; None (not written): FRP bars, or the
+    #: unreinforced wall
+    kind: str | None = field(default=None, metadata={"omit_if_none": True})
+    #: the tie-rods the option adds to the wall's loads, their steel and cost (None: none)
+    tie: TieOptionResult | None = field(default=None, metadata={"omit_if_none": True})
 
     @property
     def is_unreinforced(self) -> bool:
-        """The case without bars."""
-        return self.material is None
+        """The case without bars nor tie."""
+        return self.material is None and self.tie is None
+
+    @property
+    def option_cost(self) -> float:
+        """What the option costs [currency]: its bars and its tie (the ranking's cost)."""
+        return self.frp_cost + (0.0 if self.tie is None else self.tie.cost)
+
+    @property
+    def option_mass(self) -> float:
+        """FRP and tie steel [kg] (the ranking's second key)."""
+        return self.frp_mass + (0.0 if self.tie is None else self.tie.steel_mass)
 
 
 @dataclass(frozen=True)

@@ -8,7 +8,7 @@ names are the JSON keys, in the order written; units in each docstring.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 
 @dataclass(frozen=True)
@@ -118,11 +118,24 @@ class MaterialResult:
 
 
 @dataclass(frozen=True)
+class TiePricesResult:
+    """The prices of a tie-rod (``costs.tie_*``) [currency/kg, currency/m, currency per
+    plate (two per tie), currency per tie]; 0: not given."""
+
+    steel_per_kg: float
+    steel_per_metre: float
+    plate: float
+    installation: float
+
+
+@dataclass(frozen=True)
 class Costs:
-    """Currency of every cost, installation cost per metre of bar [currency/m]."""
+    """Currency of every cost, installation cost per metre of bar [currency/m]; the tie's
+    prices when some option has a tie (else not written)."""
 
     currency: str
     installation_per_metre: float
+    ties: TiePricesResult | None = field(default=None, metadata={"omit_if_none": True})
 
 
 @dataclass(frozen=True)

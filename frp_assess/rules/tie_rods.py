@@ -21,6 +21,15 @@ import math
 DEFAULT_YIELD_STRENGTH = 235e6
 #: E of structural steel (EN 1993-1-1 §3.2.6) [Pa].
 DEFAULT_ELASTIC_MODULUS = 210e9
+#: density of steel, ρ = 7850 kg/m³ (78.5 kN/m³, the upper value of EN 1991-1-1 Table A.4)
+STEEL_DENSITY = 7850.0
+
+
+def tie_steel_mass(area: float, length: float, spacing: float) -> float:
+    """Steel of the ties per metre of wall, ρ·A_s·L_t/i_t [kg/m]: one bar of area A_s [m²] and
+    free length L_t [m] every i_t [m] along the wall (the anchorages' plates not counted;
+    ρ of EN 1991-1-1 Table A.4; docs/model.md §12)."""
+    return STEEL_DENSITY * area * length / spacing
 
 
 def round_bar_area(diameter: float) -> float:

@@ -1,8 +1,9 @@
 """The retrofit options (``interventions:``): single options and sweeps in one table.
 
 Each row shows the FRP mass per metre of wall of the option (for a sweep, its range), which
-updates as the wall, the materials or the ratio are typed.  Keys: ``a`` add an option,
-``s`` add a sweep, ``d`` duplicate, ``delete``/``x`` remove.
+updates as the wall, the materials or the ratio are typed; a tie option (``type: tie``,
+docs/model.md §12) shows its tie.  Keys: ``a`` add an option, ``s`` add a sweep, ``t`` add a
+tie, ``d`` duplicate, ``delete``/``x`` remove.
 """
 
 from __future__ import annotations
@@ -13,10 +14,11 @@ from rich.text import Text
 from textual.binding import Binding, BindingType
 
 from frp_assess.config.library import FRP_MATERIALS
-from frp_assess.config.schema import Intervention, SweepAxes, option_name
+from frp_assess.config.schema import Intervention, SweepAxes, TieOption, option_name, tie_label
 from frp_assess.tui.core.editor_state import expand_item, format_value, frp_mass_per_m
 from frp_assess.tui.fields import choice, items, num, text
 from frp_assess.tui.item_editor import ItemEditor
+from frp_assess.tui.loads_editors import TIE_FIELDS
 
 
 class InterventionsEditor(ItemEditor):
@@ -26,12 +28,14 @@ class InterventionsEditor(ItemEditor):
     BINDINGS: ClassVar[list[BindingType]] = [
         Binding("a", "add", "Add"),
         Binding("s", "add_sweep", "Sweep"),
+        Binding("t", "add_tie", "Tie"),
         Binding("d", "duplicate", "Dup"),
         Binding("delete,x", "remove", "Remove", key_display="del"),
     ]
     BUTTONS = (
         ("+ option", "add"),
         ("+ sweep", "add_sweep"),
+        ("+ tie", "add_tie"),
         ("duplicate", "duplicate"),
         ("remove", "remove"),
     )
@@ -60,30 +64,43 @@ class InterventionsEditor(ItemEditor):
             ),
             items(("sweep", "ratio"), "Ratios ρ", SweepAxes, width=30, unit="‰, e.g. 1, 2, 3"),
         ),
+        "tie": (
+            text(("name",), "Name", TieOption, optional=True, width=30, placeholder="(generated)"),
+            *TIE_FIELDS,
+        ),
     }
 
     def columns(self) -> list[str]:
         return ["#", "kind", "name", "material", "position", "ρ [‰]", "options", "FRP [kg/m]"]
 
     def kind_of(self, item: Any) -> str:
-        return "sweep" if isinstance(item, dict) and "sweep" in item else "option"
+        if isinstance(item, dict) and "sweep" in item:
+            return "sweep"
+        return "tie" if isinstance(item, dict) and "type" in item else "option"
 
     def item_label(self, index: int) -> str:
-        item = self.items[index]
-        return f"#{index + 1} {'sweep' if self.kind_of(item) == 'sweep' else 'option'}"
+        return f"#{index + 1} {self.kind_of(self.items[index])}"
 
     def new_item(self, action: str) -> Any:
         if action == "sweep":
             return {
                 "sweep": {"material": ["GFRP"], "position": ["centred", "external"], "ratio": [1.0]}
             }
+        if action == "tie":
+            return {"type": "tie", "height": 3.0, "diameter": 20.0, "spacing": 3.0, "length": 8.0}
         return {"material": "GFRP", "position": "external", "ratio": 1.0}
 
-    def action_add_sweep(self) -> None:
-        self.items.append(self.new_item("sweep"))
+    def _append(self, action: str) -> None:
+        self.items.append(self.new_item(action))
         self.refresh_table()
         self.table.move_cursor(row=len(self.items) - 1)
         self.changed()
+
+    def action_add_sweep(self) -> None:
+        self._append("sweep")
+
+    def action_add_tie(self) -> None:
+        self._append("tie")
 
     def set_materials(self, names: list[str]) -> None:
         """Offer these material names in the option form."""
@@ -101,7 +118,18 @@ class InterventionsEditor(ItemEditor):
             ratio,
         )
 
+    def _tie_cells(self, index: int, item: Any) -> list[Any]:
+        name = item.get("name")
+        if not name:
+            try:
+                name = Text(tie_label(TieOption.model_validate(item)), style="dim")
+            except ValueError:  # pydantic's ValidationError: an incomplete tie
+                name = ""
+        return [index + 1, Text("tie", style="cyan"), name, "—", "—", "—", 1, "—"]
+
     def row_cells(self, index: int, item: Any) -> list[Any]:
+        if self.kind_of(item) == "tie":
+            return self._tie_cells(index, item)
         combos = expand_item(item)
         masses = [self._mass(m, p, r) for m, p, r in combos]
         known = [m for m in masses if m is not None]
@@ -134,7 +162,7 @@ class InterventionsEditor(ItemEditor):
                 name = ""
         return [
             index + 1,
-            "option",
+            "option + tie" if isinstance(item.get("tie"), dict) else "option",
             name,
             format_value(item.get("material")),
             format_value(item.get("position")),

@@ -79,24 +79,27 @@ class ThrustsEditor(ItemEditor):
         return {"force": 1.0, "height": 1.0}
 
 
+#: the fields of a tie but its name (``wall.loads.ties`` and a tie option, ``type: tie``)
+TIE_FIELDS = (
+    num(("height",), "Height h_t", "m above the base", TieSpec),
+    num(("diameter",), "Diameter", "mm (or area)", TieSpec, optional=True),
+    num(("area",), "Area A_s", "mm2 (or diameter)", TieSpec, optional=True),
+    num(("spacing",), "Spacing i_t", "m", TieSpec),
+    num(("length",), "Length L_t", "m, free", TieSpec),
+    num(("yield_strength",), "f_y", "MPa", TieSpec, optional=True),
+    num(("elastic_modulus",), "E_s", "GPa", TieSpec, optional=True),
+    num(("anchorage",), "Anchorage F_a", "kN per tie", TieSpec, optional=True,
+        placeholder="(not governing)"),
+)  # fmt: skip
+
+
 class TiesEditor(ItemEditor):
     """``wall.loads.ties``: steel tie-rods anchored on the outer face."""
 
     ROOT = (*LOADS, "ties")
     FORMS: ClassVar[dict[str, Any]] = {
-        "tie": (
-            text(("name",), "Name", TieSpec, optional=True, width=30),
-            num(("height",), "Height h_t", "m above the base", TieSpec),
-            num(("diameter",), "Diameter", "mm (or area)", TieSpec, optional=True),
-            num(("area",), "Area A_s", "mm2 (or diameter)", TieSpec, optional=True),
-            num(("spacing",), "Spacing i_t", "m", TieSpec),
-            num(("length",), "Length L_t", "m, free", TieSpec),
-            num(("yield_strength",), "f_y", "MPa", TieSpec, optional=True),
-            num(("elastic_modulus",), "E_s", "GPa", TieSpec, optional=True),
-            num(("anchorage",), "Anchorage F_a", "kN per tie", TieSpec, optional=True,
-                placeholder="(not governing)"),
-        )
-    }  # fmt: skip
+        "tie": (text(("name",), "Name", TieSpec, optional=True, width=30), *TIE_FIELDS)
+    }
 
     def columns(self) -> list[str]:
         return ["#", "name", "h_t [m]", "Ø [mm]", "i_t [m]", "F_a [kN]"]

@@ -42,7 +42,7 @@ RANKING_COLUMNS: list[
     ("option", lambda c: c.name, lambda c, _: c.name),
     ("kg/m", lambda c: c.frp_mass_per_m, lambda c, _: f"{c.frp_mass_per_m:.2f}"),
     ("FRP kg", lambda c: c.frp_mass, lambda c, _: f"{c.frp_mass:.1f}"),
-    ("cost", lambda c: c.frp_cost, lambda c, _: f"{c.frp_cost:.0f}"),
+    ("cost", lambda c: c.option_cost, lambda c, _: f"{c.option_cost:.0f}"),
     ("a_dyn [g]", lambda c: c.design_a_dyn, lambda c, _: f"{c.design_a_dyn:.3f}"),
     ("q", lambda c: c.mean_q, lambda c, _: f"{c.mean_q:.2f}"),
     ("impr.", lambda c: c.improvement, lambda c, _: f"{c.improvement:.2f}"),

@@ -346,10 +346,11 @@ class ResultsPane(Vertical):
         metric = self.query_one("#plot-metric", Select).value
         by_cost = metric == "capacity_demand_cost"
         field = "capacity_demand" if by_cost else str(metric)
-        xkey = "frp_cost" if by_cost else "frp_mass"
+        xkey = "option_cost" if by_cost else "frp_mass"  # the cost: bars and tie
         groups: dict[tuple[str, str], list[CaseResult]] = {}
         for c in r.cases[1:]:
-            groups.setdefault((c.material or "", c.position or ""), []).append(c)
+            kind = "tie" if c.tie is not None and c.material is None else ""
+            groups.setdefault((c.material or kind, c.position or ""), []).append(c)
         materials = list(dict.fromkeys(m for m, _ in groups))
         series: list[Series] = []
         for (mat, pos), cases in groups.items():

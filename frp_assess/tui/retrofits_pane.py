@@ -69,7 +69,9 @@ class RetrofitsPane(Vertical):
 
 
 def options_table(rows: tuple[Any, ...], currency: str, length: float) -> Table:
-    """The options compared, with FRP mass per metre [kg/m], mass [kg] and cost."""
+    """The options compared, with FRP mass per metre [kg/m], mass [kg] and cost (bars and
+    ties); with a tie option, also each option's kind and tie steel per metre [kg/m]."""
+    ties = any(r.kind != "bars" for r in rows)
     t = Table(
         title=Text(f"Options compared (wall length L = {length:g} m)", "bold"),
         title_justify="left",
@@ -81,6 +83,10 @@ def options_table(rows: tuple[Any, ...], currency: str, length: float) -> Table:
     t.add_column(Text("FRP [kg/m]"), justify="right")
     t.add_column(Text("FRP [kg]"), justify="right")
     t.add_column(literal(f"cost [{currency}]"), justify="right")
+    if ties:
+        t.add_column(Text("kind"))
+        t.add_column(Text("tie steel [kg/m]"), justify="right")
     for r in rows:
-        t.add_row(literal(r.name), f"{r.mass_per_m:.2f}", f"{r.mass:.1f}", f"{r.cost:.0f}")
+        extra = [r.kind, f"{r.steel_per_m:.2f}" if r.kind != "bars" else "—"] if ties else []
+        t.add_row(literal(r.name), f"{r.mass_per_m:.2f}", f"{r.mass:.1f}", f"{r.cost:.0f}", *extra)
     return t

@@ -21,7 +21,8 @@ from frp_assess.results.carried_loads import LoadsResult
 from frp_assess.results.json_io import from_data, to_data
 
 FIXTURE = Path(__file__).parents[1] / "fixtures" / "facade-loads.yaml"
-LAQUILA = Path(__file__).parents[2] / "projects" / "facade-laquila.yaml"
+#: a bundled project without loads (the paper's case)
+NO_LOADS_PROJECT = Path(__file__).parents[2] / "projects" / "paper-case.yaml"
 
 
 def test_project_loads_reach_every_model_in_si() -> None:
@@ -48,7 +49,7 @@ def test_anchorage_per_metre_and_no_loads_is_the_default_model() -> None:
     the very NO_LOADS of the model's default."""
     tie = TieInput("t", 3.0, 314.0, 3.0, 6.0, anchorage=30.0).tie()
     assert tie.anchorage_force == pytest.approx(10e3, rel=1e-12)
-    inputs = load_inputs(LAQUILA, warn=None)
+    inputs = load_inputs(NO_LOADS_PROJECT, warn=None)
     assert not inputs.loads
     assert all(m.loads is NO_LOADS for m in inputs.case_models())
 
@@ -78,7 +79,7 @@ def test_results_record_of_the_loads_round_trips() -> None:
     assert tie.capacity == tie.yield_force and tie.ductile and tie.anchorage_force is None
     data = json.loads(json.dumps(to_data(record)))
     assert from_data(LoadsResult, data) == record
-    assert loads_result(load_inputs(LAQUILA, warn=None)) is None
+    assert loads_result(load_inputs(NO_LOADS_PROJECT, warn=None)) is None
 
 
 def test_validate_summary_names_every_load(capsys: pytest.CaptureFixture[str]) -> None:

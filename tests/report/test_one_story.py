@@ -1,6 +1,6 @@
 """One story in every report (issue 39): the report says what results.json's decision says.
 
-The bundled examples (projects/facade-laquila.yaml: 4 of 18 options pass, the verdict is not
+The bundled examples (projects/facade-laquila.yaml: 4 of 19 options pass, the verdict is not
 robust; projects/facade-norcia-coordinates.yaml: Italian, the wall as it is passes while the
 Circolare's static checks fail) and a project where nothing passes (data/nothing-passes.yaml)
 are run (``frp-assess run --no-pdf``) and their reports built as document models, in English

@@ -41,6 +41,8 @@ from frp_assess.config.schema.retrofit_spec import (
     Ratio,
     Sweep,
     SweepAxes,
+    TieOption,
+    tie_label,
 )
 from frp_assess.config.schema.seismic_spec import (
     ArtificialRecordsSpec,
@@ -175,6 +177,7 @@ __all__ = [
     "TABLE_BAND",
     "THICKNESS_RANGE",
     "TableSpectrum",
+    "TieOption",
     "UseClass",
     "WallSpec",
     "WholeNumber",
@@ -183,5 +186,6 @@ __all__ = [
     "option_field",
     "option_name",
     "site_hazard_cached",
+    "tie_label",
     "unsafe_name_reason",
 ]

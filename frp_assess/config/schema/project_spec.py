@@ -14,6 +14,7 @@ from frp_assess.config.schema.analysis_spec import (
     AnalysisSpec,
     CodeCheckSpec,
 )
+from frp_assess.config.schema.loads_spec import TieSpec
 from frp_assess.config.schema.report_spec import CostsSpec, ReportSpec
 from frp_assess.config.schema.retrofit_spec import (
     BarsSpec,
@@ -21,6 +22,8 @@ from frp_assess.config.schema.retrofit_spec import (
     FrpMaterialSpec,
     Intervention,
     InterventionItem,
+    TieOption,
+    tie_label,
 )
 from frp_assess.config.schema.seismic_spec import (
     SeismicSpec,
@@ -130,10 +133,13 @@ class Project(_Model):
                     "characteristic_strain",
                 )
         self._check_option_count()
+        self._check_tie_heights()
         known = self.material_names()
         for i, item in enumerate(self.interventions):
             if isinstance(item, Intervention):
                 self._check_material(item.material, known, "interventions", i, "material")
+            elif isinstance(item, TieOption):
+                continue
             else:
                 for j, m in enumerate(item.sweep.material):
                     self._check_material(m, known, "interventions", i, "sweep", "material", j)
@@ -142,7 +148,7 @@ class Project(_Model):
                 self._check_material(m, known, "design", "materials", j)
         for j, size in enumerate(self.bars.catalogue):
             self._check_material(size.material, known, "bars", "catalogue", j, "material")
-        seen: dict[str, Intervention] = {}
+        seen: dict[str, Intervention | TieOption] = {}
         for i, option in self._expanded_with_index():
             other = seen.setdefault(str(option.name), option)
             if other is not option and _key(other) != _key(option):
@@ -154,7 +160,7 @@ class Project(_Model):
     def _check_option_count(self) -> None:
         sizes = [
             1
-            if isinstance(item, Intervention)
+            if isinstance(item, Intervention | TieOption)
             else len(item.sweep.material) * len(item.sweep.position) * len(item.sweep.ratio)
             for item in self.interventions
         ]
@@ -167,6 +173,25 @@ class Project(_Model):
                     "of every record); split the project",
                     "interventions",
                     i,
+                )
+
+    def _check_tie_heights(self) -> None:
+        """A tie option's tie is on the wall: 0 < height <= H (docs/model.md §12)."""
+        height = float(self.wall.height)
+        for i, item in enumerate(self.interventions):
+            loc: tuple[str | int, ...]
+            tie: TieSpec
+            if isinstance(item, TieOption):
+                tie, loc = item, ("interventions", i, "height")
+            elif isinstance(item, Intervention) and item.tie is not None:
+                tie, loc = item.tie, ("interventions", i, "tie", "height")
+            else:
+                continue
+            if tie.height > height:
+                raise located_error(
+                    f"expected a tie on the wall, 0 < height <= H = {height:g} m, found "
+                    f"{tie.height:g}",
+                    *loc,
                 )
 
     @staticmethod
@@ -225,13 +250,18 @@ class Project(_Model):
                 )
         return table
 
-    def _expanded_with_index(self) -> list[tuple[int, Intervention]]:
-        out: list[tuple[int, Intervention]] = []
+    def _expanded_with_index(self) -> list[tuple[int, Intervention | TieOption]]:
+        out: list[tuple[int, Intervention | TieOption]] = []
         for i, item in enumerate(self.interventions):
+            if isinstance(item, TieOption):
+                out.append((i, item.model_copy(update={"name": item.name or tie_label(item)})))
+                continue
             if isinstance(item, Intervention):
                 name = item.name or option_name(item.material, item.position, item.ratio)
                 if not item.name and item.diameter is not None:
                     name += f" Ø{item.diameter:g}"
+                if not item.name and item.tie is not None:
+                    name += f" + t{tie_label(item.tie)[1:]}"
                 out.append((i, item.model_copy(update={"name": name})))
                 continue
             ax = item.sweep
@@ -248,11 +278,11 @@ class Project(_Model):
                         )
         return out
 
-    def expand_interventions(self) -> list[Intervention]:
+    def expand_interventions(self) -> list[Intervention | TieOption]:
         """The concrete options, in file order, every one named; an option equal to an earlier
-        one (same material, position, ratio and diameter) is dropped."""
-        seen: set[tuple[str, str, float, float | None]] = set()
-        out: list[Intervention] = []
+        one (same material, position, ratio, diameter and tie; or the same tie) is dropped."""
+        seen: set[tuple[object, ...]] = set()
+        out: list[Intervention | TieOption] = []
         for _, option in self._expanded_with_index():
             key = _key(option)
             if key not in seen:
@@ -261,6 +291,24 @@ class Project(_Model):
         return out
 
 
-def _key(option: Intervention) -> tuple[str, str, float, float | None]:
+def _tie_key(tie: TieSpec | None) -> tuple[float | None, ...] | None:
+    """What makes two ties the same (all but the name)."""
+    if tie is None:
+        return None
+    a = None if tie.anchorage is None else float(tie.anchorage)
+    return (
+        float(tie.height),
+        tie.area_mm2,
+        float(tie.spacing),
+        float(tie.length),
+        float(tie.yield_strength),
+        float(tie.elastic_modulus),
+        a,
+    )
+
+
+def _key(option: Intervention | TieOption) -> tuple[object, ...]:
+    if isinstance(option, TieOption):
+        return ("tie", _tie_key(option))
     d = None if option.diameter is None else float(option.diameter)
-    return (option.material, option.position, float(option.ratio), d)
+    return (option.material, option.position, float(option.ratio), d, _tie_key(option.tie))

@@ -6,7 +6,7 @@ target).
 from __future__ import annotations
 
 import math
-from typing import Annotated, Any
+from typing import Annotated, Any, Literal
 
 from pydantic import (
     Discriminator,
@@ -15,6 +15,7 @@ from pydantic import (
     model_validator,
 )
 
+from frp_assess.config.schema.loads_spec import TieSpec
 from frp_assess.config.schema.spec_base import (
     MAX_BAR_AREA,
     MAX_BAR_DIAMETER,
@@ -212,6 +213,34 @@ class Intervention(_Model):
         description="Bar diameter d [mm], from the catalogue (default: the size installing "
         "the least ratio within the spacing rule).",
     )
+    tie: TieSpec | None = Field(
+        None,
+        description="Steel tie-rods added with the bars (bars and a tie together; the fields of "
+        "wall.loads.ties, docs/model.md §12); omit for bars alone.",
+    )
+
+
+class TieOption(TieSpec):
+    """One retrofit option: steel tie-rods at one height, anchored on the outer face (the
+    fields of ``wall.loads.ties``, docs/model.md §12); the option's wall is the wall with the
+    tie added to its loads."""
+
+    type: Literal["tie"] = Field(
+        description="tie: steel tie-rods (an option without type is FRP bars)."
+    )
+    name: str = Field(
+        "",
+        max_length=MAX_NAME_CHARS,
+        description="Name in the results (default e.g. 'Tie Ø20 @ 3.0 m at 6.0 m'), at most "
+        f"{MAX_NAME_CHARS} characters.",
+    )
+
+
+def tie_label(tie: TieSpec) -> str:
+    """A tie's generated name, e.g. ``Tie Ø20 @ 3.0 m at 6.0 m``: its bar (diameter, else
+    area), its spacing along the wall and its height."""
+    size = f"Ø{tie.diameter:g}" if tie.diameter is not None else f"A {tie.area_mm2:g} mm²"
+    return f"Tie {size} @ {float(tie.spacing):.1f} m at {float(tie.height):.1f} m"
 
 
 class SweepAxes(_Model):
@@ -231,13 +260,21 @@ class Sweep(_Model):
 
 
 def _intervention_tag(value: Any) -> str:
+    """``sweep-item`` (a ``sweep:`` key), ``tie-option`` (a ``type:`` key: only ``tie`` is
+    valid, and the tie model says so) or ``option`` (FRP bars, the items without ``type``)."""
     if isinstance(value, dict):
-        return "sweep-item" if "sweep" in value else "option"
-    return "sweep-item" if isinstance(value, Sweep) else "option"
+        if "sweep" in value:
+            return "sweep-item"
+        return "tie-option" if "type" in value else "option"
+    if isinstance(value, Sweep):
+        return "sweep-item"
+    return "tie-option" if isinstance(value, TieOption) else "option"
 
 
 InterventionItem = Annotated[
-    Annotated[Intervention, Tag("option")] | Annotated[Sweep, Tag("sweep-item")],
+    Annotated[Intervention, Tag("option")]
+    | Annotated[TieOption, Tag("tie-option")]
+    | Annotated[Sweep, Tag("sweep-item")],
     Discriminator(_intervention_tag),
 ]
 
