@@ -167,12 +167,12 @@ def retrofit_rows(b: BuildingResults) -> list[list[str]]:
             _proposed(w),
             w.verdict_after,
             "—" if w.frp_mass is None else f"{w.frp_mass:.1f}",
-            "—" if w.frp_cost is None else f"{w.frp_cost:,.0f}",
+            "—" if w.cost is None else f"{w.cost:,.0f}",
         ]
         for w in b.walls
     ]
     t = b.totals
-    rows.append(["building", "", "", "", f"{t.frp_mass:.1f}", f"{t.frp_cost:,.0f}"])
+    rows.append(["building", "", "", "", f"{t.frp_mass:.1f}", f"{t.cost:,.0f}"])
     return rows
 
 
@@ -202,7 +202,7 @@ def print_building_summary(console: Console, b: BuildingResults) -> None:
     t = b.totals
     console.print(
         f"building: {t.walls} walls, {t.walls_failing} failing as they are; retrofit proposed "
-        f"for {t.walls_retrofitted}: FRP {t.frp_mass:.1f} kg, {t.frp_cost:,.0f} "
+        f"for {t.walls_retrofitted}: FRP {t.frp_mass:.1f} kg, {t.cost:,.0f} "
         f"{user(t.currency)} (indicative)"
         + (
             f"; {t.walls_without_solution} failing wall(s) with no passing option"

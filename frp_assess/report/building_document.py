@@ -94,7 +94,7 @@ def retrofit_rows(b: BuildingResults, lang: Lang) -> list[tuple[str, ...]]:
                 _proposed(w, lang),
                 _t(lang, f"verdict.{w.verdict_after}"),
                 "—" if w.frp_mass is None else lang.num(w.frp_mass, 1),
-                "—" if w.frp_cost is None else lang.num(w.frp_cost, 0, grouping=True),
+                "—" if w.cost is None else lang.num(w.cost, 0, grouping=True),
             )
         )
     tot = b.totals
@@ -105,7 +105,7 @@ def retrofit_rows(b: BuildingResults, lang: Lang) -> list[tuple[str, ...]]:
             "",
             "",
             lang.num(tot.frp_mass, 1),
-            lang.num(tot.frp_cost, 0, grouping=True),
+            lang.num(tot.cost, 0, grouping=True),
         )
     )
     return rows
@@ -125,7 +125,7 @@ def _totals(b: BuildingResults, lang: Lang) -> list[Block]:
                 failing=tot.walls_failing,
                 retrofitted=tot.walls_retrofitted,
                 mass=lang.num(tot.frp_mass, 1),
-                cost=lang.num(tot.frp_cost, 0, grouping=True),
+                cost=lang.num(tot.cost, 0, grouping=True),
                 currency=esc(tot.currency),
                 unsolved=unsolved,
             )

@@ -94,8 +94,10 @@ class WallSummary:
     proposed_checks: CaseZeta | None
     as_built: str | None  #: the proposed retrofit's bars as built, one line (English)
     bars: BarsBuilt | None  #: the same bars, number by number
-    frp_mass: float | None
-    frp_cost: float | None
+    frp_mass: float | None  #: the proposed retrofit's FRP bars [kg]
+    frp_cost: float | None  #: ... and their cost [currency]
+    tie_steel_mass: float | None  #: the proposed retrofit's tie-rods' steel [kg] (0: none)
+    cost: float | None  #: the proposed retrofit's cost: bars and tie-rods [currency]
     #: when nothing passes: the option with the largest governing margin; else None
     closest: str | None
     verdict_before: str  #: "passes" | "fails"
@@ -115,6 +117,8 @@ class BuildingTotals:
     walls_without_solution: int  #: failing walls with no option passing
     frp_mass: float
     frp_cost: float
+    tie_steel_mass: float  #: tie-rods' steel of the proposed retrofits [kg]
+    cost: float  #: the proposed retrofits' cost, bars and tie-rods [currency]
     currency: str
     governing_wall: str
     governing_check: str | None
@@ -201,6 +205,8 @@ def wall_summary(name: str, folder: str, results: AssessmentResult) -> WallSumma
         bars=None if built is None else bars_built(built),
         frp_mass=None if proposed is None else proposed.frp_mass,
         frp_cost=None if proposed is None else proposed.frp_cost,
+        tie_steel_mass=None if proposed is None else proposed.option_mass - proposed.frp_mass,
+        cost=None if proposed is None else proposed.option_cost,
         closest=results.closest if results.retrofit_required and proposed is None else None,
         verdict_before=_verdict(urm.passes),
         verdict_after=after,
@@ -234,6 +240,8 @@ def building_results(
         walls_without_solution=sum(r.retrofit_required and r.proposed is None for r in rows),
         frp_mass=sum(r.frp_mass or 0.0 for r in rows),
         frp_cost=sum(r.frp_cost or 0.0 for r in rows),
+        tie_steel_mass=sum(r.tie_steel_mass or 0.0 for r in rows),
+        cost=sum(r.cost or 0.0 for r in rows),
         currency=first.costs.currency,
         governing_wall=governing.name,
         governing_check=governing.unreinforced.governing_check,

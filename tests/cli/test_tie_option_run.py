@@ -137,3 +137,22 @@ def test_console_csv_and_report_show_the_tie(run: tuple[Path, str]) -> None:
     it = _paragraphs(replace(r, report=replace(r.report, language="it")))
     assert "Una soluzione con catene è la parete allo stato di fatto" in it
     assert "catene in acciaio Ø20 mm ogni 3 m a quota 5,5 m" in it
+
+
+def test_a_building_summary_counts_the_tie_in_the_proposed_retrofits_cost(
+    run: tuple[Path, str],
+) -> None:
+    """The building summary's cost of a wall is its proposed option's, bars and tie-rods
+    (docs/results-json.md, building files): with the bars-and-tie option proposed, the tie's
+    778.917 EUR by hand (module docstring) is added to the bars' cost, and its 39.458 kg of
+    steel are counted beside the FRP."""
+    from frp_assess.results.building_summary import wall_summary
+
+    out, _ = run
+    results = load_results(out)
+    proposed = replace(results, recommended=BOTH, retrofit_required=True)
+    row = wall_summary("w", "walls/w", proposed)
+    both = results.case(BOTH)
+    assert row.frp_cost == both.frp_cost
+    assert row.cost == pytest.approx(both.frp_cost + 778.917, abs=1e-3)
+    assert row.tie_steel_mass == pytest.approx(39.458, abs=1e-3)
