@@ -55,7 +55,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 
 from frp_assess.assess.kinematic_nonlinear import time_history_check
-from frp_assess.results.verdict import DecidingCheck
+from frp_assess.results.verdict import DecidingCheck, InterventionResult
 from frp_assess.rules.intervention import (
     CATEGORY_CLAUSE,
     IMPROVEMENT_INCREASE,
@@ -278,6 +278,32 @@ def check_zetas(ev: Evidence) -> dict[str, float | None]:
     return out
 
 
+def mechanism_zeta(ev: Evidence) -> float:
+    """The mechanism's ζ_E [-]: the smallest ζ_E of its deciding checks (an unbounded one,
+    nothing moved, counts as infinite; the IDA's is always finite)."""
+    return min(math.inf if z is None else z for z in check_zetas(ev).values())
+
+
+def intervention_result(as_is: Evidence, intervention: InterventionCategory) -> InterventionResult:
+    """What results.json records of the category (NTC 2018 §8.4): the unreinforced
+    mechanism's ζ_E and the ζ_E an option's mechanism must reach (or exceed)."""
+    zeta = mechanism_zeta(as_is)
+    required, strict = UPGRADE_ZETA, False
+    if intervention.category == "improvement" and intervention.use_class is not None:
+        required = improvement_zeta(zeta, intervention.use_class, intervention.school)
+    elif intervention.category == "local":
+        required, strict = zeta, True
+    return InterventionResult(
+        category=intervention.category,
+        clause=intervention.clause,
+        use_class=intervention.use_class,
+        school=intervention.school,
+        as_is_zeta=zeta,
+        required_zeta=required,
+        strict=strict,
+    )
+
+
 def requirements(as_is: Evidence, intervention: InterventionCategory) -> Requirements | None:
     """What every deciding check of an option must reach under ``intervention``, from the
     unreinforced wall's evidence ``as_is`` (NTC 2018 §8.4, rules/intervention.py); None: the
@@ -285,7 +311,7 @@ def requirements(as_is: Evidence, intervention: InterventionCategory) -> Require
     if intervention.category == "upgrade":
         return None
     zetas = {k: math.inf if z is None else z for k, z in check_zetas(as_is).items()}
-    mechanism = min(zetas.values())
+    mechanism = mechanism_zeta(as_is)
     if intervention.category == "improvement":
         if intervention.use_class is None:
             raise ValueError("an improvement (NTC 2018 §8.4.2) needs the use class")

@@ -17,13 +17,15 @@ from dataclasses import asdict, dataclass, replace
 
 from frp_assess.assess.convention_sensitivity import convention_variants, sensitivity
 from frp_assess.assess.decision import (
-    DECISION_RULE,
     IDA_CHECK,
     PIVOT_CHECK,
     Decision,
     Evidence,
+    Requirements,
     Verdict,
     decide,
+    decision_rule,
+    intervention_result,
     verdict,
 )
 from frp_assess.assess.demand_window import near_demand, time_histories_pass
@@ -43,7 +45,7 @@ from frp_assess.dynamics import IdaResult, IdaSettings, RockingModel
 from frp_assess.motions import Record
 from frp_assess.results.checks import CaseChecks, KinematicChecks, TimeHistoryResult
 from frp_assess.results.model import CaseResult, Sensitivity, SensitivityRowResult
-from frp_assess.results.verdict import ConventionOutcome, Robustness
+from frp_assess.results.verdict import ConventionOutcome, InterventionResult, Robustness
 
 #: how many further options are tried, per failing convention, for the one that takes over
 TAKE_OVER_CANDIDATES = 3
@@ -151,6 +153,7 @@ class DecidedRun:
     sensitivity: Sensitivity
     robustness: Robustness
     decision_rule: str
+    intervention: InterventionResult
 
 
 def design_options(
@@ -258,7 +261,7 @@ def assess_and_decide(
         evidence(c, s, k, fc * demand, inputs.target)
         for c, s, k in zip(raw, summaries, checks.cases, strict=True)
     ]
-    decision = decide(ev)
+    decision = decide(ev, inputs.intervention)
     rank_of = {i: r for r, i in enumerate(decision.order, start=1)}
     cases = tuple(
         replace(
@@ -297,7 +300,8 @@ def assess_and_decide(
         checks=checks,
         sensitivity=sens,
         robustness=robust,
-        decision_rule=DECISION_RULE.format(target=inputs.target),
+        decision_rule=decision_rule(inputs.intervention, inputs.target),
+        intervention=intervention_result(ev[0], inputs.intervention),
     )
 
 
@@ -309,9 +313,10 @@ def _variant_verdict(
     demand: float,
     max_multiplier: float,
     settings: IdaSettings | None = None,
+    required: Requirements | None = None,
 ) -> tuple[Verdict, CaseSummary]:
     """The verdict of ``model`` (a convention variant of ``base``'s case; ``settings``: its
-    IDA search when not the run's)."""
+    IDA search when not the run's; ``required``: what the decision asked of the options)."""
     s = summarise(runner.run([model], settings=settings)[0], max_multiplier, model.a_rm_g)
     c = ctx.checks(base.name, model)
     ev = replace(
@@ -324,7 +329,7 @@ def _variant_verdict(
         d_slc=c.slc.d_limit,
         peaks_slc=_peaks(c.time_history_slc),
     )
-    return verdict(ev), s
+    return verdict(ev, required), s
 
 
 def conventions(
@@ -352,7 +357,9 @@ def conventions(
     ]
     out = []
     for j, (label, variant, settings) in enumerate(variants):
-        v, _ = _variant_verdict(runner, ctx, ev[focus], variant, demand, max_multiplier, settings)
+        v, _ = _variant_verdict(
+            runner, ctx, ev[focus], variant, demand, max_multiplier, settings, decision.required
+        )
         takes_over = None
         if decision.recommended == focus and not v.passes:
             for i in candidates:
@@ -360,7 +367,14 @@ def conventions(
                 if j >= len(their):
                     continue
                 vi, _ = _variant_verdict(
-                    runner, ctx, ev[i], their[j].model, demand, max_multiplier, their[j].settings
+                    runner,
+                    ctx,
+                    ev[i],
+                    their[j].model,
+                    demand,
+                    max_multiplier,
+                    their[j].settings,
+                    decision.required,
                 )
                 if vi.passes:
                     takes_over = ev[i].name
