@@ -10,6 +10,7 @@ import pytest
 
 from frp_assess.report.body_front import category, category_paragraph
 from frp_assess.report.lang import Lang
+from frp_assess.report.verdict_text import category_sentence
 from frp_assess.results.json_io import from_json
 from frp_assess.results.model import AssessmentResult
 from frp_assess.results.verdict import InterventionResult
@@ -58,3 +59,14 @@ def test_below_one_the_time_history_zeta_is_said_to_be_a_displacement_ratio() ->
     blocks = category(results("improvement", "II", required=0.55), Lang("en"))
     assert len(blocks) == 5
     assert len(category(results("upgrade"), Lang("en"))) == 4
+
+
+@pytest.mark.parametrize("code", ["en", "it"])
+def test_the_conclusion_says_how_the_options_were_judged(code: str) -> None:
+    """The one verdict source (report/verdict_text.py) names the category and its clause in
+    the conclusion; a file without ``intervention`` gets no such sentence."""
+    lang = Lang(code)
+    sentence = category_sentence(results("improvement", "II", required=0.55), lang)
+    assert sentence is not None and "NTC 2018 §8.4.2" in sentence
+    assert ("an improvement" if code == "en" else "miglioramento") in sentence
+    assert category_sentence(replace(results("upgrade"), intervention=None), lang) is None
