@@ -19,6 +19,8 @@ from frp_assess.assess.convention_sensitivity import convention_variants, sensit
 from frp_assess.assess.decision import (
     IDA_CHECK,
     PIVOT_CHECK,
+    TH_SLC,
+    TH_SLV,
     Decision,
     Evidence,
     Requirements,
@@ -26,6 +28,8 @@ from frp_assess.assess.decision import (
     decide,
     decision_rule,
     intervention_result,
+    requirements,
+    time_history_deciding_check,
     verdict,
 )
 from frp_assess.assess.demand_window import near_demand, time_histories_pass
@@ -65,15 +69,28 @@ class CheckContext:
     ) -> None:
         self.inputs = inputs
         self.demands = limit_state_demands(inputs, records, inputs.building, state_records)
+        #: what the category of the intervention asks of an option's checks (None: ζ_E ≥ 1)
+        self.required: Requirements | None = None
 
     def checks(self, name: str, model: RockingModel) -> CaseChecks:
         """Every code check of ``model`` (the time histories at each limit state's action)."""
         return checks_at(name, model, self.inputs, self.demands)
 
     def screen(self, model: RockingModel) -> bool:
-        """The time-history checks at SLV and SLC pass (design mode's cheap first test)."""
+        """The time-history checks at SLV and SLC pass (design mode's cheap first test),
+        against :attr:`required` when the category of the intervention asks another ζ_E."""
         c = self.checks("design", model)
-        return all(t is not None and t.passed for t in (c.time_history, c.time_history_slc))
+        if self.required is None:
+            return all(t is not None and t.passed for t in (c.time_history, c.time_history_slc))
+        slv = _peaks(c.time_history)
+        if slv is None:
+            return False
+        slc = _peaks(c.time_history_slc) or slv
+        d0, r = c.capacity.d0, self.required
+        return (
+            time_history_deciding_check(slv, d0, c.slv.d_limit, TH_SLV, r[TH_SLV]).passed
+            and time_history_deciding_check(slc, d0, c.slc.d_limit, TH_SLC, r[TH_SLC]).passed
+        )
 
 
 def evidence(
@@ -99,6 +116,31 @@ def evidence(
         peaks_slc=_peaks(checks.time_history_slc),
         dropped=not case.is_unreinforced and case.pivot is not None and case.pivot.dropped,
         unreinforced=case.is_unreinforced,
+    )
+
+
+def as_is_evidence(
+    ctx: CheckContext, model: RockingModel, results: list[IdaResult], demand: float
+) -> Evidence:
+    """What the decision reads of the wall as it is (``model``, its IDA ``results``), before
+    the cases are summarised: for design mode's requirement; ``demand`` = FC·a_g·S [g]."""
+    inputs = ctx.inputs
+    s = summarise(results, inputs.ida.max_multiplier, model.a_rm_g)
+    c = ctx.checks("unreinforced", model)
+    return Evidence(
+        name="unreinforced",
+        cost=0.0,
+        mass=0.0,
+        a_dyn=s.a_dyn_bound,
+        censored=tuple(a is None for a in s.a_dyn),
+        demand=demand,
+        target=inputs.target,
+        peaks=_peaks(c.time_history),
+        d0=c.capacity.d0,
+        d_slv=c.slv.d_limit,
+        d_slc=c.slc.d_limit,
+        peaks_slc=_peaks(c.time_history_slc),
+        unreinforced=True,
     )
 
 
@@ -222,9 +264,25 @@ def assess_and_decide(
     if inputs.design is not None:
         pairs = [(m, p) for m in inputs.design.materials for p in inputs.design.positions]
         design = []
+        # the category's requirement, from the wall as it is (the decision takes it again)
+        ctx.required = requirements(
+            as_is_evidence(ctx, models[0], all_results[0], fc * demand), inputs.intervention
+        )
+        ida_req = None if ctx.required is None else ctx.required[IDA_CHECK]
         for k, (mat, pos) in enumerate(pairs):
             report("design", k, len(pairs))
-            design.append(design_search(runner, inputs, mat, pos, fc * demand, ctx.screen))
+            design.append(
+                design_search(
+                    runner,
+                    inputs,
+                    mat,
+                    pos,
+                    fc * demand,
+                    ctx.screen,
+                    target=None if ida_req is None else ida_req.value,
+                    strict=ida_req is not None and ida_req.strict,
+                )
+            )
         report("design", len(pairs), len(pairs))
         added, design_cases = design_options(inputs, design)
         if added:

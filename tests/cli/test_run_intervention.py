@@ -96,3 +96,25 @@ def test_the_use_class_of_the_site_and_of_code_check_must_agree(
     assert main(["run", str(project), "--no-pdf"]) == 2
     err = capsys.readouterr().err.strip()
     assert "code_check.use_class" in err and "III" in err and "IV" in err, err
+
+
+def test_design_mode_searches_the_category_s_target(tmp_path: Path) -> None:
+    """Design mode walks the grid up to the first ratio meeting what the category asks: as
+    an upgrade the IDA's ζ_E must reach the target 7 (the golden small wall's 1 ‰ gives
+    5.96: a larger ratio); as an improvement of class II it must reach 3.27 + 0.1 = 3.37,
+    which a smaller ratio does.  Each answer passes the decision; the improvement's is the
+    smaller and its ζ_E lies between 3.37 and 7."""
+    design = "design: {materials: [GFRP], positions: [external], ratio_range: [0.1, 2.1], "
+    design += "resolution: 0.2}\n"
+    up = run(tmp_path, "design-upgrade", design)["design"][0]
+    imp = run(
+        tmp_path, "design-improvement", design + "code_check: {intervention: improvement, "
+        "use_class: II}\n"
+    )  # fmt: skip
+    found = imp["design"][0]
+    assert up["ratio"] is not None and up["capacity_demand"] >= 7.0
+    assert found["ratio"] is not None and found["ratio"] < up["ratio"]
+    required = imp["intervention"]["required_zeta"]
+    assert required <= found["capacity_demand"] < 7.0
+    case = next(c for c in imp["cases"] if c["name"] == found["case"])
+    assert case["passes"] is True
