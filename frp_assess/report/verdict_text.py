@@ -80,6 +80,15 @@ def category_sentence(results: Results, lang: Lang) -> str | None:
     return lang.t("decision.category", category=name, clause=esc(iv.clause))
 
 
+def option_target(results: Results, lang: Lang) -> str:
+    """What an option's IDA capacity/demand must reach, in words: the target (an upgrade, or
+    a file written before the category), else the ζ_E the category asks (NTC 2018 §8.4)."""
+    iv = results.intervention
+    if iv is None or iv.category == "upgrade":
+        return lang.gnum(results.model.target)
+    return lang.t("category.ida_target", category=lang.t(f"category.name.{iv.category}"))
+
+
 def failed_static(results: Results, case: CaseResult, lang: Lang) -> list[str]:
     """The static kinematic checks ``case`` fails, each as ``<check> ζ_E = <z>``."""
     kc = results.kinematic_checks

@@ -10,7 +10,7 @@ import pytest
 
 from frp_assess.report.body_front import category, category_paragraph
 from frp_assess.report.lang import Lang
-from frp_assess.report.verdict_text import category_sentence
+from frp_assess.report.verdict_text import category_sentence, option_target
 from frp_assess.results.json_io import from_json
 from frp_assess.results.model import AssessmentResult
 from frp_assess.results.verdict import InterventionResult
@@ -70,3 +70,11 @@ def test_the_conclusion_says_how_the_options_were_judged(code: str) -> None:
     assert sentence is not None and "NTC 2018 §8.4.2" in sentence
     assert ("an improvement" if code == "en" else "miglioramento") in sentence
     assert category_sentence(replace(results("upgrade"), intervention=None), lang) is None
+
+
+def test_the_ranking_rule_states_what_an_option_must_reach() -> None:
+    """The upgrade keeps the target (1 in the fixture); an improvement names the category."""
+    assert option_target(results("upgrade"), Lang("en")) == "1"
+    assert option_target(results("improvement", "II"), Lang("en")) == "the ζ_E an improvement asks"
+    it = option_target(results("local"), Lang("it"))
+    assert it == "lo ζ_E richiesto per un intervento locale"
