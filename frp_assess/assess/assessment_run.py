@@ -176,6 +176,7 @@ def assess(
         decision_rule=decided.decision_rule,
         closest=decided.closest,
         robustness=decided.robustness,
+        intervention=decided.intervention,
     )
     # NTC 2018 §10.2: the checks of the run by routes it did not take (assess/independent_checks)
     checks = independent_checks(

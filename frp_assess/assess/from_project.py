@@ -14,6 +14,7 @@ from pathlib import Path
 
 from frp_assess.assess.bar_catalogue import BarSize
 from frp_assess.assess.bars_as_built import as_built_difference, option_with_layout
+from frp_assess.assess.decision import InterventionCategory
 from frp_assess.assess.inputs import (
     AnchorageSettings,
     ArtificialRecords,
@@ -257,6 +258,43 @@ def report_settings(project: Project, base_dir: Path, file: str | None) -> Repor
     return ReportSettings(language=project.report.language, template=str(path))
 
 
+def intervention_of(
+    project: Project, file: str | None, lines: Mapping[Loc, int] | None
+) -> InterventionCategory:
+    """The category of the intervention (``code_check.intervention``, NTC 2018 §8.4) with the
+    building's use class: ``code_check.use_class``, else the spectrum's (by coordinates).
+    Refused: two different use classes, an improvement without one (§8.4.2 depends on it),
+    ``school`` for a class other than III."""
+    cc = project.code_check
+    spectrum = project.seismic.spectrum
+    of_site = spectrum.use_class if isinstance(spectrum, Ntc2018Spectrum) else None
+    use_class = cc.use_class or of_site
+
+    def refuse(message: str, loc: Loc) -> InputError:
+        line = None if lines is None else line_of(lines, loc)
+        return InputError(message, file=file, line=line, key=format_path(loc))
+
+    if cc.use_class is not None and of_site is not None and cc.use_class != of_site:
+        raise refuse(
+            f"expected one use class of the building, found code_check.use_class "
+            f"{cc.use_class} and seismic.spectrum.use_class {of_site}",
+            ("code_check", "use_class"),
+        )
+    if cc.intervention == "improvement" and use_class is None:
+        raise refuse(
+            "an improvement (NTC 2018 §8.4.2) depends on the building's use class: give "
+            "code_check.use_class (I-IV); none was found",
+            ("code_check", "intervention"),
+        )
+    if cc.school and use_class != "III":
+        raise refuse(
+            f"school: true applies to use class III (NTC 2018 §8.4.2), found use class "
+            f"{use_class or 'none'}",
+            ("code_check", "school"),
+        )
+    return InterventionCategory(cc.intervention, use_class, cc.school)
+
+
 def inputs_from_project(
     project: Project,
     base_dir: Path,
@@ -341,6 +379,7 @@ def inputs_from_project(
         input_file=input_file,
         bars=bar_settings_of(project.bars),
         report=report_settings(project, base_dir, file or input_file or None),
+        intervention=intervention_of(project, file or input_file or None, lines),
     )
     problem = base_problem(inputs.wall_input)
     if problem is not None:  # the one refusal of the masonry at the base (rules/masonry.py)

@@ -19,6 +19,7 @@ from frp_assess.assess.bar_strain import (
     bar_design_strain,
     fibre_of,
 )
+from frp_assess.assess.decision import UPGRADE, InterventionCategory
 from frp_assess.assess.load_inputs import NO_LOAD_INPUTS, LoadsInput, TieInput
 from frp_assess.assess.masonry_strength import masonry_strength
 from frp_assess.assess.wall_model import BarsInput, WallInput, rocking_model
@@ -250,6 +251,8 @@ class AssessmentInputs:
     site_limit_state: str = "SLV"
     #: what bears on and pushes the wall (docs/model.md §12); empty: free-standing
     loads: LoadsInput = NO_LOAD_INPUTS
+    #: the category of the intervention: what an option must reach (NTC 2018 §8.4)
+    intervention: InterventionCategory = UPGRADE
 
     @property
     def masonry_strength(self) -> MasonryResult:

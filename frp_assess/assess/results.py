@@ -74,7 +74,7 @@ from frp_assess.results.run_inputs import (
     ProjectInfo,
     Software,
 )
-from frp_assess.results.verdict import Robustness
+from frp_assess.results.verdict import InterventionResult, Robustness
 
 #: most points stored per time history in results.json
 MAX_HISTORY_POINTS = 2500
@@ -354,6 +354,7 @@ def build_results(
     decision_rule: str = "",
     closest: str | None = None,
     robustness: Robustness | None = None,
+    intervention: InterventionResult | None = None,
 ) -> AssessmentResult:
     """The whole result, from the ranked ``cases`` and the rest of the assessment
     (``floor_spectra`` for a wall above ground, :func:`frp_assess.assess.floor_input.floor_spectra`;
@@ -442,6 +443,7 @@ def build_results(
         report=inputs.report,
         site=site_result(inputs.site, inputs.site_limit_state),
         loads=loads_result(inputs),
+        intervention=intervention,
     )
 
 

@@ -55,7 +55,7 @@ def robustness(
             ]
             p = fit_lognormal_fragility(exact, censored).probability(design_intensity)
     # with one record there is nothing to leave out
-    picks = leave_one_out(ev) if len(names) > 1 else []
+    picks = leave_one_out(ev, decision.intervention) if len(names) > 1 else []
     loo = [
         LeaveOneOut(
             record=name,

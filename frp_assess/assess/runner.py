@@ -228,11 +228,16 @@ def design_search(
     position: Position,
     demand_g: float,
     screen: Callable[[RockingModel], bool] | None = None,
+    *,
+    target: float | None = None,
+    strict: bool = False,
 ) -> DesignResult:
     """Smallest ρ on the grid of ``resolution`` within ``ratio_range`` that passes every
     deciding check: ``screen(model)`` (the time-history checks,
     :func:`frp_assess.assess.verdict_pipeline.time_history_screen`; None: none) and the IDA's design
-    capacity/demand ≥ the target (``demand_g`` = FC·a_g·S [g]).  Capacity is not assumed to
+    capacity/demand ≥ the target (``demand_g`` = FC·a_g·S [g]; ``target`` [-] the ζ_E the
+    category of the intervention asks of the IDA, above it when ``strict``; None: the
+    assessment's ``inputs.target``).  Capacity is not assumed to
     grow with ρ (it does not: a stiffer bar can break sooner, a heavier one move the pivot):
     the grid is walked from the bottom up and the first ratio that passes is the answer, so
     every smaller grid ratio was checked and failed.
@@ -247,6 +252,7 @@ def design_search(
     base: a toe that crushes is the IDA's failure mode, docs/model.md §1.1.)
     """
     assert inputs.design is not None
+    goal = inputs.target if target is None else target
     lo_r, hi_r = inputs.design.ratio_range
     res = inputs.design.resolution
     grid_lo = math.ceil(lo_r / res - 1e-9)
@@ -296,7 +302,7 @@ def design_search(
         cd_k = evaluate(k).design_a_dyn / demand_g
         if best is None or cd_k > best[0]:
             best = (cd_k, k)
-        if cd_k >= inputs.target:
+        if cd_k > goal if strict else cd_k >= goal:
             found = k
             break
     if found is None:
@@ -316,7 +322,7 @@ def design_search(
             None if best is None else evaluate(best[1]),
             None if best is None else best[0],
             f"no ratio up to {hi_shown:g} ‰ passes every deciding check (IDA target "
-            f"{inputs.target:g}{', time history SLV and SLC' if screen is not None else ''})"
+            f"{goal:g}{', time history SLV and SLC' if screen is not None else ''})"
             + reach
             + screen_note
             + cap_note,

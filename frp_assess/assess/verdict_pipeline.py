@@ -17,13 +17,19 @@ from dataclasses import asdict, dataclass, replace
 
 from frp_assess.assess.convention_sensitivity import convention_variants, sensitivity
 from frp_assess.assess.decision import (
-    DECISION_RULE,
     IDA_CHECK,
     PIVOT_CHECK,
+    TH_SLC,
+    TH_SLV,
     Decision,
     Evidence,
+    Requirements,
     Verdict,
     decide,
+    decision_rule,
+    intervention_result,
+    requirements,
+    time_history_deciding_check,
     verdict,
 )
 from frp_assess.assess.demand_window import near_demand, time_histories_pass
@@ -43,7 +49,7 @@ from frp_assess.dynamics import IdaResult, IdaSettings, RockingModel
 from frp_assess.motions import Record
 from frp_assess.results.checks import CaseChecks, KinematicChecks, TimeHistoryResult
 from frp_assess.results.model import CaseResult, Sensitivity, SensitivityRowResult
-from frp_assess.results.verdict import ConventionOutcome, Robustness
+from frp_assess.results.verdict import ConventionOutcome, InterventionResult, Robustness
 
 #: how many further options are tried, per failing convention, for the one that takes over
 TAKE_OVER_CANDIDATES = 3
@@ -63,15 +69,28 @@ class CheckContext:
     ) -> None:
         self.inputs = inputs
         self.demands = limit_state_demands(inputs, records, inputs.building, state_records)
+        #: what the category of the intervention asks of an option's checks (None: ζ_E ≥ 1)
+        self.required: Requirements | None = None
 
     def checks(self, name: str, model: RockingModel) -> CaseChecks:
         """Every code check of ``model`` (the time histories at each limit state's action)."""
         return checks_at(name, model, self.inputs, self.demands)
 
     def screen(self, model: RockingModel) -> bool:
-        """The time-history checks at SLV and SLC pass (design mode's cheap first test)."""
+        """The time-history checks at SLV and SLC pass (design mode's cheap first test),
+        against :attr:`required` when the category of the intervention asks another ζ_E."""
         c = self.checks("design", model)
-        return all(t is not None and t.passed for t in (c.time_history, c.time_history_slc))
+        if self.required is None:
+            return all(t is not None and t.passed for t in (c.time_history, c.time_history_slc))
+        slv = _peaks(c.time_history)
+        if slv is None:
+            return False
+        slc = _peaks(c.time_history_slc) or slv
+        d0, r = c.capacity.d0, self.required
+        return (
+            time_history_deciding_check(slv, d0, c.slv.d_limit, TH_SLV, r[TH_SLV]).passed
+            and time_history_deciding_check(slc, d0, c.slc.d_limit, TH_SLC, r[TH_SLC]).passed
+        )
 
 
 def evidence(
@@ -97,6 +116,31 @@ def evidence(
         peaks_slc=_peaks(checks.time_history_slc),
         dropped=not case.is_unreinforced and case.pivot is not None and case.pivot.dropped,
         unreinforced=case.is_unreinforced,
+    )
+
+
+def as_is_evidence(
+    ctx: CheckContext, model: RockingModel, results: list[IdaResult], demand: float
+) -> Evidence:
+    """What the decision reads of the wall as it is (``model``, its IDA ``results``), before
+    the cases are summarised: for design mode's requirement; ``demand`` = FC·a_g·S [g]."""
+    inputs = ctx.inputs
+    s = summarise(results, inputs.ida.max_multiplier, model.a_rm_g)
+    c = ctx.checks("unreinforced", model)
+    return Evidence(
+        name="unreinforced",
+        cost=0.0,
+        mass=0.0,
+        a_dyn=s.a_dyn_bound,
+        censored=tuple(a is None for a in s.a_dyn),
+        demand=demand,
+        target=inputs.target,
+        peaks=_peaks(c.time_history),
+        d0=c.capacity.d0,
+        d_slv=c.slv.d_limit,
+        d_slc=c.slc.d_limit,
+        peaks_slc=_peaks(c.time_history_slc),
+        unreinforced=True,
     )
 
 
@@ -151,6 +195,7 @@ class DecidedRun:
     sensitivity: Sensitivity
     robustness: Robustness
     decision_rule: str
+    intervention: InterventionResult
 
 
 def design_options(
@@ -221,9 +266,25 @@ def assess_and_decide(
     if inputs.design is not None:
         pairs = [(m, p) for m in inputs.design.materials for p in inputs.design.positions]
         design = []
+        # the category's requirement, from the wall as it is (the decision takes it again)
+        ctx.required = requirements(
+            as_is_evidence(ctx, models[0], all_results[0], fc * demand), inputs.intervention
+        )
+        ida_req = None if ctx.required is None else ctx.required[IDA_CHECK]
         for k, (mat, pos) in enumerate(pairs):
             report("design", k, len(pairs))
-            design.append(design_search(runner, inputs, mat, pos, fc * demand, ctx.screen))
+            design.append(
+                design_search(
+                    runner,
+                    inputs,
+                    mat,
+                    pos,
+                    fc * demand,
+                    ctx.screen,
+                    target=None if ida_req is None else ida_req.value,
+                    strict=ida_req is not None and ida_req.strict,
+                )
+            )
         report("design", len(pairs), len(pairs))
         added, design_cases = design_options(inputs, design)
         if added:
@@ -260,7 +321,7 @@ def assess_and_decide(
         evidence(c, s, k, fc * demand, inputs.target)
         for c, s, k in zip(raw, summaries, checks.cases, strict=True)
     ]
-    decision = decide(ev)
+    decision = decide(ev, inputs.intervention)
     rank_of = {i: r for r, i in enumerate(decision.order, start=1)}
     cases = tuple(
         replace(
@@ -299,7 +360,8 @@ def assess_and_decide(
         checks=checks,
         sensitivity=sens,
         robustness=robust,
-        decision_rule=DECISION_RULE.format(target=inputs.target),
+        decision_rule=decision_rule(inputs.intervention, inputs.target),
+        intervention=intervention_result(ev[0], inputs.intervention),
     )
 
 
@@ -311,9 +373,10 @@ def _variant_verdict(
     demand: float,
     max_multiplier: float,
     settings: IdaSettings | None = None,
+    required: Requirements | None = None,
 ) -> tuple[Verdict, CaseSummary]:
     """The verdict of ``model`` (a convention variant of ``base``'s case; ``settings``: its
-    IDA search when not the run's)."""
+    IDA search when not the run's; ``required``: what the decision asked of the options)."""
     s = summarise(runner.run([model], settings=settings)[0], max_multiplier, model.a_rm_g)
     c = ctx.checks(base.name, model)
     ev = replace(
@@ -326,7 +389,7 @@ def _variant_verdict(
         d_slc=c.slc.d_limit,
         peaks_slc=_peaks(c.time_history_slc),
     )
-    return verdict(ev), s
+    return verdict(ev, required), s
 
 
 def conventions(
@@ -354,7 +417,9 @@ def conventions(
     ]
     out = []
     for j, (label, variant, settings) in enumerate(variants):
-        v, _ = _variant_verdict(runner, ctx, ev[focus], variant, demand, max_multiplier, settings)
+        v, _ = _variant_verdict(
+            runner, ctx, ev[focus], variant, demand, max_multiplier, settings, decision.required
+        )
         takes_over = None
         if decision.recommended == focus and not v.passes:
             for i in candidates:
@@ -362,7 +427,14 @@ def conventions(
                 if j >= len(their):
                     continue
                 vi, _ = _variant_verdict(
-                    runner, ctx, ev[i], their[j].model, demand, max_multiplier, their[j].settings
+                    runner,
+                    ctx,
+                    ev[i],
+                    their[j].model,
+                    demand,
+                    max_multiplier,
+                    their[j].settings,
+                    decision.required,
                 )
                 if vi.passes:
                     takes_over = ev[i].name

@@ -25,6 +25,7 @@ from frp_assess.config.schema import (
 )
 from frp_assess.config.schema.loads_spec import WallLoadsSpec
 from frp_assess.errors import InputError
+from frp_assess.rules.intervention import CATEGORY_CLAUSE
 from frp_assess.rules.tie_rods import tie_anchorage_force, tie_is_ductile, tie_yield_force
 
 
@@ -81,13 +82,20 @@ def building_summary(project: Project) -> str:
 
 def code_check_summary(project: Project) -> str:
     """Knowledge level, FC [-] and whether FC divides the IDA's capacity/demand (docs/model.md
-    §5.3, §5.5), and the behaviour factor q [-]."""
+    §5.3, §5.5), the behaviour factor q [-] and the category of the intervention (NTC 2018
+    §8.4)."""
     cc = project.code_check
     fc = cc.confidence_factor
     where = (
         "in the IDA verdict too" if cc.fc_in_ida else "not in the IDA verdict (fc_in_ida: false)"
     )
-    return f"{cc.knowledge_level}, FC = {fc:g} ({where}), q = {cc.behaviour_factor:g}"
+    category = f"{cc.intervention} ({CATEGORY_CLAUSE[cc.intervention]})"
+    if cc.use_class is not None:
+        category += f", use class {cc.use_class}" + (" school" if cc.school else "")
+    return (
+        f"{cc.knowledge_level}, FC = {fc:g} ({where}), q = {cc.behaviour_factor:g}; "
+        f"intervention: {category}"
+    )
 
 
 #: newtons in a kilonewton: mm²·MPa is N, the summary prints kN

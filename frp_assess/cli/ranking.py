@@ -15,6 +15,7 @@ from frp_assess.numbers import FALLS, fmt_capacity, margin_text
 from frp_assess.results.model import AssessmentResult, CaseResult
 from frp_assess.results.verdict_words import (
     GOVERNING_LEGEND,
+    category_line,
     governing_short,
     verdict_word,
 )
@@ -81,7 +82,8 @@ def legend_lines(results: AssessmentResult) -> list[str]:
         "every deciding check passes, or not; governs: the deciding check with the smallest "
         f"margin ({GOVERNING_LEGEND}); margin: its capacity/demand, ≥ 1 passes, '{FALLS}': "
         "a record topples the wall; C/D: the IDA's design a_dyn/(FC·a_g·S) against the "
-        f"target {results.model.target:g}, '≥' a lower bound"
+        f"target {results.model.target:g}, '≥' a lower bound",
+        category_line(results),
     ]
     lines.extend(tie_lines(results))
     if results.recommended and not results.retrofit_required:

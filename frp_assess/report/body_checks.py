@@ -15,6 +15,7 @@ from frp_assess.report.formats import TableData
 from frp_assess.report.lang import Lang, short
 from frp_assess.report.verdict_text import (
     cell,
+    option_target,
     passes,
     rests_on,
     robustness_lines,
@@ -212,7 +213,7 @@ def retrofit(results: Results, lang: Lang) -> list[Block]:
         out += decision_lines(results, lang)
         out += [markup(line) for line in robustness_lines(results, lang)]
     out.append(h2(lang.t("h.retrofit.ranking")))
-    out.append(markup(lang.t("retrofit.rule", target=lang.gnum(results.model.target)), "small"))
+    out.append(markup(lang.t("retrofit.rule", target=option_target(results, lang)), "small"))
     out.append(
         grid(_ranking_table(results, lang),
              [x * mm for x in (8, 24, 18, 19, 10, 15, 18, 10, 13, 15, 24)],

@@ -8,6 +8,7 @@ from frp_assess.report.doc_model import Block
 from frp_assess.report.flow import esc, h1, h2, markup
 from frp_assess.report.lang import Lang
 from frp_assess.report.verdict_text import (
+    category_sentence,
     check_words,
     margin_text,
     passes,
@@ -78,6 +79,9 @@ def decision_lines(results: Results, lang: Lang) -> list[Block]:
     and the closest option when none passes (the decision fields of the results; [] in
     files written before them)."""
     out: list[Block] = []
+    category = category_sentence(results, lang)
+    if category is not None and results.options:
+        out.append(markup(category))
     rec = results.case(results.recommended)
     for case, key in ((rec, "decision.option"),):  # the wall as it is: in its verdict
         check = getattr(case, "governing_check", None) if case is not None else None

@@ -13,6 +13,12 @@ from frp_assess.report.formats import TableData, design_strain
 from frp_assess.report.lang import Lang, short
 from frp_assess.results.carried_loads import TieOptionResult, TieResult
 from frp_assess.results.model import AssessmentResult
+from frp_assess.rules.intervention import (
+    IMPROVEMENT_INCREASE,
+    IMPROVEMENT_MINIMUM,
+    UPGRADE_ZETA,
+    improvement_has_minimum,
+)
 from frp_assess.text_safety import Markup
 
 Results = AssessmentResult
@@ -141,12 +147,38 @@ def wall(results: Results, lang: Lang) -> list[Block]:
     ]
 
 
+def category_paragraph(results: Results, lang: Lang) -> str:
+    """What the category of the intervention (results.json ``intervention``, NTC 2018 §8.4)
+    asks of an option, in the report's language; a file written before the key was judged
+    as an upgrade."""
+    iv = results.intervention
+    if iv is None or iv.category == "upgrade":
+        return lang.t("category.upgrade", required=lang.gnum(UPGRADE_ZETA),
+                      target=lang.gnum(results.model.target))  # fmt: skip
+    as_is = lang.num(iv.as_is_zeta, 2)
+    if iv.category == "local":
+        return lang.t("category.local", as_is=as_is)
+    school = lang.t("category.school") if iv.school else ""
+    if improvement_has_minimum(iv.use_class or "", iv.school):
+        rule = lang.t("category.improvement.minimum", minimum=lang.gnum(IMPROVEMENT_MINIMUM))
+    else:
+        rule = lang.t("category.improvement.increase", as_is=as_is,
+                      increase=lang.gnum(IMPROVEMENT_INCREASE))  # fmt: skip
+    return lang.t("category.improvement", use_class=esc(iv.use_class or "—"), school=school,
+                  required=lang.num(iv.required_zeta, 2), rule=rule)  # fmt: skip
+
+
 def category(results: Results, lang: Lang) -> list[Block]:
-    return [
-        h1(lang.t("h.category")),
-        markup(lang.t("category.local")),
-        markup(lang.t("category.global")),
-    ]
+    """The category of the intervention: what an option must reach, how the wall as it is
+    is judged, and (local, improvement) what a time history's ζ_E is."""
+    out: list[Block] = [h1(lang.t("h.category")), markup(category_paragraph(results, lang))]
+    iv = results.intervention
+    if iv is not None:
+        out.append(markup(lang.t("category.as_is")))
+    if iv is not None and iv.category != "upgrade":
+        out.append(markup(lang.t("category.th_zeta")))
+    out.append(markup(lang.t("category.global")))
+    return out
 
 
 def knowledge_section(results: Results, lang: Lang) -> list[Block]:

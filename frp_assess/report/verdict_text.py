@@ -70,6 +70,25 @@ def verdict_sentence(case: CaseResult, lang: Lang) -> str:
     return lang.t(key, governing=governing(case, lang))
 
 
+def category_sentence(results: Results, lang: Lang) -> str | None:
+    """How the options were judged: the category of the intervention (results.json
+    ``intervention``, NTC 2018 §8.4) in one sentence; None for a file written before it."""
+    iv = results.intervention
+    if iv is None:
+        return None
+    name = lang.t(f"category.name.{iv.category}")
+    return lang.t("decision.category", category=name, clause=esc(iv.clause))
+
+
+def option_target(results: Results, lang: Lang) -> str:
+    """What an option's IDA capacity/demand must reach, in words: the target (an upgrade, or
+    a file written before the category), else the ζ_E the category asks (NTC 2018 §8.4)."""
+    iv = results.intervention
+    if iv is None or iv.category == "upgrade":
+        return lang.gnum(results.model.target)
+    return lang.t("category.ida_target", category=lang.t(f"category.name.{iv.category}"))
+
+
 def failed_static(results: Results, case: CaseResult, lang: Lang) -> list[str]:
     """The static kinematic checks ``case`` fails, each as ``<check> ζ_E = <z>``."""
     kc = results.kinematic_checks

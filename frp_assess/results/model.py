@@ -35,7 +35,7 @@ from frp_assess.results.run_inputs import FloorSpectraResult as FloorSpectraResu
 from frp_assess.results.run_inputs import LimitStateSite as LimitStateSite  # re-export
 from frp_assess.results.run_inputs import ReportSettings as ReportSettings  # re-export
 from frp_assess.results.run_inputs import SiteResult as SiteResult  # re-export
-from frp_assess.results.verdict import DecidingCheck, Robustness
+from frp_assess.results.verdict import DecidingCheck, InterventionResult, Robustness
 from frp_assess.rules.record_sets import design_statistic
 
 #: version of the contract written as ``schema_version``; another is refused on reading
@@ -425,6 +425,9 @@ class AssessmentResult:
     #: the loads the wall carries and α₀ with them (docs/model.md §12); the key is absent
     #: without loads
     loads: LoadsResult | None = field(default=None, metadata={"omit_if_none": True})
+    #: the category of the intervention and what an option had to reach (NTC 2018 §8.4);
+    #: None in files written before it (they were judged as an upgrade)
+    intervention: InterventionResult | None = None
 
     @property
     def urm(self) -> CaseResult:

@@ -31,7 +31,9 @@ from frp_assess.results.model import (
     RecordResult,
 )
 from frp_assess.results.run_inputs import ReportSettings, WallResult
+from frp_assess.results.verdict import InterventionResult
 from frp_assess.rules.geometry import HEIGHT_RANGE, THICKNESS_RANGE
+from frp_assess.rules.intervention import CATEGORIES
 
 #: what one check says of a value: None (right) or what was expected
 FieldCheck = Callable[[Any], "str | None"]
@@ -99,6 +101,7 @@ FIELD_CHECKS: dict[tuple[type, str], FieldCheck] = {
     (WallResult, "alpha"): _slenderness_rad,
     (WallResult, "alpha_deg"): _slenderness_deg,
     (ReportSettings, "language"): one_of(LANGUAGES),
+    (InterventionResult, "category"): one_of(CATEGORIES),
 }
 
 

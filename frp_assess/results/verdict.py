@@ -10,7 +10,14 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-__all__ = ["ConventionOutcome", "DecidingCheck", "LeaveOneOut", "NearDemand", "Robustness"]
+__all__ = [
+    "ConventionOutcome",
+    "DecidingCheck",
+    "InterventionResult",
+    "LeaveOneOut",
+    "NearDemand",
+    "Robustness",
+]
 
 
 @dataclass(frozen=True)
@@ -76,3 +83,22 @@ class Robustness:
     time_history_near_demand: tuple[NearDemand, ...] = ()
     #: their verdict differs from the one at the demand: it sits on a collapse window
     on_collapse_window: bool = False
+
+
+@dataclass(frozen=True)
+class InterventionResult:
+    """The category of the intervention (NTC 2018 §8.4, ``code_check.intervention``) and
+    what an option had to reach: the mechanism's ζ_E is the smallest ζ_E of its deciding
+    checks [-]."""
+
+    category: str  #: "local" | "improvement" | "upgrade"
+    clause: str  #: "NTC 2018 §8.4.1" | "NTC 2018 §8.4.2" | "NTC 2018 §8.4.3"
+    use_class: str | None  #: "I"-"IV"; None: not given (an improvement needs it)
+    school: bool  #: a class III building used as a school
+    as_is_zeta: float  #: the unreinforced mechanism's ζ_E [-]
+    #: the ζ_E [-] the option's mechanism must reach: the upgrade's 1 (the IDA's: ``model.
+    #: target``), the improvement's 0.6 or as_is_zeta + 0.1, the local's as_is_zeta (to be
+    #: exceeded; each other check keeps its own or the assessment's)
+    required_zeta: float
+    #: the option's ζ_E must exceed required_zeta (a local intervention), not only reach it
+    strict: bool

@@ -6,7 +6,9 @@ the TUI's ranking): read from results.json's decision only (``passes``, ``recomm
   decision);
 - :func:`governing_short`: the governing check's short name for a narrow column, with
   :data:`GOVERNING_LEGEND` saying what each short name is;
-- :func:`in_language`: a word or check in Italian for results.csv of an Italian report.
+- :func:`in_language`: a word or check in Italian for results.csv of an Italian report;
+- :func:`category_line`: what "passes" asks of an option under the category of the
+  intervention (results.json ``intervention``, NTC 2018 §8.4).
 """
 
 from __future__ import annotations
@@ -20,6 +22,7 @@ __all__ = [
     "RECOMMENDED",
     "UNDECIDED",
     "ITALIAN",
+    "category_line",
     "governing_short",
     "in_language",
     "is_recommendation",
@@ -96,3 +99,29 @@ def governing_short(check: str | None) -> str:
     if check is None:
         return UNDECIDED
     return _SHORT.get(check, check)
+
+
+def category_line(results: AssessmentResult) -> str:
+    """What an option's "passes" means under the category of the intervention (results.json
+    ``intervention``; a file without it was judged as an upgrade), one line: the category,
+    its clause and the ζ_E every deciding check must reach; the wall as it is is judged by
+    the assessment."""
+    iv = results.intervention
+    if iv is None or iv.category == "upgrade":
+        return (
+            "options judged as an upgrade (NTC 2018 §8.4.3): every deciding check ζ_E ≥ 1 "
+            f"(the IDA's ≥ the target {results.model.target:g})"
+        )
+    if iv.category == "local":
+        return (
+            f"options judged as a local intervention ({iv.clause}): the check governing the "
+            f"wall as it is above its ζ_E {iv.as_is_zeta:.2f}, no other below its own or the "
+            "assessment's; margin: ζ_E over that; the wall as it is by the assessment (ζ_E ≥ 1)"
+        )
+    school = " school" if iv.school else ""
+    return (
+        f"options judged as an improvement ({iv.clause}, use class {iv.use_class}{school}): "
+        f"every deciding check ζ_E ≥ {iv.required_zeta:.2f} (the wall as it is: "
+        f"{iv.as_is_zeta:.2f}); margin: ζ_E over {iv.required_zeta:.2f}; the wall as it is by "
+        "the assessment (ζ_E ≥ 1)"
+    )

@@ -49,6 +49,7 @@ from frp_assess.dynamics.options import (
     STRAIN_FACTOR,
     VERIFY,
 )
+from frp_assess.rules.intervention import CATEGORIES, CATEGORY_CLAUSE
 from frp_assess.tui.fields import FieldSpec, choice, field_help, items, num, text
 from frp_assess.tui.option_fields import option_field
 
@@ -322,6 +323,25 @@ CODE_FIELDS = (
         (("yes: a_dyn/(FC·a_g·S)", True), ("no: a_dyn/(a_g·S)", False)),
         CodeCheckSpec,
         width=24,
+    ),
+    choice(
+        ("code_check", "intervention"),
+        "Intervention",
+        tuple((f"{c} ({CATEGORY_CLAUSE[c].removeprefix('NTC 2018 ')})", c) for c in CATEGORIES),
+        CodeCheckSpec,
+        width=24,
+        optional=True,
+    ),
+    choice(
+        ("code_check", "use_class"), "Use class", None, CodeCheckSpec, width=8, optional=True
+    ),  # fmt: skip
+    choice(
+        ("code_check", "school"),
+        "Class III school",
+        (("no", False), ("yes", True)),
+        CodeCheckSpec,
+        width=8,
+        optional=True,
     ),
 )
 COST_FIELDS = (

@@ -23,6 +23,7 @@ from frp_assess.numbers import (
 )
 from frp_assess.results.checks import TimeHistoryResult
 from frp_assess.results.model import AssessmentResult, CaseResult
+from frp_assess.results.verdict_words import category_line
 from frp_assess.tui.core.fragility import lognormal_cdf, pga_axis
 from frp_assess.tui.core.text import printable
 from frp_assess.tui.literal import literal
@@ -360,6 +361,8 @@ def summary_text(r: AssessmentResult) -> Text:
     t.append(f"{r.model.target:g};  code check (§C8.7.1): a0* = {cc.a0_star:.3f} g ")
     t.append(f"vs {cc.demand:.3f} g → ")
     t.append("satisfied" if cc.passed else "NOT satisfied", "green" if cc.passed else "red")
+    t.append("\nCategory: ", "bold")
+    t.append(printable(category_line(r)))
     building = r.building
     if building is not None:
         t.append("\nShaken by: ", "bold")

@@ -24,7 +24,10 @@ def validate(path: Path, capsys: pytest.CaptureFixture[str]) -> str:
 def test_paper_case_edge_pivot_lc1(capsys: pytest.CaptureFixture[str]) -> None:
     out = validate(PROJECTS / "paper-case.yaml", capsys)
     assert ", pivot edge," in out
-    assert "code check: LC1, FC = 1.35 (in the IDA verdict too), q = 2" in out
+    assert (
+        "code check: LC1, FC = 1.35 (in the IDA verdict too), q = 2; "
+        "intervention: upgrade (NTC 2018 §8.4.3)"
+    ) in out
 
 
 def test_facade_crushing_pivot_lc2_and_fc_off(

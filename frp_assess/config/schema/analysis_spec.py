@@ -10,12 +10,14 @@ from pydantic import (
     BeforeValidator,
     Field,
     WithJsonSchema,
+    model_validator,
 )
 from pydantic_core import PydanticCustomError
 
 from frp_assess.config.schema.spec_base import (
     Number,
     _Model,
+    located_error,
 )
 from frp_assess.dynamics.base_reaction import PivotRule
 from frp_assess.dynamics.ida import IdaSettings
@@ -42,6 +44,7 @@ from frp_assess.dynamics.options import (
     RuptureRule,
 )
 from frp_assess.dynamics.rocking import ModelOptions
+from frp_assess.rules.intervention import CATEGORY_CLAUSE, Category
 from frp_assess.rules.masonry import CONFIDENCE_FACTORS, confidence_factor
 
 #: "1.35 (LC1), 1.20 (LC2), 1.00 (LC3)": the confidence factors of Tab. C8.5.IV, for the help
@@ -156,6 +159,33 @@ class CodeCheckSpec(_Model):
         "(true; Circolare 2019 C8.7.1.2.1.3: a rigid block uses LC1's "
         f"FC = {confidence_factor('LC1'):.2f}).",
     )
+
+    intervention: Category = Field(
+        "upgrade",
+        description="Category of the intervention, what an option must reach: local "
+        f"({CATEGORY_CLAUSE['local']}: the mechanism's zeta_E rises, no check worse) | "
+        f"improvement ({CATEGORY_CLAUSE['improvement']}: zeta_E +0.1, or >= 0.6 for class "
+        f"III schools and class IV) | upgrade ({CATEGORY_CLAUSE['upgrade']}: zeta_E >= 1; "
+        "the default).",
+    )
+    use_class: Literal["I", "II", "III", "IV"] | None = Field(
+        None,
+        description="Use class I-IV of the building (NTC 2018 §2.4.2), for an improvement; "
+        "default: seismic.spectrum.use_class.",
+    )
+    school: bool = Field(
+        False, description="A class III building used as a school (false; NTC 2018 §8.4.2)."
+    )
+
+    @model_validator(mode="after")
+    def _school_of_class_iii(self) -> CodeCheckSpec:
+        if self.school and self.use_class not in (None, "III"):
+            raise located_error(
+                f"school: true applies to use class III (NTC 2018 §8.4.2), found use_class "
+                f"{self.use_class}",
+                "school",
+            )
+        return self
 
     @property
     def confidence_factor(self) -> float:
