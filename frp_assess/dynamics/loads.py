@@ -20,6 +20,7 @@ wall's own numbers, bit for bit (s·sin α, cos α, −cos α, s·sin α, p²): 
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import NamedTuple
 
@@ -68,6 +69,53 @@ class Loads:
 
 
 NO_LOADS = Loads()
+
+#: Relative difference below which two ties' heights and elongations are the same [-].
+_SAME = 1e-9
+
+
+def tie_level(loads: Loads) -> Tie | None:
+    """The one tie level the time histories model (docs/model.md §12), or None without a tie.
+
+    A tie that carries nothing (k_t, F_y or F_a zero) is no tie.  Several ties are summed when
+    they act as one: at the same height, yielding and losing their anchorage at the same
+    elongations (F_y/k_t, F_a/k_t; the usual row of equal ties, or two rows of the same
+    steel and length).  Others are refused with one line: the kernel holds one tie level.
+    """
+    ties = [
+        t
+        for t in loads.ties
+        if t.stiffness > 0.0 and t.yield_force > 0.0 and t.anchorage_force > 0.0
+    ]
+    if not ties:
+        return None
+    first = ties[0]
+    for t in ties[1:]:
+        if not (
+            _close(t.height, first.height)
+            and _close(t.yield_force / t.stiffness, first.yield_force / first.stiffness)
+            and _close(t.anchorage_force / t.stiffness, first.anchorage_force / first.stiffness)
+        ):
+            raise ValueError(
+                "the time histories model one tie level: ties at the same height whose steel "
+                "yields and whose anchorage fails at the same elongation; found ties at "
+                f"{first.height:g} m and {t.height:g} m yielding at "
+                f"{first.yield_force / first.stiffness * 1e3:.4g} mm and "
+                f"{t.yield_force / t.stiffness * 1e3:.4g} mm"
+            )
+    return Tie(
+        first.height,
+        sum(t.stiffness for t in ties),
+        sum(t.yield_force for t in ties),
+        sum(t.anchorage_force for t in ties),
+    )
+
+
+def _close(a: float, b: float) -> bool:
+    """a and b the same to :data:`_SAME` (both infinite: the same)."""
+    if math.isinf(a) or math.isinf(b):
+        return a == b
+    return abs(a - b) <= _SAME * max(abs(a), abs(b))
 
 
 class SideTerms(NamedTuple):
