@@ -134,24 +134,10 @@ def _values(project: Project) -> Iterator[tuple[float | None, Practice, Loc]]:
     yield project.bars.max_spacing, MAX_SPACING, ("bars", "max_spacing")
 
 
-#: what a project with tie-rods is told (docs/model.md §12): the ties are in the code's
-#: static checks, not yet in the time histories
-TIES_NOT_IN_TIME_HISTORIES = (
-    "the time histories (IDA, time-history checks: the deciding checks) do not model tie-rods "
-    "yet and run without them (conservative for a tie that exists); the code's static checks "
-    "count them (docs/model.md §12)"
-)
-
-
 def project_warnings(project: Project) -> tuple[PlausibilityWarning, ...]:
-    """One :class:`PlausibilityWarning` per value of ``project`` outside its range of practice,
-    and one for tie-rods, which the time histories do not model yet."""
-    found = [
+    """One :class:`PlausibilityWarning` per value of ``project`` outside its range of practice."""
+    return tuple(
         warning
         for value, practice, loc in _values(project)
         for warning in _check(value, practice, loc)
-    ]
-    loads = project.wall.loads
-    if loads is not None and loads.ties:
-        found.append(PlausibilityWarning(("wall", "loads", "ties"), TIES_NOT_IN_TIME_HISTORIES))
-    return tuple(found)
+    )

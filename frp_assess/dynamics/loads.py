@@ -20,13 +20,12 @@ wall's own numbers, bit for bit (s·sin α, cos α, −cos α, s·sin α, p²): 
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import NamedTuple
 
 from frp_assess.dynamics.wall import Wall
 from frp_assess.motions.record import G
-from frp_assess.rules.tie_rods import tie_anchorage_force
+from frp_assess.rules.tie_rods import ONE_TIE_LEVEL, same_tie_level, tie_anchorage_force
 from frp_assess.rules.wall_loads import Thrust, TopLoad, lever
 
 
@@ -70,17 +69,15 @@ class Loads:
 
 NO_LOADS = Loads()
 
-#: Relative difference below which two ties' heights and elongations are the same [-].
-_SAME = 1e-9
-
 
 def tie_level(loads: Loads) -> Tie | None:
     """The one tie level the time histories model (docs/model.md §12), or None without a tie.
 
     A tie that carries nothing (k_t, F_y or F_a zero) is no tie.  Several ties are summed when
-    they act as one: at the same height, yielding and losing their anchorage at the same
-    elongations (F_y/k_t, F_a/k_t; the usual row of equal ties, or two rows of the same
-    steel and length).  Others are refused with one line: the kernel holds one tie level.
+    they act as one (:func:`~frp_assess.rules.tie_rods.same_tie_level`: at the same height,
+    yielding and losing their anchorage at the same elongations; the usual row of equal ties,
+    or two rows of the same steel and length).  Others are refused with one line (the project
+    file's check refuses them first: config/schema/loads_spec.py).
     """
     ties = [
         t
@@ -91,14 +88,9 @@ def tie_level(loads: Loads) -> Tie | None:
         return None
     first = ties[0]
     for t in ties[1:]:
-        if not (
-            _close(t.height, first.height)
-            and _close(t.yield_force / t.stiffness, first.yield_force / first.stiffness)
-            and _close(t.anchorage_force / t.stiffness, first.anchorage_force / first.stiffness)
-        ):
+        if not same_tie_level(_numbers(first), _numbers(t)):
             raise ValueError(
-                "the time histories model one tie level: ties at the same height whose steel "
-                "yields and whose anchorage fails at the same elongation; found ties at "
+                f"the time histories model one tie level: {ONE_TIE_LEVEL}; found ties at "
                 f"{first.height:g} m and {t.height:g} m yielding at "
                 f"{first.yield_force / first.stiffness * 1e3:.4g} mm and "
                 f"{t.yield_force / t.stiffness * 1e3:.4g} mm"
@@ -111,11 +103,8 @@ def tie_level(loads: Loads) -> Tie | None:
     )
 
 
-def _close(a: float, b: float) -> bool:
-    """a and b the same to :data:`_SAME` (both infinite: the same)."""
-    if math.isinf(a) or math.isinf(b):
-        return a == b
-    return abs(a - b) <= _SAME * max(abs(a), abs(b))
+def _numbers(t: Tie) -> tuple[float, float, float, float]:
+    return t.height, t.stiffness, t.yield_force, t.anchorage_force
 
 
 class SideTerms(NamedTuple):
