@@ -179,12 +179,15 @@ def simulate(
                 now = t_i + x
             else:
                 # --- rocking: one accepted step (a rejected one is retried shorter) ----------
-                if r.tie == TIE_YIELD and r.s * omega <= 0.0:
-                    # a yielding tie whose wall stopped at the end of a step: it unloads here
-                    theta, omega, r = jump(TIE_TURN, r.s * theta, omega, r, prm)
-                    need_a = True
+                t0 = 0.0
+                t1 = 0.0
+                if prm.tie_on:  # the tie's moment in this regime (docs/model.md §12)
+                    if r.tie == TIE_YIELD and r.s * omega <= 0.0:
+                        # a yielding tie whose wall stopped at the end of a step: it unloads
+                        theta, omega, r = jump(TIE_TURN, r.s * theta, omega, r, prm)
+                        need_a = True
+                    t0, t1 = tie_terms(r, prm)
                 k_s = bar_stiffness(r, prm)
-                t0, t1 = tie_terms(r, prm)
                 u0 = ua + slope * x
                 th1, om1, a_end, a1, hh, h, accepted = try_step(
                     theta, omega, a1, need_a, h, u0, slope, dt - x, r.s, k_s, t0, t1, ctl, prm

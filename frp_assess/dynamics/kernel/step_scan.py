@@ -113,6 +113,8 @@ def first_event(
         u = ev.first_crossing(c0, c1, c2, c3, r1, r2, limit, True)
         if 0.0 <= u < u_event:
             event, u_event, level = LIMIT, u, limit
+    if not prm.tie_on:
+        return event, u_event, level
     tie_up, tie_down, tie_turn = tie
     if ymax >= tie_up:
         u = ev.first_crossing(c0, c1, c2, c3, r1, r2, tie_up, True)
@@ -205,11 +207,14 @@ def scan_step(
     top = min(floor, bar_level) if bar_on else min(floor, limit)
     m0 = s * omega * hh
     m1 = s * om1 * hh
-    tie = tie_levels(r, prm)
-    # the tie's levels narrow the band of a quiet step, (0, top) without a tie
-    tie_up, low, tie_turn = tie
-    top = min(top, tie_up)
-    if not tie_turn and quiet(y0 - low, y1 - low, m0, m1, top - low):
+    if prm.tie_on:  # the tie's levels narrow the band of a quiet step, (0, top) without
+        tie = tie_levels(r, prm)
+        tie_up, low, tie_turn = tie
+        is_quiet = not tie_turn and quiet(y0 - low, y1 - low, m0, m1, min(top, tie_up) - low)
+    else:
+        tie = (math.inf, 0.0, False)
+        is_quiet = quiet(y0, y1, m0, m1, top)
+    if is_quiet:
         # the dense output stays inside (0, top): no event, no new peak
         event, u_event, level, step_max = NO_EVENT, 2.0, 0.0, max(y0, y1)
     else:
