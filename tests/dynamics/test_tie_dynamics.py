@@ -197,3 +197,23 @@ def test_energy_balance_with_a_yielding_tie() -> None:
     assert sel.sum() > 100
     balance = work[sel] - (kinetic[sel] + potential[sel] + stored[sel])
     assert np.max(np.abs(balance)) < 1e-6 * np.max(np.abs(work))
+
+
+@pytest.mark.parametrize("capacity", ["first-collapse", "effective"])
+def test_the_ida_names_the_loss_of_the_tie(capacity: str) -> None:
+    """The compiled IDA search reports 'tie lost then overturning' at the collapse of a wall
+    whose brittle tie is lost, as the single time history at that multiplier does; a wall
+    with a ductile tie of the same stiffness falls by plain overturning, at a higher C."""
+    from frp_assess.dynamics import IdaSettings, ida
+
+    settings = IdaSettings(max_multiplier=20.0, capacity=capacity)  # type: ignore[arg-type]
+    brittle = _model(Tie(H_T, 2e5, 6e3, 3e3))
+    res = ida(brittle, _pulse(), DT, settings)
+    assert res.collapse_multiplier is not None
+    assert res.failure_mode == "tie lost then overturning"
+    c_first = res.first_collapse if capacity == "effective" else res.collapse_multiplier
+    assert c_first is not None
+    assert brittle.run(_pulse(), DT, c_first).failure_mode == "tie lost then overturning"
+    ductile = ida(_model(Tie(H_T, 2e5, 6e3, math.inf)), _pulse(), DT, settings)
+    assert ductile.failure_mode in (None, "overturning")
+    assert ductile.capacity_multiplier > res.capacity_multiplier
