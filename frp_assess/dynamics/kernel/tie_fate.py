@@ -9,7 +9,7 @@ Moving outward from its current state the wall therefore meets the *effective* p
                              ½·k·(F_y/k_t)² + k·(F_y/k_t)·(e − F_y/k_t) beyond   (k = k_t/(W·R)),
 
 τ = 0 while e ≤ 0 (slack), and it turns where w = ε, its energy ½·θ'²/p²_s + v_s + the tie's
-elastic energy.  The tipping angle of the outputs excludes the tie (MODEL.md §12's rule, α_x of
+elastic energy.  The tipping angle of the outputs excludes the tie (docs/model.md §12: α_x of
 the loads alone); the fate does not: a wall held by its tie beyond that angle cannot fall as
 long as w rises above ε before π/2.
 
