@@ -36,7 +36,8 @@ from frp_assess.text_safety import plain
 #: 4: the base reaction of docs/model.md §1.1 and IdaResult.failure_mode
 #: 5: the effective collapse intensity (docs/model.md §11): IdaSettings.capacity and .offset,
 #: IdaResult.capacity, first_collapse, windows_below and bound_multiplier
-CACHE_VERSION = 5  # 2: IdaResult.survivor_multiplier; 3: keyed on every ModelOptions field
+#: 6: the ties in the time histories (docs/model.md §12): a wall with ties ran without them
+CACHE_VERSION = 6  # 2: IdaResult.survivor_multiplier; 3: keyed on every ModelOptions field
 
 
 def record_digest(acc: np.ndarray, dt: float) -> str:

@@ -135,26 +135,9 @@ def _values(project: Project) -> Iterator[tuple[float | None, Practice, Loc]]:
     yield project.bars.max_spacing, MAX_SPACING, ("bars", "max_spacing")
 
 
-#: what a project with tie-rods is told (docs/model.md §12): the ties are in the code's
-#: static checks, not yet in the time histories
-TIES_NOT_IN_TIME_HISTORIES = (
-    "the time histories (IDA, time-history checks: the deciding checks) do not model tie-rods "
-    "yet and run without them (conservative for a tie that exists); the code's static checks "
-    "count them (docs/model.md §12)"
-)
-
-#: what a project with a tie option is told, while the time histories do not model ties
-TIE_OPTION_NOT_IN_TIME_HISTORIES = (
-    "the time histories (IDA, time-history checks: the deciding checks) do not model tie-rods "
-    "yet and run this option without its tie, as if it were not there; the code's static "
-    "checks count it (docs/model.md §12)"
-)
-
-
 def project_warnings(project: Project) -> tuple[PlausibilityWarning, ...]:
     """One :class:`PlausibilityWarning` per value of ``project`` outside its range of practice,
-    one for a site near Italy's land border (the site module's warning), and one for
-    tie-rods, which the time histories do not model yet."""
+    and one for a site near Italy's land border (the site module's warning)."""
     found = [
         warning
         for value, practice, loc in _values(project)
@@ -164,12 +147,4 @@ def project_warnings(project: Project) -> tuple[PlausibilityWarning, ...]:
     hazard = spectrum.site_hazard() if isinstance(spectrum, Ntc2018Spectrum) else None
     if hazard is not None and hazard.border_warning:
         found.append(PlausibilityWarning(("seismic", "spectrum", "site"), hazard.border_warning))
-    loads = project.wall.loads
-    if loads is not None and loads.ties:
-        found.append(PlausibilityWarning(("wall", "loads", "ties"), TIES_NOT_IN_TIME_HISTORIES))
-    found.extend(
-        PlausibilityWarning(("interventions", i), TIE_OPTION_NOT_IN_TIME_HISTORIES)
-        for i, item in enumerate(project.interventions)
-        if isinstance(item, TieOption) or (isinstance(item, Intervention) and item.tie)
-    )
     return tuple(found)

@@ -16,6 +16,8 @@ from frp_assess.dynamics.effective import (
     ladder,
 )
 from frp_assess.dynamics.ida_search import (
+    LOST_BARS,
+    LOST_TIE,
     STATUS_TOO_MANY_RUNS,
     new_state,
     next_multiplier,
@@ -276,17 +278,17 @@ def _compiled_search(
     multiplier = np.empty(room)
     fate = np.empty(room, dtype=np.int64)
     peak = np.empty(room)
-    ruptures = np.empty(room, dtype=np.int64)
+    losses = np.empty(room, dtype=np.int64)
     tol = float(plan.tolerance)
     if plan.rule == "first-collapse":
         n, status = search(
             acc, float(dt), model.tail_samples(dt), model.params, plan.steps, tol,
-            multiplier, fate, peak, ruptures, _COLLAPSE_FATE,
+            multiplier, fate, peak, losses, _COLLAPSE_FATE,
         )  # fmt: skip
     else:
         n, status = sample(
             acc, float(dt), model.tail_samples(dt), model.params, plan.steps, float(plan.c0),
-            tol, float(plan.band), int(plan.subdivide), multiplier, fate, peak, ruptures,
+            tol, float(plan.band), int(plan.subdivide), multiplier, fate, peak, losses,
             _COLLAPSE_FATE,
         )  # fmt: skip
     if status != STATUS_OK:
@@ -305,7 +307,10 @@ def _compiled_search(
         collapsed = bool(_COLLAPSE_FATE[fate[j]])
         points.append(IdaPoint(c, collapsed, float(peak[j]) / alpha))
         if collapsed:
-            modes[c] = failure_mode_of(FATE_NAMES[int(fate[j])], bool(ruptures[j]))
+            lost = int(losses[j])
+            modes[c] = failure_mode_of(
+                FATE_NAMES[int(fate[j])], bool(lost & LOST_BARS), bool(lost & LOST_TIE)
+            )
     return points, modes
 
 

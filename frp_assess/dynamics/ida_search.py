@@ -31,6 +31,9 @@ QUIET_MARGIN = 1e-9
 #: Status of a search that ran out of room for its time histories (a tolerance so small
 #: that the bisection cannot end); never a kernel status.
 STATUS_TOO_MANY_RUNS = -1
+#: Flags of the ``losses`` array of the searches: what the wall lost before its fate.
+LOST_BARS = 1  #: a bar broke
+LOST_TIE = 2  #: the tie's anchorage failed (docs/model.md §12)
 
 
 @njit(cache=True, nogil=True)
@@ -92,7 +95,7 @@ def _run_and_store(
     multiplier: np.ndarray,
     fate: np.ndarray,
     peak: np.ndarray,
-    ruptures: np.ndarray,
+    losses: np.ndarray,
 ) -> Outcome:
     """Time history n of a search at the multiplier c, from the record's first sample that
     may uplift the wall (:func:`quiet_intervals`), stored at index n; the kernel's outcome.
@@ -106,7 +109,7 @@ def _run_and_store(
     multiplier[n] = c
     fate[n] = res.fate
     peak[n] = res.peak
-    ruptures[n] = res.ruptures
+    losses[n] = (LOST_BARS if res.ruptures > 0 else 0) + (LOST_TIE if res.tie_lost else 0)
     return res
 
 
@@ -121,16 +124,16 @@ def search(
     multiplier: np.ndarray,
     fate: np.ndarray,
     peak: np.ndarray,
-    ruptures: np.ndarray,
+    losses: np.ndarray,
     collapse_fate: np.ndarray,
 ) -> tuple[int, int]:
     """Every time history of the IDA of the wall ``prm`` under ``acc`` [m/s²] every dt [s]
     (``n_tail`` zero samples after it), as :func:`next_multiplier` chooses them.
 
     Time history j is stored in ``multiplier[j]`` (C), ``fate[j]`` (the kernel's FATE_*),
-    ``peak[j]`` (peak |θ| [rad]) and ``ruptures[j]``; ``collapse_fate[f]`` says whether the
-    fate code f is a collapse.  Returns (time histories run, status).  A status other than
-    STATUS_OK stops the search at the time history that gave it (the last one stored), or
+    ``peak[j]`` (peak |θ| [rad]) and ``losses[j]`` (LOST_* flags); ``collapse_fate[f]`` says
+    whether the fate code f is a collapse.  Returns (time histories run, status).  A status
+    other than STATUS_OK stops the search at the time history that gave it (the last one stored), or
     says that the arrays had no room for the next (:data:`STATUS_TOO_MANY_RUNS`).
     """
     quiet = running_max_abs(acc)
@@ -146,7 +149,7 @@ def search(
         if n >= multiplier.shape[0]:
             return n, STATUS_TOO_MANY_RUNS
         res = _run_and_store(acc, quiet, dt, c, n_tail, prm, out, n, multiplier, fate, peak,
-                             ruptures)  # fmt: skip
+                             losses)  # fmt: skip
         n += 1
         if res.status != kp.STATUS_OK:
             return n, res.status
@@ -299,7 +302,7 @@ def sample(
     multiplier: np.ndarray,
     fate: np.ndarray,
     peak: np.ndarray,
-    ruptures: np.ndarray,
+    losses: np.ndarray,
     collapse_fate: np.ndarray,
 ) -> tuple[int, int]:
     """Every time history of the effective collapse intensity's sampling (:func:`next_sample`),
@@ -317,7 +320,7 @@ def sample(
         if n >= multiplier.shape[0]:
             return n, STATUS_TOO_MANY_RUNS
         out = _run_and_store(acc, quiet, dt, c, n_tail, prm, buffers, n, multiplier, fate,
-                             peak, ruptures)  # fmt: skip
+                             peak, losses)  # fmt: skip
         n += 1
         if out.status != kp.STATUS_OK:
             return n, out.status

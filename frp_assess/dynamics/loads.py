@@ -25,7 +25,7 @@ from typing import NamedTuple
 
 from frp_assess.dynamics.wall import Wall
 from frp_assess.motions.record import G
-from frp_assess.rules.tie_rods import tie_anchorage_force
+from frp_assess.rules.tie_rods import ONE_TIE_LEVEL, same_tie_level, tie_anchorage_force
 from frp_assess.rules.wall_loads import Thrust, TopLoad, lever
 
 
@@ -68,6 +68,43 @@ class Loads:
 
 
 NO_LOADS = Loads()
+
+
+def tie_level(loads: Loads) -> Tie | None:
+    """The one tie level the time histories model (docs/model.md §12), or None without a tie.
+
+    A tie that carries nothing (k_t, F_y or F_a zero) is no tie.  Several ties are summed when
+    they act as one (:func:`~frp_assess.rules.tie_rods.same_tie_level`: at the same height,
+    yielding and losing their anchorage at the same elongations; the usual row of equal ties,
+    or two rows of the same steel and length).  Others are refused with one line (the project
+    file's check refuses them first: config/schema/loads_spec.py).
+    """
+    ties = [
+        t
+        for t in loads.ties
+        if t.stiffness > 0.0 and t.yield_force > 0.0 and t.anchorage_force > 0.0
+    ]
+    if not ties:
+        return None
+    first = ties[0]
+    for t in ties[1:]:
+        if not same_tie_level(_numbers(first), _numbers(t)):
+            raise ValueError(
+                f"the time histories model one tie level: {ONE_TIE_LEVEL}; found ties at "
+                f"{first.height:g} m and {t.height:g} m yielding at "
+                f"{first.yield_force / first.stiffness * 1e3:.4g} mm and "
+                f"{t.yield_force / t.stiffness * 1e3:.4g} mm"
+            )
+    return Tie(
+        first.height,
+        sum(t.stiffness for t in ties),
+        sum(t.yield_force for t in ties),
+        sum(t.anchorage_force for t in ties),
+    )
+
+
+def _numbers(t: Tie) -> tuple[float, float, float, float]:
+    return t.height, t.stiffness, t.yield_force, t.anchorage_force
 
 
 class SideTerms(NamedTuple):

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field, replace
 from functools import cached_property
-from typing import Literal
+from typing import Literal, NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
@@ -14,7 +14,7 @@ from frp_assess.dynamics.base_reaction import PIVOT_RULES, BaseReaction, PivotRu
 from frp_assess.dynamics.kernel import Buffers, Ground, history_length, simulate
 from frp_assess.dynamics.kernel import params as kp
 from frp_assess.dynamics.kernel.fate import loaded_tipping_angle, tipping_angle
-from frp_assess.dynamics.loads import NO_LOADS, Loads, side_terms
+from frp_assess.dynamics.loads import NO_LOADS, Loads, Tie, side_terms, tie_level
 from frp_assess.dynamics.options import (
     COLLAPSE,
     COLLAPSE_RULES,
@@ -35,27 +35,36 @@ from frp_assess.rules.constants import G
 from frp_assess.rules.wall_loads import impact_velocity_ratio
 
 Fate = Literal["fell", "at rest", "exceeded", "standing", "crushed"]
-#: How a wall that collapsed failed (docs/model.md §1.1): it fell (or met the α_x limit of the
-#: other collapse rules), or its toe crushed under an intact bar, after a bar broke or not.
+#: How a wall that collapsed failed (docs/model.md §1.1, §12): it fell (or met the α_x limit of
+#: the other collapse rules), or its toe crushed under an intact bar, after a bar broke or not,
+#: or it fell after its tie's anchorage failed.
 FailureMode = Literal[
-    "overturning", "rupture then overturning", "crushing", "rupture then crushing"
+    "overturning",
+    "rupture then overturning",
+    "crushing",
+    "rupture then crushing",
+    "tie lost then overturning",
 ]
 FAILURE_MODES: tuple[FailureMode, ...] = (
     "overturning",
     "rupture then overturning",
     "crushing",
     "rupture then crushing",
+    "tie lost then overturning",
 )
 #: The fates that are a collapse: the wall fell (or met the α_x limit of the other collapse
 #: rules), or its toe crushed.
 COLLAPSE_FATES: frozenset[Fate] = frozenset({"fell", "exceeded", "crushed"})
 
 
-def failure_mode_of(fate: Fate, ruptured: bool) -> FailureMode | None:
+def failure_mode_of(fate: Fate, ruptured: bool, tie_lost: bool = False) -> FailureMode | None:
     """How a wall whose time history ended in ``fate`` failed (``None``: it did not collapse);
-    ``ruptured``: a bar broke before."""
+    ``ruptured``: a bar broke before; ``tie_lost``: the tie's anchorage failed before (a wall
+    that lost both falls after the bars' rupture: the bars' name is kept)."""
     if fate not in COLLAPSE_FATES:
         return None
+    if tie_lost and not ruptured and fate != "crushed":
+        return "tie lost then overturning"
     head = "rupture then " if ruptured else ""
     return f"{head}{'crushing' if fate == 'crushed' else 'overturning'}"  # type: ignore[return-value]
 
@@ -182,6 +191,8 @@ class RockingResult:
     steps: int  #: accepted integration steps
     rejected_steps: int  #: steps the error control rejected
     history: History | None = field(default=None, repr=False)
+    tie_lost: bool = False  #: the tie's anchorage failed (docs/model.md §12)
+    tie_plastic_elongation: float = 0.0  #: the tie's δ_p at the end [m] (0 without a tie)
 
     @property
     def collapsed(self) -> bool:
@@ -192,7 +203,7 @@ class RockingResult:
     @property
     def failure_mode(self) -> FailureMode | None:
         """How the wall failed (``None``: it did not collapse)."""
-        return failure_mode_of(self.fate, bool(self.ruptures))
+        return failure_mode_of(self.fate, bool(self.ruptures), self.tie_lost)
 
 
 @dataclass(frozen=True)
@@ -227,7 +238,7 @@ class RockingModel:
         """α_x [rad], where the wall tips: atan((B − x_W)/H), the wall's α with the edge
         pivot; with loads, where the static restoring moment of the outward side vanishes
         (docs/model.md §12).  The α of the collapse rules and of θ/α in the outputs."""
-        if self.loads:
+        if self.params.loaded:
             return self.params.alpha_x
         return self.base_reaction.alpha_x
 
@@ -235,7 +246,7 @@ class RockingModel:
     def a_rm(self) -> float:
         """Ground acceleration that starts rocking, g·tan α_x = g·(B − x_W)/H [m/s²]; with
         loads, a_RM of §12 on the side that rocks first (the smaller of those that can)."""
-        if self.loads:
+        if self.params.loaded:
             return G * self.params.tan_ax
         return self.base_reaction.a_rm
 
@@ -286,6 +297,9 @@ class RockingModel:
         k_bar = self.K
         sin_a, cos_a = math.sin(alpha), math.cos(alpha)
         loads = self.loads
+        tie = tie_level(loads)
+        # a tie that carries nothing is no tie: the wall alone, bit for bit
+        loaded = bool(loads.top or loads.thrusts) or tie is not None
         pos = side_terms(wall, loads, 1, sin_a, cos_a)
         neg = side_terms(wall, loads, -1, sin_a, cos_a)
         e_wall = self.impact_velocity_ratio
@@ -322,7 +336,7 @@ class RockingModel:
             alpha_x=base.alpha_x,
             tan_ax=base.tan_alpha_x,
             tip_bar=math.nan,
-            loaded=bool(loads),
+            loaded=loaded,
             p2_pos=pos.p2,
             p2_neg=neg.p2,
             a0_pos=pos.a0,
@@ -339,10 +353,11 @@ class RockingModel:
             e_to_neg=e_neg,
             alpha_x_neg=base.alpha_x,
             tip_bar_neg=math.nan,
+            **_tie_params(wall, tie)._asdict(),
             # the bound on the bounces that surely die out is written for the wall alone
-            settle_chatter=not loads,
+            settle_chatter=not loaded,
         )
-        if loads:
+        if loaded:
             prm = _with_loads(prm, self.mechanism == "one-sided")
             return prm._replace(
                 tip_bar=float(loaded_tipping_angle(1.0, k_bar, prm)),
@@ -435,7 +450,32 @@ class RockingModel:
             steps=int(out.steps),
             rejected_steps=int(out.rejected),
             history=hist,
+            tie_lost=bool(out.tie_lost),
+            tie_plastic_elongation=float(out.tie_plastic),
         )
+
+
+class _TieConstants(NamedTuple):
+    """The tie's fields of :class:`~.kernel.params.KernelParams` (docs/model.md §12)."""
+
+    tie_on: bool
+    tie_height: float
+    tie_kn: float
+    tie_yield: float
+    tie_theta_loss: float
+
+
+def _tie_params(wall: Wall, tie: Tie | None) -> _TieConstants:
+    """The kernel's constants of the tie: its height, k_t·h_t/(W·R), the yield elongation
+    F_y/k_t and the rotation where a brittle tie (F_a ≤ F_y) is lost; no tie: off, and
+    numbers that are never read."""
+    if tie is None:
+        return _TieConstants(False, 1.0, 0.0, math.inf, math.inf)
+    h, k = tie.height, tie.stiffness
+    loss = math.inf
+    if tie.anchorage_force <= tie.yield_force and tie.anchorage_force < k * h:
+        loss = math.asin(tie.anchorage_force / (k * h))
+    return _TieConstants(True, h, k * h / (wall.weight * wall.R), tie.yield_force / k, loss)
 
 
 def _with_loads(prm: kp.KernelParams, one_sided: bool) -> kp.KernelParams:

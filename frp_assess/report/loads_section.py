@@ -107,6 +107,8 @@ def section(results: AssessmentResult, lang: Lang) -> list[Block]:
              numeric_from=2),
     ]  # fmt: skip
     out += [tie_paragraph(x, lang) for x in loads.ties]
+    if loads.ties:
+        out.append(markup(t(lang, "loads.tie.dynamics")))
     o = loads.overturning
     terms = [
         [_term_name(x, lang), t(lang, f"loads.role.{x.role}"), n(x.force, 2),

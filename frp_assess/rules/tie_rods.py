@@ -97,3 +97,42 @@ def tie_force(
     F_t = clip(k_t·(δ − δ_p), 0, F_y), δ_p the plastic elongation [m] left by earlier yields
     (docs/model.md §12)."""
     return min(max(stiffness * (elongation - plastic_elongation), 0.0), yield_force)
+
+
+def tie_elongations(
+    stiffness: float, yield_force: float, anchorage_force: float
+) -> tuple[float, float]:
+    """(δ_y, δ_a) [m]: the elongation beyond δ_p at which the ties yield, F_y/k_t, and at which
+    a brittle anchorage fails, F_a/k_t (∞ for a ductile tie, whose force never exceeds F_y;
+    docs/model.md §12).  Per metre of wall or per tie alike: spacing and area cancel,
+    δ_y = f_y·L_t/E_s."""
+    loss = math.inf
+    if not tie_is_ductile(yield_force, anchorage_force):
+        loss = anchorage_force / stiffness
+    return yield_force / stiffness, loss
+
+
+#: What the time histories need of several ties (docs/model.md §12), for the messages.
+ONE_TIE_LEVEL = (
+    "ties at the same height whose steel yields and whose anchorage fails at the same "
+    "elongation (the same f_y·L_t/E_s and F_a·L_t/(E_s·A_s))"
+)
+#: Relative difference below which two ties' heights and elongations are the same [-].
+SAME_LEVEL = 1e-9
+
+
+def same_tie_level(
+    a: tuple[float, float, float, float], b: tuple[float, float, float, float]
+) -> bool:
+    """Whether two ties, each (h_t [m], k_t [N/m per m], F_y [N/m], F_a/i_t [N/m]), act as one
+    and may be summed [-]: at the same height, yielding and losing their anchorage at the same
+    elongations
+    (:func:`tie_elongations`).  The time histories hold one tie level (docs/model.md §12)."""
+
+    def close(x: float, y: float) -> bool:
+        if math.isinf(x) or math.isinf(y):
+            return x == y
+        return abs(x - y) <= SAME_LEVEL * max(abs(x), abs(y))
+
+    ea, eb = tie_elongations(*a[1:]), tie_elongations(*b[1:])
+    return close(a[0], b[0]) and close(ea[0], eb[0]) and close(ea[1], eb[1])

@@ -26,6 +26,7 @@ from frp_assess.assess.load_inputs import TieInput
 from frp_assess.assess.loaded_overturning import loaded_alpha0
 from frp_assess.assess.quantities import option_quantity, tie_quantity
 from frp_assess.config.loader import load_project_text
+from frp_assess.errors import InputError
 
 PROJECT = """\
 wall:
@@ -99,16 +100,29 @@ def test_the_options_model_is_the_walls_with_the_tie_in_its_loads() -> None:
     m_both = inputs.model_for(both)
     assert m_both.loads.ties == (expected,)
     assert m_both.rebars == inputs.model_for(bars).rebars and m_both.K > 0.0
-    # the wall's own ties stay, the option's is added after them
+    # the wall's own ties stay, the option's is added after them (at the same tie level: the
+    # same height, steel and length, so the time histories sum them)
     with_catena = PROJECT.replace(
         "    top: [{name: floor, load: 10.0, distance: 0.3}]\n",
         "    top: [{name: floor, load: 10.0, distance: 0.3}]\n"
-        "    ties: [{height: 5.8, diameter: 16, spacing: 4.0, length: 8.0}]\n",
+        "    ties: [{height: 5.5, diameter: 20, spacing: 4.0, length: 8.0, anchorage: 40}]\n",
     )
     loaded = _inputs(with_catena)
     ties = loaded.model_for(loaded.options[0]).loads.ties
     assert len(ties) == 2 and ties[1] == expected
     assert ties[0] == loaded.model_for(None).loads.ties[0]
+
+
+def test_a_tie_option_at_another_level_than_the_walls_own_tie_is_refused() -> None:
+    """The time histories hold one tie level (docs/model.md §12): an option's tie at 5.5 m on
+    a wall whose own tie is at 5.8 m is refused with one located line, not a traceback."""
+    with_catena = PROJECT.replace(
+        "    top: [{name: floor, load: 10.0, distance: 0.3}]\n",
+        "    top: [{name: floor, load: 10.0, distance: 0.3}]\n"
+        "    ties: [{height: 5.8, diameter: 16, spacing: 4.0, length: 8.0}]\n",
+    )
+    with pytest.raises(InputError, match=r"interventions\[0\].*one tie level.*5\.8 m"):
+        _inputs(with_catena)
 
 
 def test_static_alpha0_of_a_tie_option_by_hand() -> None:

@@ -85,6 +85,18 @@ REFUSED: list[tuple[str, str, str, int, str]] = [
         "wall.loads.ties[0]",
     ),
     (
+        # the time histories hold one tie level: a second tie lower down is refused
+        "two-tie-levels",
+        _sub(
+            "length: 8.0}\n",
+            "length: 8.0}\n      - {name: low, height: 3.0, diameter: 20, spacing: 3.0, "
+            "length: 8.0}\n",
+        ),
+        "the time histories model one tie level: ties at the same height",
+        15,
+        "wall.loads.ties[1]",
+    ),
+    (
         "inertia-unknown",
         _sub("inertia: restrained", "inertia: floating"),
         "wall.loads.top[1].inertia",
@@ -124,13 +136,17 @@ def test_a_facade_with_a_floor_and_a_thrust_is_valid(
     assert code == 0, err
 
 
-def test_ties_are_accepted_with_a_warning_that_the_time_histories_run_without_them(
+def test_ties_are_in_the_time_histories_without_a_warning(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    """A tie the IDA leaves out must never be silent: validate says so on the tie's line."""
-    path = tmp_path / "p.yaml"
-    path.write_text(BASE, encoding="utf-8")
-    code = main(["validate", str(path)])
-    err = capsys.readouterr().err
-    assert code == 0, err
-    assert "p.yaml:13: wall.loads.ties: the time histories (IDA, time-history checks" in err
+    """The time histories model the tie (docs/model.md §12): validate accepts it silently,
+    and two rows of the same tie at the same height (one level) too."""
+    doubled = _sub(
+        "length: 8.0}\n",
+        "length: 8.0}\n      - {name: second row, height: 5.8, diameter: 16, spacing: 2.0, "
+        "length: 8.0}\n",
+    )
+    for text in (BASE, doubled):
+        code, err = _validate(tmp_path, text, capsys)
+        assert code == 0, err
+        assert "tie" not in err and "time histories" not in err, err

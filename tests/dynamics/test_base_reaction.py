@@ -63,9 +63,11 @@ def test_uplift_threshold_by_hand(position: str | None) -> None:
     prm = m.params
     # θ'' vanishes at u = −a_RM/g on both sides and changes sign across it
     for s in (1.0, -1.0):
-        assert acceleration(0.0, s, -s * a_rm / G, prm.k_bar, prm) == pytest.approx(0.0, abs=1e-12)
-        assert s * acceleration(0.0, s, -s * 1.01 * a_rm / G, prm.k_bar, prm) > 0.0
-        assert s * acceleration(0.0, s, -s * 0.99 * a_rm / G, prm.k_bar, prm) < 0.0
+        assert acceleration(0.0, s, -s * a_rm / G, prm.k_bar, 0.0, 0.0, prm) == pytest.approx(
+            0.0, abs=1e-12
+        )
+        assert s * acceleration(0.0, s, -s * 1.01 * a_rm / G, prm.k_bar, 0.0, 0.0, prm) > 0.0
+        assert s * acceleration(0.0, s, -s * 0.99 * a_rm / G, prm.k_bar, 0.0, 0.0, prm) < 0.0
     # the IDA starts from it: C0·PGA = a_RM
     acc = 0.2 * G * np.sin(2 * np.pi * np.arange(200) * 0.01)
     res = ida(m, acc, 0.01, IdaSettings(max_multiplier=1.5))
@@ -89,11 +91,13 @@ def test_static_multiplier_by_hand(position: str, theta: float) -> None:
     resisting -= n * x / 2 * math.cos(theta)
     lam = resisting / (WEIGHT * R * math.cos(ALPHA - theta))
     prm = model(position).params
-    assert acceleration(theta, 1.0, -lam, prm.k_bar, prm) == pytest.approx(0.0, abs=1e-10)
-    assert acceleration(-theta, -1.0, lam, prm.k_bar, prm) == pytest.approx(0.0, abs=1e-10)
+    assert acceleration(theta, 1.0, -lam, prm.k_bar, 0.0, 0.0, prm) == pytest.approx(0.0, abs=1e-10)
+    assert acceleration(-theta, -1.0, lam, prm.k_bar, 0.0, 0.0, prm) == pytest.approx(
+        0.0, abs=1e-10
+    )
     # the edge model (x = 0) resists more
     edge = model(position, pivot="edge").params
-    assert acceleration(theta, 1.0, -lam, edge.k_bar, edge) < 0.0
+    assert acceleration(theta, 1.0, -lam, edge.k_bar, 0.0, 0.0, edge) < 0.0
 
 
 def test_tipping_angle_of_the_unreinforced_wall_by_hand() -> None:

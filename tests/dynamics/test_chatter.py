@@ -53,7 +53,7 @@ def test_restoring_acceleration_is_eq10_at_rest(pivot: str, bars: Rebars | None)
     for side in (1.0, -1.0):
         for u in np.linspace(-0.5, 0.5, 11):
             for k_s in (0.0, prm.k_bar):
-                exact = -side * acceleration(0.0, side, float(u), k_s, prm)
+                exact = -side * acceleration(0.0, side, float(u), k_s, 0.0, 0.0, prm)
                 assert restoring_at_rest(float(u), side, prm) == pytest.approx(exact, rel=1e-13)
 
 

@@ -162,13 +162,15 @@ def test_event_with_the_taylor_correction_matches_newton_to_the_end() -> None:
     kernel (its last correction on the Taylor cubic) and by Newton written out here and run
     to the end on the same Dormand-Prince step: the same instant to 1e-12 s, θ' to 1e-9."""
     prm = MODEL.params
-    a1 = acceleration(THETA0, 1.0, 0.0, 0.0, prm)
+    a1 = acceleration(THETA0, 1.0, 0.0, 0.0, 0.0, 0.0, prm)
     tau0 = 0.008
-    tau, om, resid = ev.locate_level(THETA0, OMEGA0, a1, STEP, tau0, 0.0, 0.0, 1.0, 0.0, 0.0, prm)
+    tau, om, resid = ev.locate_level(
+        THETA0, OMEGA0, a1, STEP, tau0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, prm
+    )
     t = tau0
     om_e = math.nan
     for _ in range(50):
-        th_e, om_e, _a, _err = step(THETA0, OMEGA0, t, 0.0, 0.0, 1.0, 0.0, a1, prm)
+        th_e, om_e, _a, _err = step(THETA0, OMEGA0, t, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, a1, prm)
         if abs(th_e) <= 1e-16:
             break
         t -= th_e / om_e
@@ -192,11 +194,11 @@ def test_slow_crossing_is_located_in_time_not_only_in_rotation(fixed_step: float
     θ' off by 2 % here; the instant must be the integrator's own to EVENT_TIME_TOLERANCE."""
     model = MODEL if fixed_step is None else MODEL.with_options(fixed_step=fixed_step)
     prm = model.params
-    a1 = acceleration(0.0, 1.0, 0.0, 0.0, prm)
+    a1 = acceleration(0.0, 1.0, 0.0, 0.0, 0.0, 0.0, prm)
     period = 2.0 * SLOW_OMEGA0 / (prm.p2 * prm.sin_a)  # ≈ the return time [s]
     h = 2.0 * period
     tau, om, _resid = ev.locate_level(
-        0.0, SLOW_OMEGA0, a1, h, 0.9 * period, 0.0, 0.0, 1.0, 0.0, 0.0, prm
+        0.0, SLOW_OMEGA0, a1, h, 0.9 * period, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, prm
     )
     assert tau == pytest.approx(period, rel=1e-6)
     assert om == pytest.approx(-SLOW_OMEGA0, rel=1e-9)

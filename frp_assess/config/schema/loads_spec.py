@@ -13,6 +13,13 @@ from typing import Literal
 from pydantic import Field, model_validator
 
 from frp_assess.config.schema.spec_base import Number, _Model, located_error
+from frp_assess.rules.tie_rods import (
+    ONE_TIE_LEVEL,
+    same_tie_level,
+    tie_anchorage_force,
+    tie_stiffness,
+    tie_yield_force,
+)
 
 #: the name of a load in the outputs
 _NAME = Field(
@@ -110,6 +117,19 @@ class TieSpec(_Model):
         assert self.diameter is not None
         return 3.141592653589793 * float(self.diameter) ** 2 / 4.0
 
+    def per_metre(self) -> tuple[float, float, float, float]:
+        """(h_t [m], k_t [N/m per m], F_y [N/m], F_a/i_t [N/m]) of :mod:`frp_assess.rules.
+        tie_rods`, for the check that several ties act as one level."""
+        area = self.area_mm2 * 1e-6
+        spacing = float(self.spacing)
+        anchorage = None if self.anchorage is None else float(self.anchorage) * 1e3
+        return (
+            float(self.height),
+            tie_stiffness(area, float(self.elastic_modulus) * 1e9, float(self.length), spacing),
+            tie_yield_force(area, float(self.yield_strength) * 1e6, spacing),
+            tie_anchorage_force(anchorage, spacing),
+        )
+
 
 class WallLoadsSpec(_Model):
     """What bears on and pushes the wall (docs/model.md §12); omit for a free-standing wall."""
@@ -135,7 +155,8 @@ class WallLoadsSpec(_Model):
 
     def problem(self, thickness: float, height: float) -> tuple[str, tuple[str | int, ...]] | None:
         """The first load outside the wall, as (message, location inside ``loads``): a line of
-        action outside the thickness, a thrust or a tie above the top; ``None`` if all fit."""
+        action outside the thickness, a thrust or a tie above the top, ties that do not act as
+        one level (the time histories hold one); ``None`` if all fit."""
         for i, p in enumerate(self.top):
             if p.distance > thickness:
                 return (
@@ -155,5 +176,12 @@ class WallLoadsSpec(_Model):
                     f"expected a tie on the wall, 0 < height <= H = {height:g} m, found "
                     f"{t.height:g}",
                     ("ties", i, "height"),
+                )
+        for i, t in enumerate(self.ties[1:], start=1):
+            if not same_tie_level(self.ties[0].per_metre(), t.per_metre()):
+                return (
+                    f"the time histories model one tie level: {ONE_TIE_LEVEL}; this tie "
+                    "differs from the first",
+                    ("ties", i),
                 )
         return None

@@ -38,6 +38,7 @@ from frp_assess.config.schema.spec_base import (
     option_name,
 )
 from frp_assess.config.schema.wall_spec import BuildingSpec, WallSpec
+from frp_assess.rules.tie_rods import ONE_TIE_LEVEL, same_tie_level
 
 
 # --------------------------------------------------------------------------------- project
@@ -176,8 +177,10 @@ class Project(_Model):
                 )
 
     def _check_tie_heights(self) -> None:
-        """A tie option's tie is on the wall: 0 < height <= H (docs/model.md §12)."""
+        """A tie option's tie is on the wall: 0 < height <= H, and at the level of the wall's own
+        ties if it has any (the time histories hold one tie level, docs/model.md §12)."""
         height = float(self.wall.height)
+        existing = () if self.wall.loads is None else self.wall.loads.ties
         for i, item in enumerate(self.interventions):
             loc: tuple[str | int, ...]
             tie: TieSpec
@@ -192,6 +195,13 @@ class Project(_Model):
                     f"expected a tie on the wall, 0 < height <= H = {height:g} m, found "
                     f"{tie.height:g}",
                     *loc,
+                )
+            if existing and not same_tie_level(existing[0].per_metre(), tie.per_metre()):
+                raise located_error(
+                    f"the time histories model one tie level: {ONE_TIE_LEVEL}; this option's "
+                    f"tie differs from the wall's own at {existing[0].height:g} m "
+                    "(wall.loads.ties)",
+                    *loc[:-1],
                 )
 
     @staticmethod

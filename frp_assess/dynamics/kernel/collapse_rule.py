@@ -9,7 +9,8 @@ after every step of the free vibration and when the input ends; the answer is a 
 * the collapse level, :func:`collapse_level`: π/2 (the wall fell), or α_x under
   ``first-exceedance``: the instant the wall reaches it decides;
 * ``overturning``: after the input the wall moves freely until it falls or can no longer fall
-  (:func:`.fate.cannot_fall`; its peaks still to come: :func:`peaks_at_rest`);
+  (:func:`.fate.cannot_fall`, :func:`.tie_fate.tied_cannot_fall` with a tie; its peaks still
+  to come: :func:`peaks_at_rest`);
 * ``end-of-record`` and ``first-exceedance``: when the input ends, |θ| ≥ α_x is a collapse
   under ``end-of-record`` (at the last upward crossing of α_x, :func:`alpha_x_crossing`),
   anything else leaves the wall standing.
@@ -35,6 +36,7 @@ from frp_assess.dynamics.kernel.params import (
 )
 from frp_assess.dynamics.kernel.state import Regime
 from frp_assess.dynamics.kernel.step_scan import CRUSH, LIMIT
+from frp_assess.dynamics.kernel.tie_fate import tied_cannot_fall, tied_remaining_peak
 
 #: The verdict while the fate is still open.
 UNDECIDED = -1
@@ -84,7 +86,12 @@ def collapse_verdict(
         if prm.collapse_mode == COLLAPSE_END_OF_RECORD and abs(theta) >= prm.alpha_x:
             return FATE_EXCEEDED, last_alpha_up
         return FATE_STANDING, math.nan
-    if r.resting or cannot_fall(theta, omega, r.s, r.intact_pos, r.intact_neg, prm):
+    if r.resting:
+        return FATE_AT_REST, math.nan
+    if prm.tie_on:
+        if tied_cannot_fall(theta, omega, r, prm):
+            return FATE_AT_REST, math.nan
+    elif cannot_fall(theta, omega, r.s, r.intact_pos, r.intact_neg, prm):
         return FATE_AT_REST, math.nan
     return UNDECIDED, math.nan
 
@@ -97,5 +104,8 @@ def peaks_at_rest(
     rocking still to come is the turning angle its energy reaches (:func:`.fate.remaining_peak`)."""
     if r.resting:
         return peak, peak_bar
-    extra, with_bar = remaining_peak(theta, omega, r.s, r.intact_pos, r.intact_neg, prm)
+    if prm.tie_on:
+        extra, with_bar = tied_remaining_peak(theta, omega, r, prm)
+    else:
+        extra, with_bar = remaining_peak(theta, omega, r.s, r.intact_pos, r.intact_neg, prm)
     return max(peak, extra), (max(peak_bar, extra) if with_bar else peak_bar)

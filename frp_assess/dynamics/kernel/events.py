@@ -191,6 +191,8 @@ def locate_level(
     slope: float,
     s: float,
     k_s: float,
+    t0: float,
+    t1: float,
     level: float,
     prm: KernelParams,
 ) -> tuple[float, float, float]:
@@ -205,7 +207,7 @@ def locate_level(
     resid = math.nan
     taylor = prm.method != METHOD_RK4
     for _ in range(EVENT_ITERATIONS):
-        th_e, om_e, a_e, _err = step(theta, omega, tau, u0, slope, s, k_s, a1, prm)
+        th_e, om_e, a_e, _err = step(theta, omega, tau, u0, slope, s, k_s, t0, t1, a1, prm)
         resid = s * th_e - level
         dy = s * om_e
         # converged when the instant is known to EVENT_TIME_TOLERANCE·h (θ' there to
@@ -239,6 +241,8 @@ def turning_point(
     slope: float,
     s: float,
     k_s: float,
+    t0: float,
+    t1: float,
     prm: KernelParams,
 ) -> float:
     """s·θ at the turning point (θ' = 0) inside the step, from the guess ``tau``.
@@ -250,10 +254,10 @@ def turning_point(
     best = s * theta
     taylor = prm.method != METHOD_RK4
     for _ in range(EVENT_ITERATIONS):
-        th_e, om_e, a_e, _err = step(theta, omega, tau, u0, slope, s, k_s, a1, prm)
+        th_e, om_e, a_e, _err = step(theta, omega, tau, u0, slope, s, k_s, t0, t1, a1, prm)
         best = max(best, s * th_e)
         if math.isnan(a_e):  # a method without FSAL: evaluate the end acceleration
-            a_e = acceleration(th_e, s, u0 + slope * tau, k_s, prm)
+            a_e = acceleration(th_e, s, u0 + slope * tau, k_s, t0, t1, prm)
         if a_e == 0.0:
             break
         if taylor and tau > 0.0:
@@ -268,3 +272,40 @@ def turning_point(
             break
         tau = tau_new
     return best
+
+
+@njit(cache=True, nogil=True)
+def locate_turn(
+    theta: float,
+    omega: float,
+    a1: float,
+    h: float,
+    tau: float,
+    u0: float,
+    slope: float,
+    s: float,
+    k_s: float,
+    t0: float,
+    t1: float,
+    prm: KernelParams,
+) -> tuple[float, float]:
+    """Step length τ ∈ (0, h] at which θ' = 0 (the turning point where a yielding tie unloads,
+    docs/model.md §12), from the guess ``tau``: (τ, s·θ there).
+
+    Newton on τ with one integrator step per iteration (slope θ'' at the end of the step),
+    until the correction of the instant is below EVENT_TIME_TOLERANCE of the step, as for
+    :func:`locate_level`; the state is the integrator's.
+    """
+    th_e = theta
+    for _ in range(EVENT_ITERATIONS):
+        th_e, om_e, a_e, _err = step(theta, omega, tau, u0, slope, s, k_s, t0, t1, a1, prm)
+        if math.isnan(a_e):  # a method without FSAL: evaluate the end acceleration
+            a_e = acceleration(th_e, s, u0 + slope * tau, k_s, t0, t1, prm)
+        if abs(om_e) <= EVENT_TIME_TOLERANCE * h * abs(a_e) or a_e == 0.0:
+            break
+        tau_new = _newton_step(tau, om_e, a_e, h)
+        if abs(tau_new - tau) <= 1e-15 * h:
+            tau = tau_new
+            break
+        tau = tau_new
+    return tau, s * th_e

@@ -18,10 +18,29 @@ from frp_assess.dynamics.kernel.params import (
     BAR_SHARED,
     REST_VELOCITY,
     RUPTURE_ENERGY_TRANSFER,
+    TIE_ELASTIC,
+    TIE_LOST,
+    TIE_SLACK,
+    TIE_YIELD,
     KernelParams,
 )
-from frp_assess.dynamics.kernel.state import Ground, Regime, acting_bar, rocking_on, with_bars
-from frp_assess.dynamics.kernel.step_scan import CRUSH, IMPACT, NO_EVENT, RUPTURE
+from frp_assess.dynamics.kernel.state import (
+    Ground,
+    Regime,
+    acting_bar,
+    rocking_on,
+    with_bars,
+    with_tie,
+)
+from frp_assess.dynamics.kernel.step_scan import (
+    CRUSH,
+    IMPACT,
+    NO_EVENT,
+    RUPTURE,
+    TIE_DOWN,
+    TIE_TURN,
+    TIE_UP,
+)
 
 
 @njit(cache=True, nogil=True, inline="always")
@@ -218,7 +237,31 @@ def jump(
     if event == RUPTURE:
         omega, intact_pos, intact_neg = rupture(omega, r.s, r.intact_pos, r.intact_neg, prm)
         return theta, omega, with_bars(r, intact_pos, intact_neg)
+    if event == TIE_UP or event == TIE_DOWN or event == TIE_TURN:
+        return theta, omega, tie_jump(event, theta, r, prm)
     return theta, omega, r
+
+
+@njit(cache=True, nogil=True, inline="always")
+def tie_jump(event: int, theta: float, r: Regime, prm: KernelParams) -> Regime:
+    """The tie's new state at its ``event`` (a step_scan code) at θ > 0 (docs/model.md §12);
+    θ and θ' do not jump.
+
+    Upward: a slack tie is re-engaged (elastic); an elastic one yields at F_y, or is lost when
+    its force reaches F_a < F_y (it carries nothing afterwards: its elastic energy
+    ½·k_t·(δ − δ_p)² leaves with it, θ' is kept).  Downward: it goes slack.  At the turning
+    point while it yields it unloads, elastic, with δ_p = h_t·sin θ − F_y/k_t.
+    """
+    if event == TIE_DOWN:
+        return with_tie(r, TIE_SLACK, r.tie_dp, prm)
+    if event == TIE_TURN:
+        dp = max(r.tie_dp, prm.tie_height * math.sin(theta) - prm.tie_yield)
+        return with_tie(r, TIE_ELASTIC, dp, prm)
+    if r.tie == TIE_SLACK:
+        return with_tie(r, TIE_ELASTIC, r.tie_dp, prm)
+    if r.tie_yield < prm.tie_theta_loss:
+        return with_tie(r, TIE_YIELD, r.tie_dp, prm)
+    return with_tie(r, TIE_LOST, r.tie_dp, prm)
 
 
 @njit(cache=True, nogil=True, inline="always")

@@ -34,6 +34,13 @@ FATE_EXCEEDED = 2  #: `end-of-record`/`first-exceedance`: the rule's limit |θ| 
 FATE_STANDING = 3  #: `end-of-record`/`first-exceedance`: the input ended below the limit
 FATE_CRUSHED = 4  #: the compressed zone reached the intact acting bar: the toe crushed
 
+# the state of the tie (docs/model.md §12), one level per wall; it acts on side + only
+TIE_OFF = 0  #: no tie
+TIE_SLACK = 1  #: δ ≤ δ_p: the tie carries nothing (or the wall rocks on side −)
+TIE_ELASTIC = 2  #: F_t = k_t·(δ − δ_p) between 0 and F_y (F_a of a brittle tie)
+TIE_YIELD = 3  #: F_t = F_y while the wall moves outward; δ_p grows with δ
+TIE_LOST = 4  #: the anchorage failed: it carries nothing for the rest of the time history
+
 STATUS_OK = 0
 STATUS_EVENT_OVERFLOW = 1  #: too many events in one sample interval (Zeno chatter guard)
 STATUS_STEP_UNDERFLOW = 2  #: the error control asked for a step below MIN_STEP_FRACTION·dt
@@ -109,6 +116,15 @@ class KernelParams(NamedTuple):
     e_to_neg: float  #: and on side − [-]
     alpha_x_neg: float  #: where the wall without bar tips on side − [rad] (α_x: side +)
     tip_bar_neg: float  #: θ* of side − with the acting bar intact [rad] (tip_bar: side +)
+    # --- the tie of docs/model.md §12 (one level: :func:`frp_assess.dynamics.loads.tie_level`):
+    # on side + its moment over W·R is tie_kn·(h_t·sin θ − δ_p)·cos θ while elastic and
+    # tie_kn·tie_yield·cos θ while yielding (F_t·h_t·cos θ/(W·R), F_t = k_t·(δ − δ_p) or F_y)
+    tie_on: bool  #: the wall has a tie
+    tie_height: float  #: h_t [m]
+    tie_kn: float  #: k_t·h_t/(W·R) [1/m]
+    tie_yield: float  #: F_y/k_t [m]: the elastic elongation at yield
+    #: θ where a brittle tie (F_a ≤ F_y) is lost, asin(F_a/(k_t·h_t)) [rad] (inf: never)
+    tie_theta_loss: float
     #: the bounces after an impact are ended at once when they surely die out where the input
     #: cannot uplift the wall (:func:`.jumps.chatter_ends`; the same results, fewer impacts to
     #: follow); False only to show that

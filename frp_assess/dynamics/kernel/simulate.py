@@ -55,6 +55,8 @@ from frp_assess.dynamics.kernel.params import (
     STATUS_FREE_VIBRATION_UNDECIDED,
     STATUS_OK,
     STATUS_STEP_UNDERFLOW,
+    TIE_LOST,
+    TIE_YIELD,
     KernelParams,
 )
 from frp_assess.dynamics.kernel.state import (
@@ -64,11 +66,13 @@ from frp_assess.dynamics.kernel.state import (
     at_rest,
     bar_stiffness,
     initial_regime,
+    plastic_elongation,
     record_rupture,
     record_sample,
+    tie_terms,
 )
 from frp_assess.dynamics.kernel.step_control import stepping, try_step
-from frp_assess.dynamics.kernel.step_scan import IMPACT, NO_EVENT, RUPTURE, scan_step
+from frp_assess.dynamics.kernel.step_scan import IMPACT, NO_EVENT, RUPTURE, TIE_TURN, scan_step
 
 
 class Outcome(NamedTuple):
@@ -87,6 +91,8 @@ class Outcome(NamedTuple):
     samples: int  #: history samples written
     steps: int  #: accepted integration steps
     rejected: int  #: rejected integration steps
+    tie_lost: bool  #: the tie's anchorage failed (docs/model.md §12)
+    tie_plastic: float  #: the tie's plastic elongation δ_p at the end [m] (0 without a tie)
 
 
 def history_length(n_input: int, dt: float, collapse_mode: int) -> int:
@@ -173,10 +179,18 @@ def simulate(
                 now = t_i + x
             else:
                 # --- rocking: one accepted step (a rejected one is retried shorter) ----------
+                t0 = 0.0
+                t1 = 0.0
+                if prm.tie_on:  # the tie's moment in this regime (docs/model.md §12)
+                    if r.tie == TIE_YIELD and r.s * omega <= 0.0:
+                        # a yielding tie whose wall stopped at the end of a step: it unloads
+                        theta, omega, r = jump(TIE_TURN, r.s * theta, omega, r, prm)
+                        need_a = True
+                    t0, t1 = tie_terms(r, prm)
                 k_s = bar_stiffness(r, prm)
                 u0 = ua + slope * x
                 th1, om1, a_end, a1, hh, h, accepted = try_step(
-                    theta, omega, a1, need_a, h, u0, slope, dt - x, r.s, k_s, ctl, prm
+                    theta, omega, a1, need_a, h, u0, slope, dt - x, r.s, k_s, t0, t1, ctl, prm
                 )
                 need_a = False
                 if not accepted:
@@ -188,7 +202,7 @@ def simulate(
                 n_steps += 1
                 # --- the first event on it, and the peaks up to it
                 event, u_event, level, peak, peak_bar, y0, y1 = scan_step(
-                    theta, omega, a1, th1, om1, hh, u0, slope, r, k_s, peak, peak_bar,
+                    theta, omega, a1, th1, om1, hh, u0, slope, r, k_s, t0, t1, peak, peak_bar,
                     bar_level, limit, prm,
                 )  # fmt: skip
                 if event == NO_EVENT:  # the step holds: the wall moves on
@@ -214,9 +228,16 @@ def simulate(
                     if events > MAX_EVENTS_PER_INTERVAL:
                         status = STATUS_EVENT_OVERFLOW
                         break
-                    tau, om_e, _resid = ev.locate_level(
-                        theta, omega, a1, hh, u_event * hh, u0, slope, r.s, k_s, level, prm
-                    )
+                    if event == TIE_TURN:  # θ' = 0: a turning point, not a level
+                        tau, level = ev.locate_turn(
+                            theta, omega, a1, hh, u_event * hh, u0, slope, r.s, k_s, t0, t1, prm
+                        )
+                        om_e = 0.0
+                    else:
+                        tau, om_e, _resid = ev.locate_level(
+                            theta, omega, a1, hh, u_event * hh, u0, slope, r.s, k_s, t0, t1,
+                            level, prm,
+                        )  # fmt: skip
                     last_alpha_up = alpha_x_crossing(
                         y0, level, t_i + x, tau, prm.alpha_x, last_alpha_up
                     )
@@ -273,4 +294,6 @@ def simulate(
         samples,
         n_steps,
         n_rejected,
+        r.tie == TIE_LOST,
+        plastic_elongation(theta, r, prm),
     )

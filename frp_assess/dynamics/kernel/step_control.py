@@ -152,6 +152,8 @@ def try_step(
     rest: float,
     s: float,
     k_s: float,
+    t0: float,
+    t1: float,
     ctl: Stepping,
     prm: KernelParams,
 ) -> tuple[float, float, float, float, float, float, bool]:
@@ -167,9 +169,9 @@ def try_step(
     (:mod:`.inlining`).
     """
     if need_a:
-        a1 = acceleration(theta, s, u0, k_s, prm)
+        a1 = acceleration(theta, s, u0, k_s, t0, t1, prm)
     hh = step_length(h if ctl.adaptive else ctl.h_fixed, rest, ctl.adaptive)
-    th1, om1, a_end, err = step(theta, omega, hh, u0, slope, s, k_s, a1, prm)
+    th1, om1, a_end, err = step(theta, omega, hh, u0, slope, s, k_s, t0, t1, a1, prm)
     accepted = True
     if ctl.adaptive:
         accepted, h = step_size(err, hh, h, ctl.exponent, ctl.err_grow_max, ctl.h_enough, ctl.order)

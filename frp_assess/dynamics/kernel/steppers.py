@@ -26,18 +26,22 @@ def side_terms(s: float, prm: KernelParams) -> tuple[float, float, float, float,
 
 
 @njit(cache=True, nogil=True)
-def acceleration(theta: float, s: float, u: float, k_s: float, prm: KernelParams) -> float:
+def acceleration(
+    theta: float, s: float, u: float, k_s: float, t0: float, t1: float, prm: KernelParams
+) -> float:
     """θ'' of Eq. 10 with the base reaction and the loads [rad/s²] in the regime s, ground
     acceleration u = ü_g/g (scaled):
 
-        θ'' = −p²_s·[(a0_s + u·a1_s − s·ξ·n²)·cos θ + (K_s + b0_s + u·b1_s)·sin θ],
+        θ'' = −p²_s·[(a0_s + u·a1_s − s·ξ·n²)·cos θ + (K_s + b0_s + u·b1_s)·sin θ
+                     + (t0 + t1·sin θ)·cos θ],
         n = 1 + κ_s·sin(|θ|/2),  κ_s = K_s·κ/K   (docs/model.md §1.1, §12)
 
-    which without loads is −p²·[sin(αs − θ) + u·cos(αs − θ) + K_s·sin θ − s·ξ·n²·cos θ].
+    (the last term the tie's moment over W·R in the regime, :func:`.state.tie_terms`), which
+    without loads and ties is −p²·[sin(αs − θ) + u·cos(αs − θ) + K_s·sin θ − s·ξ·n²·cos θ].
     With the edge pivot (ξ = 0) the reaction term is skipped: the paper's Eq. 10 bit for bit.
     """
     p2, a0, a1, b0, b1 = side_terms(s, prm)
-    return _rhs(theta, s, u, k_s, p2, a0, a1, b0, b1, prm.xi, prm.kappa_per_k)
+    return _rhs(theta, s, u, k_s, t0, t1, p2, a0, a1, b0, b1, prm.xi, prm.kappa_per_k)
 
 
 @njit(cache=True, nogil=True, inline=into("dopri5"))
@@ -46,6 +50,8 @@ def _rhs(
     s: float,
     u: float,
     k_s: float,
+    t0: float,
+    t1: float,
     p2: float,
     a0: float,
     a1: float,
@@ -63,6 +69,14 @@ def _rhs(
     # stage's chain of dependent operations from θ to θ'' is the shortest (docs/model.md §4.2).
     a_coef = a0 + u * a1
     b_coef = k_s + b0 + u * b1
+    if t0 != 0.0 or t1 != 0.0:
+        # a tie holds the wall (docs/model.md §12): its moment cos θ·(t0 + t1·sin θ) in a
+        # branch of its own, so that the arithmetic of the others is unchanged
+        st, ct = sin_cos(theta)
+        if xi != 0.0:
+            n = 1.0 + k_s * kappa_per_k * s * math.sin(0.5 * theta)
+            a_coef -= s * xi * n * n
+        return -p2 * ((a_coef + t0 + t1 * st) * ct + b_coef * st)
     if xi != 0.0 and k_s != 0.0:
         # the bar force needs sin(|θ|/2) = s·sin(θ/2) (smooth across θ = 0 inside a step that
         # overshoots an impact before it is located): one sin/cos pair of θ/2 gives it and
@@ -174,6 +188,8 @@ def dopri5(
     slope: float,
     s: float,
     k_s: float,
+    t0: float,
+    t1: float,
     a1: float,
     prm: KernelParams,
 ) -> tuple[float, float, float, float]:
@@ -192,18 +208,18 @@ def dopri5(
     p2, a0, a1c, b0, b1 = side_terms(s, prm)
     xi, kpk = prm.xi, prm.kappa_per_k
     t2 = theta + h * _C2 * omega
-    a2 = _rhs(t2, s, u0 + slope * _C2 * h, k_s, p2, a0, a1c, b0, b1, xi, kpk)
+    a2 = _rhs(t2, s, u0 + slope * _C2 * h, k_s, t0, t1, p2, a0, a1c, b0, b1, xi, kpk)
     t3 = (theta + h * _C3 * omega) + hh * (_N31 * a1)
-    a3 = _rhs(t3, s, u0 + slope * _C3 * h, k_s, p2, a0, a1c, b0, b1, xi, kpk)
+    a3 = _rhs(t3, s, u0 + slope * _C3 * h, k_s, t0, t1, p2, a0, a1c, b0, b1, xi, kpk)
     t4 = (theta + h * _C4 * omega + hh * (_N41 * a1)) + hh * (_N42 * a2)
-    a4 = _rhs(t4, s, u0 + slope * _C4 * h, k_s, p2, a0, a1c, b0, b1, xi, kpk)
+    a4 = _rhs(t4, s, u0 + slope * _C4 * h, k_s, t0, t1, p2, a0, a1c, b0, b1, xi, kpk)
     t5 = (theta + h * _C5 * omega + hh * (_N51 * a1 + _N52 * a2)) + hh * (_N53 * a3)
-    a5 = _rhs(t5, s, u0 + slope * _C5 * h, k_s, p2, a0, a1c, b0, b1, xi, kpk)
+    a5 = _rhs(t5, s, u0 + slope * _C5 * h, k_s, t0, t1, p2, a0, a1c, b0, b1, xi, kpk)
     t6 = (theta + h * omega + hh * (_N61 * a1 + _N62 * a2 + _N63 * a3)) + hh * (_N64 * a4)
-    a6 = _rhs(t6, s, u0 + slope * h, k_s, p2, a0, a1c, b0, b1, xi, kpk)
+    a6 = _rhs(t6, s, u0 + slope * h, k_s, t0, t1, p2, a0, a1c, b0, b1, xi, kpk)
     theta1 = (theta + h * omega + hh * (_N71 * a1 + _N73 * a3 + _N74 * a4)) + hh * (_N75 * a5)
     omega1 = omega + h * (_B1 * a1 + _B3 * a3 + _B4 * a4 + _B5 * a5 + _B6 * a6)
-    a7 = _rhs(theta1, s, u0 + slope * h, k_s, p2, a0, a1c, b0, b1, xi, kpk)
+    a7 = _rhs(theta1, s, u0 + slope * h, k_s, t0, t1, p2, a0, a1c, b0, b1, xi, kpk)
     err_t = hh * (_F1 * a1 + _F3 * a3 + _F4 * a4 + _F5 * a5 + _F6 * a6)
     err_w = h * (_E1 * a1 + _E3 * a3 + _E4 * a4 + _E5 * a5 + _E6 * a6 + _E7 * a7)
     return theta1, omega1, a7, error_norm(theta, omega, theta1, omega1, err_t, err_w, prm)
@@ -223,6 +239,8 @@ def bs3(
     slope: float,
     s: float,
     k_s: float,
+    t0: float,
+    t1: float,
     a1: float,
     prm: KernelParams,
 ) -> tuple[float, float, float, float]:
@@ -230,13 +248,13 @@ def bs3(
     w1 = omega
     t2 = theta + 0.5 * h * w1
     w2 = omega + 0.5 * h * a1
-    a2 = acceleration(t2, s, u0 + slope * 0.5 * h, k_s, prm)
+    a2 = acceleration(t2, s, u0 + slope * 0.5 * h, k_s, t0, t1, prm)
     t3 = theta + 0.75 * h * w2
     w3 = omega + 0.75 * h * a2
-    a3 = acceleration(t3, s, u0 + slope * 0.75 * h, k_s, prm)
+    a3 = acceleration(t3, s, u0 + slope * 0.75 * h, k_s, t0, t1, prm)
     theta1 = theta + h * (2.0 / 9.0 * w1 + 1.0 / 3.0 * w2 + 4.0 / 9.0 * w3)
     omega1 = omega + h * (2.0 / 9.0 * a1 + 1.0 / 3.0 * a2 + 4.0 / 9.0 * a3)
-    a4 = acceleration(theta1, s, u0 + slope * h, k_s, prm)
+    a4 = acceleration(theta1, s, u0 + slope * h, k_s, t0, t1, prm)
     w4 = omega1
     err_t = h * (_BS_E1 * w1 + _BS_E2 * w2 + _BS_E3 * w3 + _BS_E4 * w4)
     err_w = h * (_BS_E1 * a1 + _BS_E2 * a2 + _BS_E3 * a3 + _BS_E4 * a4)
@@ -252,17 +270,19 @@ def rk4(
     slope: float,
     s: float,
     k_s: float,
+    t0: float,
+    t1: float,
     a1: float,
     prm: KernelParams,
 ) -> tuple[float, float, float, float]:
     """One classical RK4 step (same signature as :func:`dopri5`; no end acceleration, no error)."""
     um = u0 + slope * 0.5 * h
     w2 = omega + 0.5 * h * a1
-    a2 = acceleration(theta + 0.5 * h * omega, s, um, k_s, prm)
+    a2 = acceleration(theta + 0.5 * h * omega, s, um, k_s, t0, t1, prm)
     w3 = omega + 0.5 * h * a2
-    a3 = acceleration(theta + 0.5 * h * w2, s, um, k_s, prm)
+    a3 = acceleration(theta + 0.5 * h * w2, s, um, k_s, t0, t1, prm)
     w4 = omega + h * a3
-    a4 = acceleration(theta + h * w3, s, u0 + slope * h, k_s, prm)
+    a4 = acceleration(theta + h * w3, s, u0 + slope * h, k_s, t0, t1, prm)
     theta1 = theta + h / 6.0 * (omega + 2.0 * w2 + 2.0 * w3 + w4)
     omega1 = omega + h / 6.0 * (a1 + 2.0 * a2 + 2.0 * a3 + a4)
     return theta1, omega1, math.nan, 0.0
@@ -277,12 +297,20 @@ def step(
     slope: float,
     s: float,
     k_s: float,
+    t0: float,
+    t1: float,
     a1: float,
     prm: KernelParams,
 ) -> tuple[float, float, float, float]:
-    """One step of the method chosen in ``prm`` (see :func:`dopri5` for the returns)."""
+    """One step of the method chosen in ``prm`` (see :func:`dopri5` for the returns).
+
+    Without a tie acting (t0 = t1 = 0) Dormand–Prince is called with the constants 0.0, so the
+    inlined copy has no tie branch left in its seven evaluations of Eq. 10: the tie costs the
+    bare wall one test per step, not seven (docs/model.md §12)."""
     if prm.method == METHOD_DOPRI5:
-        return dopri5(theta, omega, h, u0, slope, s, k_s, a1, prm)
+        if t0 == 0.0 and t1 == 0.0:
+            return dopri5(theta, omega, h, u0, slope, s, k_s, 0.0, 0.0, a1, prm)
+        return dopri5(theta, omega, h, u0, slope, s, k_s, t0, t1, a1, prm)
     if prm.method == METHOD_BS3:
-        return bs3(theta, omega, h, u0, slope, s, k_s, a1, prm)
-    return rk4(theta, omega, h, u0, slope, s, k_s, a1, prm)
+        return bs3(theta, omega, h, u0, slope, s, k_s, t0, t1, a1, prm)
+    return rk4(theta, omega, h, u0, slope, s, k_s, t0, t1, a1, prm)
