@@ -47,6 +47,7 @@ from frp_assess.assess.statistics import (
 )
 from frp_assess.assess.verification import NumericalCheck
 from frp_assess.dynamics import IdaSettings, RockingModel
+from frp_assess.dynamics.effective import EARLY_STOP_BAND
 from frp_assess.motions import G
 from frp_assess.results.checks import KinematicChecks
 from frp_assess.results.model import (
@@ -399,6 +400,7 @@ def build_results(
                 capacity=inputs.ida.capacity,
                 ladder_ratio=inputs.ida.ladder_ratio,
                 offset=inputs.ida.offset,
+                early_stop_band=EARLY_STOP_BAND,
             ),
             target=inputs.target,
             design_value=design_value_rule(len(seismic.records)),

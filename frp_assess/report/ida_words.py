@@ -14,10 +14,6 @@ from frp_assess.text_safety import Markup
 
 Results = AssessmentResult
 
-#: the early stop of the ladder: collapsed without a break over this ratio of multipliers
-#: (frp_assess/dynamics/effective.py ``EARLY_STOP_BAND``; results.json does not carry it and
-#: the report reads nothing else, so it is repeated here)
-EARLY_STOP_BAND = 1.5
 #: the sensitivity row of the numerical spread (results.json ``sensitivity.rows[].variant``)
 SPREAD_PREFIX = "numerical spread"
 
@@ -47,7 +43,7 @@ def method_paragraphs(results: Results, lang: Lang) -> list[str]:
             r=lang.gnum(ida.ladder_ratio),
             offset=lang.gnum(ida.offset),
             tol=lang.gnum(ida.tolerance),
-            band=lang.gnum(EARLY_STOP_BAND),
+            band=lang.gnum(ida.early_stop_band),
         ),  # fmt: skip
         lang.t("ida.effective.first"),
         spread_text(results, lang),
@@ -64,6 +60,7 @@ def settings_value(results: Results, lang: Lang) -> str:
         tol=lang.gnum(ida.tolerance),
         cmax=lang.gnum(ida.max_multiplier),
         offset=lang.gnum(ida.offset),
+        band=lang.gnum(ida.early_stop_band),
     )
 
 

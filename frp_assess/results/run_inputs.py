@@ -76,7 +76,9 @@ class IdaSettingsResult:
     multiplier [-], largest multiplier C_max [-]; ``capacity``: the capacity of a record,
     effective (the effective collapse intensity, docs/model.md §11) | first-collapse (the
     first collapse, the paper's convention, §5); ``ladder_ratio`` r and ``offset``: the
-    ladder of §11, C₀·r^(k+offset) [-]."""
+    ladder of §11, C₀·r^(k+offset) [-]; ``early_stop_band``: the ladder stops once the wall
+    has fallen at every step over this ratio of multipliers [-] (§11.2; a file written before
+    it was recorded ran with 1.5)."""
 
     step_ratio: float
     tolerance: float
@@ -84,6 +86,7 @@ class IdaSettingsResult:
     capacity: str = "first-collapse"
     ladder_ratio: float = 1.05
     offset: float = 0.0
+    early_stop_band: float = 1.5
 
 
 @dataclass(frozen=True)

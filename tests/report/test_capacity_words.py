@@ -240,3 +240,23 @@ def test_verdict_on_a_collapse_window_is_stated_with_the_verdict(code: str) -> N
     assert len(stated) >= 2, (code, stated)
     line = next(p for p in paras if COLLAPSE_WINDOW[code] in p)
     assert gnum(0.98, code) in line and gnum(1.02, code) in line
+
+
+@pytest.mark.parametrize("code", ["en", "it"])
+def test_the_early_stop_band_is_the_one_results_json_records(code: str) -> None:
+    """The sampling paragraph and the IDA settings row give results.json's
+    ``model.ida.early_stop_band`` (1.5 in the golden run), and follow it when it differs
+    (1.75 here): the report reads the band from the run, not from a constant of its own."""
+    d = raw("small")
+    r0 = load_results(RUNS["small"])
+    assert r0.model.ida.early_stop_band == d["model"]["ida"]["early_stop_band"] == 1.5
+    other = replace(r0, model=replace(r0.model, ida=replace(r0.model.ida, early_stop_band=1.75)))
+    for r, band in ((r0, gnum(1.5, code)), (other, gnum(1.75, code))):
+        paras, tables = model(in_language(r, code))[:2]
+        sampling = next(
+            p for p in paras if f"r = {gnum(d['model']['ida']['ladder_ratio'], code)}" in p
+        )
+        assert f"{band} " in sampling, (code, sampling)
+        rows = [str(row[1]) for t in tables if t.kind == "key_value" for row in t.rows
+                if isinstance(row[1], str) and f"{band}×" in row[1]]  # fmt: skip
+        assert rows, (code, band)
