@@ -35,6 +35,7 @@ __all__ = [
     "LoadedBuilding",
     "LoadedWall",
     "WallEntry",
+    "check_wall_list",
     "is_building",
     "load_building",
     "load_building_text",
@@ -241,6 +242,13 @@ def _entries(data: dict[str, Any], lines: Mapping[Loc, int], file: str) -> list[
         entries.append(WallEntry(i, name, slug, own))
     raise_all(problems)
     return entries
+
+
+def check_wall_list(data: dict[str, Any], lines: Mapping[Loc, int], file: str) -> list[WallEntry]:
+    """The entries of a building file's ``walls:`` list; every problem of the list itself
+    (no list, a name missing, repeated or giving another's results folder) raised, worded
+    as the file's validation words it (the TUI checks its edits of the list with it)."""
+    return _entries(data, lines, file)
 
 
 def building_name(data: dict[str, Any]) -> str:

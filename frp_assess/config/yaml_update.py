@@ -93,16 +93,12 @@ def _merge_seq(node: Any, old: list[Any], new: list[Any]) -> None:
     del node[len(new) :]
 
 
-def update_project_text(
-    original_text: str, original: Project, project: Project, name: str = "<project>"
+def update_data_text(
+    original_text: str, old: Mapping[str, Any], new: Mapping[str, Any]
 ) -> str | None:
-    """``original_text`` (which loads as ``original``) changed so that it loads as ``project``.
-
-    None when the text cannot be updated in place (not a mapping, or the check by loading
-    the result fails): then write :func:`~frp_assess.config.dump_project` instead.
-    """
-    if project == original:
-        return original_text
+    """``original_text`` (whose YAML reads as the mapping ``old``) changed where ``new``
+    differs from ``old``, comments and layout kept; None when the text is not a YAML mapping.
+    The caller checks the result (by loading it again)."""
     from ruamel.yaml import YAML
     from ruamel.yaml.comments import CommentedMap
     from ruamel.yaml.error import YAMLError
@@ -117,10 +113,25 @@ def update_project_text(
         return None
     if not isinstance(doc, CommentedMap):
         return None
-    _merge(doc, project_data(original), project_data(project))
+    _merge(doc, old, new)
     buf = io.StringIO()
     yaml.dump(doc, buf)
-    text = buf.getvalue()
+    return buf.getvalue()
+
+
+def update_project_text(
+    original_text: str, original: Project, project: Project, name: str = "<project>"
+) -> str | None:
+    """``original_text`` (which loads as ``original``) changed so that it loads as ``project``.
+
+    None when the text cannot be updated in place (not a mapping, or the check by loading
+    the result fails): then write :func:`~frp_assess.config.dump_project` instead.
+    """
+    if project == original:
+        return original_text
+    text = update_data_text(original_text, project_data(original), project_data(project))
+    if text is None:
+        return None
     try:
         again = load_project_text(text, name, check_files=False).project
     except InputError:

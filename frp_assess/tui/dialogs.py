@@ -1,10 +1,11 @@
-"""Small modal dialogs: a path prompt (save as, export) and the quit confirmation."""
+"""Small modal dialogs: a path prompt (save as, export), a name prompt (a building's walls)
+and the quit confirmation."""
 
 from __future__ import annotations
 
 from collections.abc import Callable
 from pathlib import Path
-from typing import ClassVar
+from typing import ClassVar, Generic, TypeVar
 
 from textual import on
 from textual.app import ComposeResult
@@ -18,19 +19,22 @@ from frp_assess.tui.literal import literal
 
 #: checks a typed path: an error message, or None if it can be used
 PathCheck = Callable[[Path], str | None]
+#: what a prompt gives
+T = TypeVar("T")
 
 
-class PathPrompt(ModalScreen[Path | None]):
-    """Ask for a file or directory path; ``enter`` accepts, ``esc`` cancels.
+class Prompt(ModalScreen[T | None], Generic[T]):
+    """Ask for one line of text; ``enter`` accepts, ``esc`` cancels.
 
-    The check runs on ``enter``; its message shows under the field and the dialog stays.
+    :meth:`read` turns the text into the answer or a message, which shows under the field
+    while the dialog stays.
     """
 
     BINDINGS: ClassVar[list[BindingType]] = [Binding("escape", "cancel", "Cancel")]
 
-    def __init__(self, title: str, value: str, hint: str, check: PathCheck | None = None):
+    def __init__(self, title: str, value: str, hint: str) -> None:
         super().__init__()
-        self.title_text, self.value, self.hint, self.check = title, value, hint, check
+        self.title_text, self.value, self.hint = title, value, hint
 
     def compose(self) -> ComposeResult:
         with Vertical(classes="dialog"):
@@ -45,18 +49,18 @@ class PathPrompt(ModalScreen[Path | None]):
     def on_mount(self) -> None:
         self.query_one("#path-input", Input).focus()
 
+    def read(self, text: str) -> tuple[T | None, str | None]:  # pragma: no cover - abstract
+        """The answer of the text typed (stripped), or None and the message of a problem."""
+        raise NotImplementedError
+
     @on(Input.Submitted)
     @on(Button.Pressed, "#ok")
     def _accept(self) -> None:
-        text = self.query_one("#path-input", Input).value.strip()
-        error = "expected a path, found nothing" if not text else None
-        path = Path(text).expanduser()
-        if error is None and self.check is not None:
-            error = self.check(path)
-        if error:
+        answer, error = self.read(self.query_one("#path-input", Input).value.strip())
+        if error or answer is None:
             self.query_one("#path-error", Static).update(literal(f"✗ {error}", "red"))
             return
-        self.dismiss(path)
+        self.dismiss(answer)
 
     @on(Input.Changed)
     def _typed(self, event: Input.Changed) -> None:
@@ -66,6 +70,33 @@ class PathPrompt(ModalScreen[Path | None]):
     @on(Button.Pressed, "#cancel")
     def action_cancel(self) -> None:
         self.dismiss(None)
+
+
+class PathPrompt(Prompt[Path]):
+    """Ask for a file or directory path; the check runs on ``enter``."""
+
+    def __init__(self, title: str, value: str, hint: str, check: PathCheck | None = None):
+        super().__init__(title, value, hint)
+        self.check = check
+
+    def read(self, text: str) -> tuple[Path | None, str | None]:
+        if not text:
+            return None, "expected a path, found nothing"
+        path = Path(text).expanduser()
+        error = self.check(path) if self.check is not None else None
+        return (None, error) if error else (path, None)
+
+
+class NamePrompt(Prompt[str]):
+    """Ask for a name; ``check`` gives the problem of a name ("" when it can be used)."""
+
+    def __init__(self, title: str, value: str, hint: str, check: Callable[[str], str]):
+        super().__init__(title, value, hint)
+        self.check = check
+
+    def read(self, text: str) -> tuple[str | None, str | None]:
+        error = self.check(text)
+        return (None, error) if error else (text, None)
 
 
 class ConfirmQuit(ModalScreen[str]):
