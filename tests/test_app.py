@@ -46,8 +46,12 @@ def test_check_file_tells_a_project_from_a_study(tmp_path: Path) -> None:
     ensure_project_file(project)  # a project passes
     building = Path(__file__).parent / "fixtures" / "building-small.yaml"
     assert isinstance(check_file(building), CheckedBuilding)
-    with pytest.raises(InputError, match="is a building file.*frp-assess run"):
-        ensure_project_file(building)  # the TUI edits one wall: refused before the screen
+    ensure_project_file(building)  # the TUI edits a building wall by wall
+    repeated = tmp_path / "repeated.yaml"
+    text = building.read_text(encoding="utf-8").replace("name: Parapetto", "name: Timpano est")
+    repeated.write_text(text, encoding="utf-8")
+    with pytest.raises(InputError, match=r"walls\[2\]\.name: 'Timpano est' is already the name"):
+        ensure_project_file(repeated)  # a list of walls the TUI cannot show: one line
 
 
 def test_prepare_run_reports_the_records_stage_and_a_cancelled_run_writes_nothing(

@@ -31,6 +31,7 @@ from frp_assess.config.problems import problems_of, raise_all
 from frp_assess.config.walls_file import (
     LoadedBuilding,
     LoadedWall,
+    check_wall_list,
     is_building,
     load_building_parsed,
 )
@@ -142,8 +143,9 @@ def _relocated_line(wall: LoadedWall, line: str) -> str:
 
 def ensure_project_file(path: Path) -> None:
     """Refuse, as one line, a file that is not a readable YAML project file: a folder, FIFO,
-    device or oversized file, a YAML syntax error, a study file or a building file (which
-    name the command that runs them).  A valid project is not checked further here."""
+    device or oversized file, a YAML syntax error, a study file (which names the command
+    that runs it), or a building file whose list of walls is not valid (no list, a name
+    missing or repeated: the validation's message).  A valid project is not checked further here."""
     text = read_text_file(path, "project file")
     data, _lines = parse_yaml(text, str(path))
     if looks_like_study(data):
@@ -152,13 +154,8 @@ def ensure_project_file(path: Path) -> None:
             f"`frp-assess study {path}` (check it with `frp-assess validate`)",
             file=str(path),
         )
-    if is_building(data):  # not yet: the TUI edits one wall (issue 41 item 5)
-        raise InputError(
-            "is a building file (walls:): the terminal UI edits one-wall projects; run it with "
-            f"`frp-assess run {path}` (one wall: --wall NAME; check it with `frp-assess "
-            "validate`)",
-            file=str(path),
-        )
+    if is_building(data):  # the TUI edits it wall by wall: the list of walls must hold
+        check_wall_list(data, _lines, str(path))
 
 
 #: the project name in the packaged template, replaced by one taken from the file name

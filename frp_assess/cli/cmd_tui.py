@@ -33,6 +33,6 @@ def run(args: argparse.Namespace) -> int:
         # a folder, FIFO, device or oversized file, a YAML syntax error, a study file: one
         # line, exit 2, before the screen opens
         ensure_project_file(path)
-    from frp_assess.tui.app import run_tui  # Textual is imported only for this command
+    from frp_assess.tui.building_app import run_tui  # Textual is imported only for this command
 
     return run_tui(path, jobs=args.jobs)

@@ -16,7 +16,7 @@ __all__ = ["FrpAssessApp", "run_tui"]
 
 def __getattr__(name: str) -> object:
     if name in __all__:
-        from frp_assess.tui import app
+        from frp_assess.tui import building_app  # run_tui opens a building file too
 
-        return getattr(app, name)
+        return getattr(building_app, name)
     raise AttributeError(name)

@@ -490,10 +490,4 @@ class FrpAssessApp(PaneLookupApp):
         self.exit()
 
 
-def run_tui(path: Path | None = None, *, jobs: int | None = None) -> int:
-    """Run the application (blocking); returns the exit code."""
-    FrpAssessApp(path, jobs=jobs).run()
-    return 0
-
-
-__all__ = ["FrpAssessApp", "run_tui"]
+__all__ = ["FrpAssessApp"]
