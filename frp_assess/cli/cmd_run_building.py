@@ -15,23 +15,13 @@ from rich.console import Console
 
 from frp_assess.cli.output import Column, make_console, print_table, user
 from frp_assess.errors import Cancelled, InputError
-from frp_assess.results.building_summary import CHECK_COLUMNS, BuildingResults, WallSummary
-from frp_assess.results.verdict_words import governing_short
+from frp_assess.results.building_rows import CHECK_HEADERS, check_rows, retrofit_rows
+from frp_assess.results.building_summary import CHECK_COLUMNS, BuildingResults
 from frp_assess.text_safety import plain
 
 if TYPE_CHECKING:
     from frp_assess.app.assessment import SeismicInput
     from frp_assess.app.building_run import BuildingInputs, WallInputs
-
-#: the console's short names of the checks (as the report's columns)
-CHECK_HEADERS = {
-    "linear": "lin.",
-    "nonlinear_slv": "NL SLV",
-    "nonlinear_slc": "NL SLC",
-    "time_history_slv": "TH SLV",
-    "time_history_slc": "TH SLC",
-    "ida": "IDA",
-}
 
 
 def _with_options(building: BuildingInputs, args: argparse.Namespace) -> BuildingInputs:
@@ -127,53 +117,6 @@ def run_building_file(args: argparse.Namespace, path: Path, out: Path) -> int:
             f"{user(out_dir)}/ is written by a run of every wall"
         )
     return 0
-
-
-def _zeta(x: float | None) -> str:
-    return "—" if x is None else f"{x:.2f}"
-
-
-def check_rows(b: BuildingResults) -> list[list[str]]:
-    """The console's first summary table: per wall α₀, a₀* [g], ζ_E of every check and the
-    governing check (of the wall as it is)."""
-    return [
-        [
-            w.name,
-            f"{w.alpha0:.3f}",
-            f"{w.a0_star:.3f}",
-            *(_zeta(getattr(w.unreinforced, key)) for key, _ in CHECK_COLUMNS),
-            governing_short(w.unreinforced.governing_check),
-        ]
-        for w in b.walls
-    ]
-
-
-def _proposed(w: WallSummary) -> str:
-    if not w.retrofit_required:
-        return "none needed"
-    if w.proposed is None:
-        return "none passes" + (f" (closest: {w.closest})" if w.closest else "")
-    return w.proposed + (f": {w.as_built}" if w.as_built else "")
-
-
-def retrofit_rows(b: BuildingResults) -> list[list[str]]:
-    """The console's second summary table: per wall the verdicts before and after the
-    proposed retrofit, the retrofit with its bars as built, FRP mass [kg] and cost; then
-    the building's totals."""
-    rows = [
-        [
-            w.name,
-            w.verdict_before,
-            _proposed(w),
-            w.verdict_after,
-            "—" if w.frp_mass is None else f"{w.frp_mass:.1f}",
-            "—" if w.cost is None else f"{w.cost:,.0f}",
-        ]
-        for w in b.walls
-    ]
-    t = b.totals
-    rows.append(["building", "", "", "", f"{t.frp_mass:.1f}", f"{t.cost:,.0f}"])
-    return rows
 
 
 def print_building_summary(console: Console, b: BuildingResults) -> None:
