@@ -23,13 +23,17 @@ from textual.binding import Binding, BindingType
 from textual.events import Mount
 from textual.widgets import Input, OptionList
 
+from frp_assess.app.assessment import default_out_dir
 from frp_assess.app.building_edit import BuildingDoc, is_building
+from frp_assess.app.building_summary_file import load_building_summary
 from frp_assess.app.project import parse_yaml
 from frp_assess.errors import InputError
 from frp_assess.tui.app import FrpAssessApp
+from frp_assess.tui.building_summary_view import BuildingSummaryView
 from frp_assess.tui.core.session import yaml_path_problem
 from frp_assess.tui.dialogs import NamePrompt
 from frp_assess.tui.main_tabs import MainTabs
+from frp_assess.tui.results_pane import ResultsPane
 from frp_assess.tui.status_bar import StatusBar
 
 
@@ -73,8 +77,26 @@ class BuildingApp(FrpAssessApp):
         if event is not None:
             event.prevent_default()  # not FrpAssessApp.on_mount: it opens a one-wall project
         self.show_wall(0)
+        self.show_summary()
         self.query_one(MainTabs).start()
         self.query_one("#f-wall-thickness-control", Input).focus()
+
+    def show_summary(self) -> None:
+        """The building summary of the last run of every wall (``OUT/results.json``) as the
+        first view of the Results tab."""
+        pane = self.query_one(ResultsPane)
+        pane.query_one("#results-note").display = False  # "press ctrl+r": not for a building
+        out_dir = default_out_dir(self.path) if self.path is not None else None
+        summary, note = None, ""
+        try:
+            summary = load_building_summary(out_dir) if out_dir is not None else None
+        except InputError as exc:
+            note = str(exc)
+        if summary is None and not note:
+            note = f"No results yet: run the building with `frp-assess run {self.path}`."
+        view = BuildingSummaryView(id="building-summary-view")
+        pane.mount(view, before=0)
+        view.call_after_refresh(view.show, summary, note)
 
     # --------------------------------------------------------------------- the walls
     @property

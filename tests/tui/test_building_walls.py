@@ -10,14 +10,19 @@ import shutil
 from pathlib import Path
 
 import pytest
-from textual.widgets import Input
+from textual.widgets import Input, Static
 
+from frp_assess.app.assessment import default_out_dir
 from frp_assess.app.building_edit import BuildingDoc
+from frp_assess.app.building_summary_file import load_building_summary
+from frp_assess.cli import main
 from frp_assess.config.walls_file import load_building
+from frp_assess.errors import InputError
+from frp_assess.results.building_rows import check_rows
 from frp_assess.tui.building_app import BuildingApp, WallList, open_app
 from frp_assess.tui.dialogs import NamePrompt
 from tests.tui.conftest import run_async, settle
-from tests.tui.test_app import SIZE, type_into
+from tests.tui.test_app import SIZE, plain, type_into
 
 FIXTURE = Path(__file__).parents[1] / "fixtures" / "building-small.yaml"
 NAMES = ["Facciata sud, piano terra", "Timpano est", "Parapetto"]
@@ -161,3 +166,37 @@ def test_add_duplicate_rename_remove_walls(building: Path) -> None:
         assert "# A small building for the tests" in building.read_text(encoding="utf-8")
 
     run_async(body)
+
+
+@pytest.mark.slow
+def test_the_building_summary_is_the_first_results_view(building: Path) -> None:
+    """After `frp-assess run` of the building, its Results tab opens on the building
+    summary: a row per wall with the cells of the console's tables (the same row builders,
+    results/building_rows.py, read from OUT/results.json), then the governing wall."""
+    assert main(["run", str(building), "--no-pdf"]) == 0
+    summary = load_building_summary(default_out_dir(building))
+    assert summary is not None
+    rows = check_rows(summary)
+
+    async def body() -> None:
+        app = open_app(building)
+        async with app.run_test(size=(140, 40)) as pilot:
+            await pilot.press("f9")
+            view = app.query_one("#building-summary", Static)
+            await settle(pilot, lambda: "governing mechanism" in plain(view))
+            shown = plain(view)
+            for row in rows:  # each wall: its name and every ζ_E, as the console prints them
+                line = next(t for t in shown.splitlines() if row[1] in t and row[2] in t)
+                assert all(cell in line for cell in row[1:] if cell != "—")
+            for name in NAMES:
+                assert name.split(",")[0] in shown
+            assert f"governing mechanism: {summary.totals.governing_wall}" in shown
+
+    run_async(body)
+
+
+def test_a_one_wall_results_json_is_not_taken_for_a_buildings(tmp_path: Path) -> None:
+    (tmp_path / "results.json").write_text('{"schema_version": 1}', encoding="utf-8")
+    with pytest.raises(InputError, match="expected a building's results"):
+        load_building_summary(tmp_path)
+    assert load_building_summary(tmp_path / "none") is None
