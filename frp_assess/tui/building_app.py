@@ -2,11 +2,12 @@
 
 Selecting a wall shows it in today's tabs as the one-wall project the run builds for it;
 what is typed goes back into the building's data where the key comes from
-(:class:`~frp_assess.tui.core.building_doc.BuildingDoc`): the wall's own keys into its item
-of ``walls:``, the shared blocks into the file's top level, for every wall.  ``ctrl+s``
-saves the building file, comments kept, rewriting only what changed.  On the list: ``a``
-adds a wall, ``d`` duplicates the one highlighted, ``r`` renames it, ``delete`` removes it
-(names unique: the file's validation's rule and message).  A one-wall project opens in
+(:class:`~frp_assess.app.building_edit.BuildingDoc`): the wall's own keys into its item of
+``walls:``, the shared blocks into the file's top level, for every wall.  ``ctrl+s`` saves
+the building file, comments kept, rewriting only what changed.  ``ctrl+w`` goes to the list
+of walls; on it ``a`` adds a wall, ``d`` duplicates the one highlighted, ``r`` renames it,
+``delete`` removes it (names unique: the file's validation's rule and message).  The
+Results tab opens on the building summary of the last ``frp-assess run``.  A one-wall project opens in
 :class:`~frp_assess.tui.app.FrpAssessApp` as before.
 """
 
@@ -62,7 +63,12 @@ class WallList(OptionList):
 
 
 class BuildingApp(FrpAssessApp):
-    """:class:`FrpAssessApp` editing a building file wall by wall."""
+    """:class:`FrpAssessApp` editing a building file wall by wall; ``ctrl+w`` goes to the
+    list of walls."""
+
+    BINDINGS: ClassVar[list[BindingType]] = [
+        Binding("ctrl+w", "focus_walls", "Walls", priority=True)
+    ]
 
     def __init__(self, path: Path, text: str, *, jobs: int | None = None) -> None:
         super().__init__(path, jobs=jobs)
@@ -124,6 +130,9 @@ class BuildingApp(FrpAssessApp):
     def _wall_selected(self, event: OptionList.OptionSelected) -> None:
         if event.option_index != self.doc.current:
             self.show_wall(event.option_index)
+
+    def action_focus_walls(self) -> None:
+        self.wall_list.focus()
 
     def highlighted(self) -> int:
         index = self.wall_list.highlighted
