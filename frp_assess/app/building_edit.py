@@ -4,10 +4,11 @@ The editor shows one wall at a time as the one-wall project the run builds for i
 (:func:`frp_assess.config.walls_file.wall_data`); what the tabs change in it is written back
 into the building's data at the place the key comes from: the ``wall`` block and the
 wall's own ``building`` / ``interventions`` / ``design`` into its item of ``walls:``, every
-other block (site, records, materials, analysis, costs...) into the shared top level.  Only
-the values that changed are written (the difference with the wall's project as shown), so
-that a save rewrites only them (:func:`building_text`, with the round-trip code of
-:mod:`frp_assess.config.yaml_update`).
+other block (site, records, materials, analysis, costs...) into the shared top level.  The
+``interventions`` / ``design`` of a wall that gives none are the building's: editing them
+changes them for every such wall.  Only the values that changed are written (the
+difference with the wall's project as shown), so that a save rewrites only them
+(:meth:`BuildingDoc.text`, with :func:`frp_assess.config.yaml_update.update_data_text`).
 """
 
 from __future__ import annotations

@@ -7,8 +7,8 @@ what is typed goes back into the building's data where the key comes from
 the building file, comments kept, rewriting only what changed.  ``ctrl+w`` goes to the list
 of walls; on it ``a`` adds a wall, ``d`` duplicates the one highlighted, ``r`` renames it,
 ``delete`` removes it (names unique: the file's validation's rule and message).  The
-Results tab opens on the building summary of the last ``frp-assess run``.  A one-wall project opens in
-:class:`~frp_assess.tui.app.FrpAssessApp` as before.
+Results tab opens on the building summary of the last ``frp-assess run``.  A one-wall
+project opens in :class:`~frp_assess.tui.app.FrpAssessApp` as before.
 """
 
 from __future__ import annotations

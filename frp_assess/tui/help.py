@@ -33,6 +33,15 @@ the field and the tab is marked **✗**. Derived values update as you type.
 | `ctrl+p` | command palette (save as…, theme, keys) |
 | `q` / `ctrl+q` | quit (asks when there are unsaved changes) |
 
+## A building file (`walls:`)
+
+The list of walls is on the left (`ctrl+w` goes to it; `enter` shows the wall
+highlighted in the tabs). A wall's own keys (wall, loads, its `building:`, its
+options) are saved in its item of `walls:`; the site, records, materials, analysis
+and costs are the building's, for every wall. On the list: `a` add, `d` duplicate,
+`r` rename, `delete` remove a wall (names unique). Run the building with
+`frp-assess run FILE`: its summary is then the Results tab.
+
 ## Fields
 
 Numbers are read as in the YAML file (`0.4`, `1e-3`); optional fields show their
