@@ -34,8 +34,9 @@ def _run_tasks(
 class DaskExecutor:
     """IDA tasks on a Dask cluster: a new ``LocalCluster`` or the scheduler at ``address``.
 
-    Records are scattered once per distinct array (broadcast to every worker); tasks travel in
-    batches of :data:`DASK_BATCH`.
+    Records are scattered once per distinct array (broadcast to every worker; an array first
+    seen in a later :meth:`run` is scattered then, the others stay); tasks travel in batches
+    of :data:`DASK_BATCH`.
     """
 
     def __init__(self, address: str | None = None, n_workers: int | None = None) -> None:
@@ -83,11 +84,13 @@ class DaskExecutor:
             if k not in self._arrays:
                 self._arrays[k] = (np.asarray(t.acc), float(t.dt))
             keys.append(k)
+        # only the new arrays: scattering a dict names the data by its keys, so scattering the
+        # ones already there again (and dropping their futures) released them under the
+        # running tasks ("lost dependencies": a building's second floor, its new motions)
         missing = {k: v for k, v in self._arrays.items() if k not in self._scattered}
         if missing:
-            self._scattered = {}
-            fut = self.client.scatter(self._arrays, broadcast=True, hash=False)
-            self._scattered = {k: fut[k] for k in self._arrays}
+            fut = self.client.scatter(missing, broadcast=True, hash=False)
+            self._scattered.update({k: fut[k] for k in missing})
         batches = [
             list(range(i, min(i + DASK_BATCH, len(tasks))))
             for i in range(0, len(tasks), DASK_BATCH)
