@@ -26,9 +26,10 @@ from frp_assess.assess.assessment_run import governing_histories as governing_hi
 from frp_assess.assess.cache import IdaCache, cache_file, record_digest, task_key
 from frp_assess.assess.from_project import inputs_from_project, load_inputs
 from frp_assess.assess.inputs import UNREINFORCED, AssessmentInputs
-from frp_assess.assess.runner import IdaRunner
+from frp_assess.assess.runner import BatchRunner, IdaRunner
 from frp_assess.assess.seismic import SeismicInput, build_records
 from frp_assess.config import Project
+from frp_assess.dynamics import run_batch
 from frp_assess.errors import Cancelled, InputError
 from frp_assess.io_utils import SOURCE_DATE_EPOCH, read_results_text, source_date
 from frp_assess.motions import ComplianceReport
@@ -107,6 +108,7 @@ def run_assessment(
     pdf: bool = True,
     write: bool = True,
     inputs_digest: str | None = None,
+    batch: BatchRunner | None = None,
 ) -> tuple[AssessmentResult, RunStats]:
     """Run the assessment and write ``out_dir``; returns (results, stats).
 
@@ -116,6 +118,8 @@ def run_assessment(
     still read and filled): how the TUI shows the last run again when it opens a project.
     ``inputs_digest`` is written as results.json's ``inputs_digest`` (:mod:`frp_assess.app.
     rerun`).
+    ``batch``: where the missing IDAs run (default local threads; a building run on Dask passes
+    :func:`~frp_assess.study.run.executor_batch` of its executor).
 
     Finished (case, record) IDAs are cached in ``out_dir/.cache`` as they complete, so a
     cancelled run (:class:`~frp_assess.errors.Cancelled`) loses nothing; result files are
@@ -130,7 +134,9 @@ def run_assessment(
         seismic = build_records(inputs)
         report("records", 1, 1)
     cache = IdaCache(out_dir / CACHE_DIR)
-    runner = IdaRunner(seismic.records, inputs, cache, jobs=jobs, cancel=cancel)
+    runner = IdaRunner(
+        seismic.records, inputs, cache, jobs=jobs, cancel=cancel, batch=batch or run_batch
+    )
     results = assess(
         inputs, seismic, runner, created=created, report=report, case_progress=case_progress
     )

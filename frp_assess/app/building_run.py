@@ -6,7 +6,9 @@ project of that wall writes them) with its own IDA cache ``OUT/walls/<slug>/.cac
 cache key is the wall's model and the record, so an edit of one wall recomputes that wall's
 IDAs only.  The records are prepared once and shared by the walls (the ``seismic`` block is
 the building's).  The walls run one after the other, each with the parallel IDA runner (which
-fills every core).  Then ``OUT/`` receives the building's output set, written by the rules
+fills every core), or, given an executor (``run --executor dask``), with each wall's IDAs on
+that executor (the study's: :class:`~frp_assess.study.executors.DaskExecutor`), the same
+numbers on the same inputs.  Then ``OUT/`` receives the building's output set, written by the rules
 of :mod:`frp_assess.output_set` (checked first, locked, staged and swapped in, never over a
 file the tool did not write): results.json (:class:`~frp_assess.results.building_summary.
 BuildingResults`), results.csv (one row per wall and case) and the building report
@@ -46,6 +48,7 @@ from frp_assess.results.building_summary import BuildingResults, building_result
 from frp_assess.results.json_io import from_json, to_json
 from frp_assess.results.model import AssessmentResult
 from frp_assess.results.run_inputs import ProjectInfo
+from frp_assess.study.run import Executor, executor_batch
 
 __all__ = [
     "WALLS_DIR",
@@ -238,6 +241,7 @@ def run_building(
     created: str | None = None,
     pdf: bool = True,
     reuse: bool = True,
+    executor: Executor | None = None,
 ) -> BuildingRun:
     """Run every wall of ``building`` into ``out_dir/walls/<slug>/`` and, when every wall of
     the file was run, write the building's output set in ``out_dir``.  ``progress`` is each
@@ -246,12 +250,16 @@ def run_building(
 
     ``reuse``: a wall whose folder holds the complete run of its inputs as they are now (the
     digest of :func:`wall_digest` in its sidecar, as an unchanged one-wall ``run``) is read,
-    not run again; a changed wall runs with its IDA cache."""
+    not run again; a changed wall runs with its IDA cache.
+
+    ``executor``: where the walls' missing IDAs run (a :class:`~frp_assess.study.executors.
+    DaskExecutor`; default the local threads of ``jobs``); the caller closes it."""
     created = created or run_date()
     out_dir = Path(out_dir)
     records_of = shared_records()
     outcomes: list[WallOutcome] = []
     records: SeismicInput | None = None
+    batch = None if executor is None else executor_batch(executor)
     with FolderLock(out_dir):
         (out_dir / WALLS_DIR).mkdir(exist_ok=True)
         for i, wall in enumerate(building.walls):
@@ -278,6 +286,7 @@ def run_building(
                 created=created,
                 pdf=pdf,
                 inputs_digest=digest,
+                batch=batch,
             )
             files = referenced_paths(wall.wall.loaded.project)
             write_sidecar(folder, digest, results.created, files, pdf=pdf)

@@ -146,7 +146,14 @@ def assess(
     decided = assess_and_decide(
         inputs,
         runner,
-        IdaRunner(records, inputs, runner.cache, jobs=runner.jobs, cancel=runner.cancel),
+        IdaRunner(
+            records,
+            inputs,
+            runner.cache,
+            jobs=runner.jobs,
+            cancel=runner.cancel,
+            batch=runner.batch,
+        ),
         records,
         models,
         all_results,

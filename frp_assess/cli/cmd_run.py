@@ -21,6 +21,7 @@ from frp_assess.app.rerun import (
     unchanged_run,
     write_sidecar,
 )
+from frp_assess.cli.cmd_study import add_executor_options
 from frp_assess.cli.output import Column, make_console, print_table, user
 from frp_assess.cli.ranking import print_ranking
 from frp_assess.errors import Cancelled, InputError
@@ -77,6 +78,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         default=None,
         help="a building file (walls:): assess only the wall called NAME",
     )
+    add_executor_options(p)  # a building file's walls on Dask (cli/cmd_run_building.py)
     # hidden: fixes results.json's `created` (tests/golden; or SOURCE_DATE_EPOCH, api.run_date)
     p.add_argument("--created", type=iso_date, default=None, help=argparse.SUPPRESS)
     p.set_defaults(handler=run)
@@ -169,6 +171,13 @@ def run(args: argparse.Namespace) -> int:
         from frp_assess.cli.cmd_run_building import run_building_file
 
         return run_building_file(args, path, out)
+    if args.executor != "local" or args.scheduler is not None:
+        flag = "--scheduler" if args.scheduler is not None else "--executor"
+        raise InputError(
+            f"{flag} runs the walls of a building file (walls:) on Dask; {path} is a one-wall "
+            "project: run it without it",
+            key=flag,
+        )
     if args.created is None and (args.jobs is None or args.jobs >= 1):
         same = unchanged_run(path, out, rtol=args.rtol, verify=args.verify, pdf=not args.no_pdf)
         if same is not None:

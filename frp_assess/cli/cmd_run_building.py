@@ -22,6 +22,7 @@ from frp_assess.text_safety import plain
 if TYPE_CHECKING:
     from frp_assess.app.assessment import SeismicInput
     from frp_assess.app.building_run import BuildingInputs, WallInputs
+    from frp_assess.app.study import Executor
 
 
 def _with_options(building: BuildingInputs, args: argparse.Namespace) -> BuildingInputs:
@@ -35,6 +36,17 @@ def _with_options(building: BuildingInputs, args: argparse.Namespace) -> Buildin
             inputs = replace(inputs, verify=True)
         walls.append(replace(w, inputs=inputs))
     return replace(building, walls=tuple(walls))
+
+
+def _executor(args: argparse.Namespace) -> Executor | None:
+    """The Dask executor of ``--executor dask`` / ``--scheduler ADDRESS`` (its ``--jobs``
+    workers on a LocalCluster), or None: the walls on local threads.  Without dask installed:
+    one line, exit 2."""
+    from frp_assess.app.study import make_executor
+
+    if args.executor == "local" and args.scheduler is None:
+        return None
+    return make_executor(args.executor, args.scheduler, args.jobs)
 
 
 def run_building_file(args: argparse.Namespace, path: Path, out: Path) -> int:
@@ -54,6 +66,9 @@ def run_building_file(args: argparse.Namespace, path: Path, out: Path) -> int:
     if (notice := compile_notice()) is not None:
         console.print(notice)
     cancel = threading.Event()
+    executor = _executor(args)
+    if executor is not None:
+        console.print(f"walls' IDAs on {executor.describe()}")
     with ExitStack() as bars:
 
         def records_ready(seismic: SeismicInput) -> None:
@@ -89,10 +104,14 @@ def run_building_file(args: argparse.Namespace, path: Path, out: Path) -> int:
                 created=args.created,
                 pdf=not args.no_pdf,
                 reuse=args.created is None,  # --created (the golden tests): always run
+                executor=executor,
             )
         except KeyboardInterrupt:
             cancel.set()
             raise Cancelled("interrupted") from None
+        finally:
+            if executor is not None:
+                executor.close()
     for outcome in run.walls:
         console.rule(user(f"{outcome.wall.name}: {outcome.wall.folder}/"))
         if outcome.unchanged:

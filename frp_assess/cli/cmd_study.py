@@ -36,6 +36,14 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--out", metavar="DIR", help="results directory (default: <name>-results/ next to FILE)"
     )
     p.add_argument("--jobs", type=int, default=None, help="local worker threads (default: all)")
+    add_executor_options(p)
+    p.add_argument("--no-figures", action="store_true", help="do not write study.pdf")
+    p.set_defaults(handler=run)
+
+
+def add_executor_options(p: argparse.ArgumentParser) -> None:
+    """``--executor local|dask`` and ``--scheduler ADDRESS``: where the IDAs run (``study``,
+    and ``run`` of a building file)."""
     p.add_argument(
         "--executor",
         choices=("local", "dask"),
@@ -45,8 +53,6 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--scheduler", metavar="ADDRESS", help="run on the Dask cluster at ADDRESS (tcp://...)"
     )
-    p.add_argument("--no-figures", action="store_true", help="do not write study.pdf")
-    p.set_defaults(handler=run)
 
 
 def run(args: argparse.Namespace) -> int:

@@ -101,6 +101,10 @@ class Executor(Protocol):
         """Where the IDAs run, in a few words (the study's manifest)."""
         ...  # pragma: no cover
 
+    def close(self) -> None:
+        """Release what it holds (a Dask client and its LocalCluster); the caller's to call."""
+        ...  # pragma: no cover
+
 
 @dataclass
 class LocalExecutor:
