@@ -27,6 +27,12 @@ if TYPE_CHECKING:
 #: The early stop of the sampling (docs/model.md §11): once the ladder points have collapsed
 #: without a break over this ratio of multipliers, the wall is taken as collapsed up to C_max.
 EARLY_STOP_BAND = 1.5
+#: The coarse ladder of the default sampling (docs/model.md §11.2, design (e)): every this many
+#: points of the fine ladder C₀·r^(k+offset), r = ladder_ratio (r^8 ≈ 1.104 for 1.0125); 1:
+#: the plain ladder of :func:`~frp_assess.dynamics.ida_search.next_sample`.
+COARSE_STEPS = 8
+#: The fine ladder starts this ratio below the first collapse found on the coarse one.
+FIRST_COLLAPSE_MARGIN = 1.35
 #: A ladder cell whose ends disagree is walked at this many times the ladder's density before
 #: its changes of outcome are bisected (docs/model.md §11).
 CELL_SUBDIVISIONS = 1
