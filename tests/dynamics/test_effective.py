@@ -192,3 +192,28 @@ def test_the_project_file_sets_every_ida_field(tmp_path) -> None:  # type: ignor
     assert ida_settings.capacity == "first-collapse"
     assert ida_settings.ladder_ratio == 1.2 and ida_settings.offset == 0.25
     assert load_inputs(ROOT / "projects" / "facade-laquila.yaml").ida.capacity == "effective"
+
+
+def test_the_samples_of_a_monotone_record_by_hand() -> None:
+    """The default sampling's time histories (docs/model.md §11.2, design (e); r = 1.0125,
+    offset 0, tolerance 0.5 %, band 1.5), enumerated by hand for a threshold between fine
+    points 100 and 101 (λ* = C₀·r^100.5).  Coarse ladder 0, 8, …, 104 (104 is the first to
+    fall); the fine walk from 104 − ⌈ln 1.35/ln r⌉ = 79 to 103; the collapsed run goes on with
+    a step doubling after each three agreeing points (105, 106, 107 | 109, 111, 113 | 117,
+    121, 125 | 133, 141) and stops at 141, 40 ≥ ⌈ln 1.5/ln r⌉ = 33 fine steps above the run's
+    start 101 (133 is 32 above); the change 100 → 101 follows a long standing run: bisected
+    twice (a gap of 1.25 %, then 0.62 %, then 0.31 % ≤ 0.5 %)."""
+    r = 1.0125
+    star = C0 * r**100.5
+    res = ida(StubModel([(star, math.inf)]), ACC, 0.01, EFFECTIVE)
+    on_grid = {round(math.log(p.multiplier / C0) / math.log(r), 6): p for p in res.curve}
+    ladder_points = sorted(int(k) for k in on_grid if k == int(k))
+    expected = sorted(
+        set(range(0, 105, 8))
+        | set(range(79, 104))
+        | {105, 106, 107, 109, 111, 113, 117, 121, 125, 133, 141}
+    )
+    assert ladder_points == expected
+    between = sorted(p.multiplier for p in res.curve if C0 * r**100 < p.multiplier < C0 * r**101)
+    assert len(between) == 2 and res.runs == len(expected) + 2
+    assert all(p.collapsed == (p.multiplier >= star) for p in res.curve)
