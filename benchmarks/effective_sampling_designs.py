@@ -6,8 +6,9 @@ put the time histories where the collapse windows are (docs/model.md §11.2; iss
 The seven cases of benchmarks/effective_sampling.py.  Every design is driven from Python here,
 one compiled time history per call (:class:`Runner`: the product's compiled sampling given a
 one-point ladder, so each outcome is the product's, bit for bit); the first design is the
-product's default, re-implemented, and the script checks that it returns the product's
-capacities exactly before it measures anything.
+product's default before 2026-11-28 (the plain ladder, ``ida(..., coarse=1)``), the "(e) …
+from 1.35 below" one its default since; the script checks that both return the product's
+capacities to 1e-12 before it measures anything (``--check-only``: on every case, and stop).
 
 1. Per record of the two slender two-sided walls (projects/boundary-wall-records.yaml, where
    §11 (i) fails): a scan at 0.1 % (ladder 1.001, nothing refined, to a collapsed band of 2):
@@ -118,7 +119,7 @@ class Design:
 
 
 def ladder_design(run: Runner, d: Design, off: float) -> Samples:
-    """The product's default sampling (dynamics/ida_search.next_sample, subdivide 1)."""
+    """The product's plain ladder (dynamics/ida_search.next_sample, subdivide 1; ``coarse=1``)."""
     h, out = math.log(d.ratio), []
     prev_x, prev_f, band_start, k = 0.0, False, math.nan, 0
     while (x := (k + off) * h) <= math.log(C_MAX) + 1e-12:
