@@ -134,7 +134,9 @@ def run_design(case: Case, d: Design, pool: ThreadPoolExecutor) -> tuple[list[fl
                 jobs.append(pool.submit(_first_collapse, case.model, acc, dt, d, off))
             else:
                 jobs.append(
-                    pool.submit(ida, case.model, acc, dt, st, band=d.band, subdivide=d.subdivide)
+                    pool.submit(
+                        ida, case.model, acc, dt, st, band=d.band, subdivide=d.subdivide, coarse=1
+                    )
                 )
     res = [j.result() for j in jobs]
     n = len(case.records)
@@ -178,7 +180,7 @@ def fine_scan(case: Case, pool: ThreadPoolExecutor) -> list[str]:
     out = []
     for name, acc, dt in case.records:
         t0 = time.process_time()
-        r = ida(case.model, acc, dt, st, band=2.0)
+        r = ida(case.model, acc, dt, st, band=2.0, coarse=1)
         cpu = time.process_time() - t0
         eff = capacity(r)
         first = r.first_collapse

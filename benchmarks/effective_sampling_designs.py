@@ -6,8 +6,9 @@ put the time histories where the collapse windows are (docs/model.md §11.2; iss
 The seven cases of benchmarks/effective_sampling.py.  Every design is driven from Python here,
 one compiled time history per call (:class:`Runner`: the product's compiled sampling given a
 one-point ladder, so each outcome is the product's, bit for bit); the first design is the
-product's default, re-implemented, and the script checks that it returns the product's
-capacities exactly before it measures anything.
+product's default before 2026-11-28 (the plain ladder, ``ida(..., coarse=1)``), the "(e) …
+from 1.35 below" one its default since; the script checks that both return the product's
+capacities to 1e-12 before it measures anything (``--check-only``: on every case, and stop).
 
 1. Per record of the two slender two-sided walls (projects/boundary-wall-records.yaml, where
    §11 (i) fails): a scan at 0.1 % (ladder 1.001, nothing refined, to a collapsed band of 2):
@@ -75,7 +76,7 @@ class Runner:
         m, f, p, r = self._out
         n, status = sample(
             self.acc, self.dt, self.model.tail_samples(self.dt), self.model.params,
-            np.array([c]), c, 0.1, math.inf, 1, m, f, p, r, _COLLAPSE_FATE,
+            np.array([c]), c, 0.1, math.inf, 1, 1, 0, -1, False, m, f, p, r, _COLLAPSE_FATE,
         )  # fmt: skip
         if n != 1 or status != STATUS_OK:
             raise RuntimeError(f"time history at C = {c} gave status {status}")
@@ -118,7 +119,7 @@ class Design:
 
 
 def ladder_design(run: Runner, d: Design, off: float) -> Samples:
-    """The product's default sampling (dynamics/ida_search.next_sample, subdivide 1)."""
+    """The product's plain ladder (dynamics/ida_search.next_sample, subdivide 1; ``coarse=1``)."""
     h, out = math.log(d.ratio), []
     prev_x, prev_f, band_start, k = 0.0, False, math.nan, 0
     while (x := (k + off) * h) <= math.log(C_MAX) + 1e-12:
@@ -257,20 +258,39 @@ def case_means(case: Case, caps: list[list[float]]) -> list[float]:
     return [statistics.fmean(row[k] for row in caps) * case.model.a_rm for k in range(len(OFFSETS))]
 
 
-def check_replica(case: Case) -> None:
-    """The default re-implemented here returns the product's capacities, bit for bit."""
-    for _, acc, dt in case.records[:3]:
-        for off in (0.0, 0.375):
-            mine, _ = one(case.model, acc, dt, DESIGNS[0], off)
-            res = ida(case.model, acc, dt, IdaSettings(capacity="effective", offset=off))
-            theirs = res.capacity_multiplier / res.c0
-            if abs(mine / theirs - 1.0) > 1e-12:
-                raise SystemExit(f"replica differs: {mine} against the product's {theirs}")
+#: The product's default sampling since 2026-11-28 (frp_assess/dynamics/ida_refine.py).
+DESIGN_E = next(d for d in DESIGNS if d.name == "(e) coarse 1.104, 1.0125 from 1.35 below")
+
+
+def check_replica(case: Case, records: int = 3, offsets: tuple[float, ...] = (0.0, 0.375)) -> None:
+    """The designs re-implemented here return the product's capacities to 1e-12: the plain
+    ladder 1.05 (the product's ``coarse=1``, its default before 2026-11-28) and (e) (today's
+    default, ``capacity: effective`` with nothing else set)."""
+    plain = IdaSettings(capacity="effective", ladder_ratio=DESIGNS[0].ratio)
+    for i, (_, acc, dt) in enumerate(case.records[:records]):
+        for off in offsets:
+            for d, st, coarse in (
+                (DESIGNS[0], replace(plain, offset=off), 1),
+                (DESIGN_E, IdaSettings(capacity="effective", offset=off), 8),
+            ):
+                mine, _ = one(case.model, acc, dt, d, off)
+                res = ida(case.model, acc, dt, st, coarse=coarse)
+                theirs = res.capacity_multiplier / res.c0
+                if abs(mine / theirs - 1.0) > 1e-12:
+                    raise SystemExit(
+                        f"{case.name} record {i} offset {off}: {d.name} gives {mine!r}, the "
+                        f"product {theirs!r}"
+                    )
+                print(f"  replica {case.name[:30]} record {i} offset {off:5.3f} {d.name[:20]}: "
+                      f"{mine:.15f} = {theirs:.15f}")  # fmt: skip
 
 
 def per_record(case: Case, pool: ThreadPoolExecutor) -> None:
     fine = IdaSettings(ladder_ratio=1.001, tolerance=0.1, capacity="effective")
-    scans = [pool.submit(ida, case.model, acc, dt, fine, band=2.0) for _, acc, dt in case.records]
+    scans = [
+        pool.submit(ida, case.model, acc, dt, fine, band=2.0, coarse=1)
+        for _, acc, dt in case.records
+    ]
     caps, _ = measure(case, DESIGNS[0], pool)
     var_case = statistics.pvariance([statistics.fmean(c) for c in zip(*caps, strict=True)])
     print(f"\n{case.name}: per record (0.1 % scan; the default at 8 shifts)")
@@ -307,12 +327,19 @@ def main() -> int:
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--no-records", action="store_true", help="skip the per-record part")
     ap.add_argument(
+        "--check-only", action="store_true", help="only check the replicas against the product"
+    )
+    ap.add_argument(
         "--only", default="", help="the designs whose name contains one of these texts (a|b)"
     )
     args = ap.parse_args()
     cases = project_cases("facade-laquila.yaml", (0, 1, 12))
     cases += project_cases("boundary-wall-records.yaml", (0, 1)) + corpus_cases()
     check_replica(cases[3])
+    if args.check_only:
+        for case in cases[:3] + cases[4:]:
+            check_replica(case, 2, (0.125, 0.625))
+        return 0
     designs = [d for d in DESIGNS if any(o in d.name for o in args.only.split("|"))]
     rows: dict[str, list[tuple[float, float, float]]] = {d.name: [] for d in designs}
     with ThreadPoolExecutor(args.jobs) as pool:

@@ -1,15 +1,18 @@
 """The collapse fraction of a case's records at each intensity of the ladder of the effective
 collapse intensity (docs/model.md §11), and the fragility fitted to it (Baker 2015).
 
-Every record's sampling runs the ladder C₀·r^(k+offset) in order (its transitions refined in
-between); ladder point k of record r is the intensity C₀,r·r^(k+offset)·PGA_r (a_RM·r^(k+offset)
-for every record of a wall at ground level).  Where a record's sampling stopped early (the wall
-had fallen at every ladder point of a band), the points above count as collapsed, as the
-integral of §11 takes them; the levels above the highest any record ran are left out.
+Ladder point k of record r is the intensity C₀,r·r^(k+offset)·PGA_r (a_RM·r^(k+offset) for
+every record of a wall at ground level).  The default sampling runs only some of them (the
+coarse ladder up to the first collapse, the collapsed runs at a longer step, §11.2): a level
+not run takes the outcome of the record's nearest sample in ln C, the midpoint rule of the
+integral (below the first sample the wall stands).  Where a record's sampling stopped early
+(the wall had fallen at every point run over a band), the levels above count as collapsed, as
+the integral of §11 takes them; the levels above the highest any record reached are left out.
 """
 
 from __future__ import annotations
 
+import bisect
 import math
 from collections.abc import Sequence
 
@@ -34,8 +37,7 @@ def collapse_fractions(
     levels: list[np.ndarray] = []  # per record, every ladder level [g]
     for r in results:
         steps = ladder(r.c0, settings.max_multiplier * r.c0, settings.ladder_ratio, settings.offset)
-        ran = {p.multiplier: p.collapsed for p in r.curve}
-        outcomes.append([ran[c] for c in steps if c in ran])
+        outcomes.append(_outcomes_at(steps, [(p.multiplier, p.collapsed) for p in r.curve]))
         levels.append(steps * (r.pga / G))
     top = max(len(o) for o in outcomes)
     if top == 0:
@@ -47,6 +49,28 @@ def collapse_fractions(
         ln_im = [math.log(float(lv[k])) for lv in levels if k < lv.size]
         out.append(CollapseFraction(math.exp(sum(ln_im) / len(ln_im)), fell, len(outcomes)))
     return tuple(out)
+
+
+def _outcomes_at(steps: np.ndarray, samples: Sequence[tuple[float, bool]]) -> list[bool]:
+    """Whether the wall fell at each ladder level up to the highest sample (module docstring:
+    the sample's outcome where it ran, else the nearest sample's in ln C; a tie: the lower)."""
+    pts = sorted(samples)
+    if not pts:
+        return []
+    ln = [math.log(c) for c, _ in pts]
+    out = []
+    for c in steps:
+        if c > pts[-1][0]:
+            break
+        x = math.log(float(c))
+        i = bisect.bisect_left(ln, x)
+        if i < len(pts) and ln[i] == x:
+            out.append(pts[i][1])
+        elif i == 0:
+            out.append(False)  # below the first sample the wall stands
+        else:
+            out.append(pts[i][1] if ln[i] - x < x - ln[i - 1] else pts[i - 1][1])
+    return out
 
 
 def fraction_fragility(fractions: Sequence[CollapseFraction]) -> LognormalFragility | None:

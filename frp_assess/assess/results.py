@@ -47,7 +47,7 @@ from frp_assess.assess.statistics import (
 )
 from frp_assess.assess.verification import NumericalCheck
 from frp_assess.dynamics import IdaSettings, RockingModel
-from frp_assess.dynamics.effective import EARLY_STOP_BAND
+from frp_assess.dynamics.effective import COARSE_STEPS, EARLY_STOP_BAND, FIRST_COLLAPSE_MARGIN
 from frp_assess.motions import G
 from frp_assess.results.checks import KinematicChecks
 from frp_assess.results.model import (
@@ -401,6 +401,8 @@ def build_results(
                 ladder_ratio=inputs.ida.ladder_ratio,
                 offset=inputs.ida.offset,
                 early_stop_band=EARLY_STOP_BAND,
+                coarse_steps=COARSE_STEPS,
+                fine_margin=FIRST_COLLAPSE_MARGIN,
             ),
             target=inputs.target,
             design_value=design_value_rule(len(seismic.records)),

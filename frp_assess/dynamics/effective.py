@@ -3,10 +3,11 @@
     a_c = C₀ · exp( ∫ from ln C₀ to ln C_max of S(C) d(ln C) )
 
 with S = 1 where the wall stands when the scaled record has ended, 0 where it collapsed.
-S is known at the sampled multipliers only (:func:`~frp_assess.dynamics.ida_search.next_sample`
-chooses them); between two samples it is taken as the outcome of the nearer one in ln C (the
-midpoint rule: two samples that agree hold their outcome over the whole gap, two that disagree
-meet halfway, and the sampling has refined every such pair to the bisection tolerance).  Below
+S is known at the sampled multipliers only (by default
+:func:`~frp_assess.dynamics.ida_refine.next_refined` chooses them); between two samples it is
+taken as the outcome of the nearer one in ln C (the midpoint rule: two samples that agree hold
+their outcome over the whole gap, two that disagree meet halfway; the sampling bisects such a
+pair to the tolerance where it follows a run of agreeing samples, docs/model.md §11.2).  Below
 the first sample the wall stands (below C₀ nothing moves); above the last one, its outcome
 holds up to C_max (after the sampling's early stop: collapsed, the shortcut of §11 (ii)).
 """
@@ -27,6 +28,12 @@ if TYPE_CHECKING:
 #: The early stop of the sampling (docs/model.md §11): once the ladder points have collapsed
 #: without a break over this ratio of multipliers, the wall is taken as collapsed up to C_max.
 EARLY_STOP_BAND = 1.5
+#: The coarse ladder of the default sampling (docs/model.md §11.2, design (e)): every this many
+#: points of the fine ladder C₀·r^(k+offset), r = ladder_ratio (r^8 ≈ 1.104 for 1.0125); 1:
+#: the plain ladder of :func:`~frp_assess.dynamics.ida_search.next_sample`.
+COARSE_STEPS = 8
+#: The fine ladder starts this ratio below the first collapse found on the coarse one.
+FIRST_COLLAPSE_MARGIN = 1.35
 #: A ladder cell whose ends disagree is walked at this many times the ladder's density before
 #: its changes of outcome are bisected (docs/model.md §11).
 CELL_SUBDIVISIONS = 1

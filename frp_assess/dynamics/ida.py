@@ -11,10 +11,13 @@ from numpy.typing import NDArray
 
 from frp_assess.dynamics.effective import (
     CELL_SUBDIVISIONS,
+    COARSE_STEPS,
     EARLY_STOP_BAND,
+    FIRST_COLLAPSE_MARGIN,
     effective_capacity,
     ladder,
 )
+from frp_assess.dynamics.ida_refine import new_refined_state, next_refined, refine_steps
 from frp_assess.dynamics.ida_search import (
     LOST_BARS,
     LOST_TIE,
@@ -159,6 +162,7 @@ def ida(
     compiled: bool = True,
     band: float = EARLY_STOP_BAND,
     subdivide: int = CELL_SUBDIVISIONS,
+    coarse: int = COARSE_STEPS,
 ) -> IdaResult:
     """The collapse capacity of ``model`` under the record ``acc`` [m/s²] sampled every dt [s],
     by the rule ``settings.capacity``.
@@ -173,11 +177,14 @@ def ida(
 
     ``effective`` (§11): the effective collapse intensity
     (:func:`~frp_assess.dynamics.effective.effective_capacity`) of the samples that
-    :func:`~frp_assess.dynamics.ida_search.next_sample` chooses: the ladder C₀·r^(k+offset),
+    :func:`~frp_assess.dynamics.ida_refine.next_refined` chooses (§11.2, design (e)): the
+    coarse ladder C₀·r^(8k+offset) up to its first collapse, the fine ladder C₀·r^(k+offset)
+    from 1.35 below that up to C_max or until the wall has fallen at every point run over a
+    band ``band`` (1.5), isolated changes of outcome bisected to the tolerance.  ``coarse``
+    = 1: the plain ladder of :func:`~frp_assess.dynamics.ida_search.next_sample` instead,
     every cell whose ends disagree walked at ``subdivide`` times the density and every change
-    of outcome of that walk bisected to the same tolerance, up to C_max or until the wall has
-    fallen at every ladder point of a band C_k/C_first ≥ ``band`` (``band`` and ``subdivide``:
-    knobs for the measurements of benchmarks/effective_sampling.py).
+    of outcome bisected (``band``, ``subdivide``, ``coarse``: knobs for the measurements of
+    benchmarks/effective_sampling*.py).
 
     ``should_stop`` is polled before the search (its time histories run in one compiled
     call, :func:`~frp_assess.dynamics.ida_search.search` / ``sample``); when it returns True
@@ -214,7 +221,11 @@ def ida(
         steps = np.array(hunt)
     else:
         steps = ladder(c0, c_max, settings.ladder_ratio, settings.offset)
-    plan = _Plan(rule, steps, c0, settings.tolerance, band, subdivide)
+    n_below, band_steps = refine_steps(settings.ladder_ratio, FIRST_COLLAPSE_MARGIN, band)
+    plan = _Plan(
+        rule, steps, c0, settings.tolerance, band, subdivide, coarse, n_below, band_steps,
+        settings.offset > 0.0,
+    )  # fmt: skip
     if compiled and isinstance(model, RockingModel):
         if should_stop is not None and should_stop():
             raise Cancelled("IDA cancelled")
@@ -265,6 +276,10 @@ class _Plan:
     tolerance: float
     band: float
     subdivide: int
+    coarse: int  #: > 1: the default sampling of ida_refine; 1: the plain ladder
+    below: int  #: fine steps of the first collapse's walk below it
+    band_steps: int  #: the early-stop band in fine steps (-1: never)
+    shifted: bool  #: offset > 0
 
 
 def _compiled_search(
@@ -288,7 +303,8 @@ def _compiled_search(
     else:
         n, status = sample(
             acc, float(dt), model.tail_samples(dt), model.params, plan.steps, float(plan.c0),
-            tol, float(plan.band), int(plan.subdivide), multiplier, fate, peak, losses,
+            tol, float(plan.band), int(plan.subdivide), int(plan.coarse), int(plan.below),
+            int(plan.band_steps), bool(plan.shifted), multiplier, fate, peak, losses,
             _COLLAPSE_FATE,
         )  # fmt: skip
     if status != STATUS_OK:
@@ -328,12 +344,26 @@ def _search_in_python(
     points: list[IdaPoint] = []
     modes: dict[float, FailureMode | None] = {}
     c_lo, c_hi = 0.0, math.nan
-    state = new_state()
+    refined = plan.rule == "effective" and plan.coarse > 1
+    state = new_refined_state(plan.steps.size, plan.coarse) if refined else new_state()
     collapsed = False
 
     def following() -> float:
         if plan.rule == "first-collapse":
             return float(next_multiplier(plan.steps, plan.tolerance, len(points), c_lo, c_hi))
+        if refined:
+            return float(
+                next_refined(
+                    plan.steps,
+                    plan.tolerance,
+                    plan.coarse,
+                    plan.below,
+                    plan.band_steps,
+                    plan.shifted,
+                    state,
+                    collapsed,
+                )  # fmt: skip
+            )
         return float(
             next_sample(
                 plan.steps, plan.c0, plan.tolerance, plan.band, plan.subdivide, state, collapsed

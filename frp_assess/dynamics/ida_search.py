@@ -21,6 +21,7 @@ import math
 import numpy as np
 from numba import njit
 
+from frp_assess.dynamics.ida_refine import new_refined_state, next_refined
 from frp_assess.dynamics.kernel import Buffers, Ground, KernelParams, Outcome, simulate
 from frp_assess.dynamics.kernel import params as kp
 
@@ -299,22 +300,31 @@ def sample(
     tolerance: float,
     band: float,
     subdivide: int,
+    coarse: int,
+    below: int,
+    band_steps: int,
+    shifted: bool,
     multiplier: np.ndarray,
     fate: np.ndarray,
     peak: np.ndarray,
     losses: np.ndarray,
     collapse_fate: np.ndarray,
 ) -> tuple[int, int]:
-    """Every time history of the effective collapse intensity's sampling (:func:`next_sample`),
-    stored and returned as :func:`search` does."""
+    """Every time history of the effective collapse intensity's sampling, stored and returned
+    as :func:`search` does: with ``coarse`` > 1 the default one of
+    :func:`~frp_assess.dynamics.ida_refine.next_refined` (``below``, ``band_steps``,
+    ``shifted``), else the plain ladder of :func:`next_sample` (``band``, ``subdivide``)."""
     quiet = running_max_abs(acc)
     h = np.empty(1)  # the history arrays of the driver: not written (no history here)
     buffers = Buffers(h, h, h, np.zeros(2), np.zeros(2, dtype=np.int64))
-    st = new_state()
+    st = new_refined_state(ladder.shape[0], coarse) if coarse > 1 else new_state()
     n = 0
     collapsed = False
     while True:
-        c = next_sample(ladder, c0, tolerance, band, subdivide, st, collapsed)
+        if coarse > 1:
+            c = next_refined(ladder, tolerance, coarse, below, band_steps, shifted, st, collapsed)
+        else:
+            c = next_sample(ladder, c0, tolerance, band, subdivide, st, collapsed)
         if math.isnan(c):
             return n, kp.STATUS_OK
         if n >= multiplier.shape[0]:

@@ -250,15 +250,17 @@ IDA_CAPACITY: Option[CapacityRule] = Option(
     "collapse the hunt meets, the paper's convention, §5)",
     choices=CAPACITY_RULES,
 )
-#: The ladder of the effective collapse intensity: chosen with benchmarks/effective_sampling.py
-#: (docs/model.md §11.2): at 1.05 the case means of the bundled example move by ≤ 1.02 % (one
-#: standard deviation) over eight shifts of the ladder, at 1.10 by up to 2.5 %.
+#: The fine ladder of the effective collapse intensity's sampling, design (e) of
+#: benchmarks/effective_sampling_designs.py (docs/model.md §11.2): the coarse ladder is its 8th
+#: power (1.104), the fine one runs from 1.35 below the first collapse; over the seven cases of
+#: §11.2 the case means move by ≤ 1.31 % (one standard deviation) over eight shifts.
 IDA_LADDER_RATIO: Option[float] = Option(
     key="ladder_ratio",
     flag="--ladder-ratio",
-    default=1.05,
-    help="Ratio r of the ladder of the effective capacity, C = C0*r^(k+offset), each change "
-    "of outcome between two steps bisected to the tolerance (closer to 1: less numerical "
+    default=1.0125,
+    help="Ratio r of the fine ladder of the effective capacity, C = C0*r^(k+offset): the "
+    "coarse ladder r^8 runs up to the first collapse, the fine one from a band below it, each "
+    "isolated change of outcome bisected to the tolerance (closer to 1: less numerical "
     "spread, more runs)",
     low=1.001,
     high=1.5,

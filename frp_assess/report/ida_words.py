@@ -36,14 +36,18 @@ def method_paragraphs(results: Results, lang: Lang) -> list[str]:
     if not is_effective(results):
         return [lang.t("method.ida"), lang.t("ida.first_collapse.rule", s=lang.gnum(ida.step_ratio),
                                              tol=lang.gnum(ida.tolerance))]  # fmt: skip
+    coarse = ida.coarse_steps > 1  # the default sampling of docs/model.md §11.2, design (e)
     return [
         lang.t("ida.effective.what", cmax=lang.gnum(ida.max_multiplier)),
         lang.t(
-            "ida.effective.sampling",
+            "ida.effective.sampling.coarse" if coarse else "ida.effective.sampling",
             r=lang.gnum(ida.ladder_ratio),
             offset=lang.gnum(ida.offset),
             tol=lang.gnum(ida.tolerance),
             band=lang.gnum(ida.early_stop_band),
+            every=str(ida.coarse_steps),
+            rc=lang.num(ida.ladder_ratio**ida.coarse_steps, 3),
+            margin=lang.gnum(ida.fine_margin),
         ),  # fmt: skip
         lang.t("ida.effective.first"),
         spread_text(results, lang),
@@ -54,13 +58,16 @@ def settings_value(results: Results, lang: Lang) -> str:
     """The analysis-settings row of the IDA: its sampling, with the run's numbers."""
     ida = results.model.ida
     eff = is_effective(results)
+    key = "model.ida.value.effective" if eff else "model.ida.value"
     return lang.t(
-        "model.ida.value.effective" if eff else "model.ida.value",
+        key + ".coarse" if eff and ida.coarse_steps > 1 else key,
         s=lang.gnum(ida.ladder_ratio if eff else ida.step_ratio),
         tol=lang.gnum(ida.tolerance),
         cmax=lang.gnum(ida.max_multiplier),
         offset=lang.gnum(ida.offset),
         band=lang.gnum(ida.early_stop_band),
+        sc=lang.num(ida.ladder_ratio**ida.coarse_steps, 3),
+        margin=lang.gnum(ida.fine_margin),
     )
 
 

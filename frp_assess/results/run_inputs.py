@@ -78,7 +78,10 @@ class IdaSettingsResult:
     first collapse, the paper's convention, §5); ``ladder_ratio`` r and ``offset``: the
     ladder of §11, C₀·r^(k+offset) [-]; ``early_stop_band``: the ladder stops once the wall
     has fallen at every step over this ratio of multipliers [-] (§11.2; a file written before
-    it was recorded ran with 1.5)."""
+    it was recorded ran with 1.5); ``coarse_steps`` and ``fine_margin``: the default sampling
+    of §11.2 (design (e)) runs the coarse ladder r^coarse_steps up to the first collapse and
+    the fine one from fine_margin below it (1: the plain ladder r, every change bisected; a
+    file written before they were recorded ran it)."""
 
     step_ratio: float
     tolerance: float
@@ -87,6 +90,8 @@ class IdaSettingsResult:
     ladder_ratio: float = 1.05
     offset: float = 0.0
     early_stop_band: float = 1.5
+    coarse_steps: int = 1
+    fine_margin: float = 1.35
 
 
 @dataclass(frozen=True)

@@ -70,7 +70,8 @@ def test_fractions_count_the_ladder_points_and_the_early_stop_as_collapsed() -> 
     fr = collapse_fractions([a, b], st)
     assert [f.collapsed for f in fr] == [0, 0, 1, 0, 2, 2]
     assert all(f.records == 2 for f in fr)
-    assert [f.intensity for f in fr] == pytest.approx([1.0 / G * 1.05**k for k in range(6)])
+    r = st.ladder_ratio
+    assert [f.intensity for f in fr] == pytest.approx([1.0 / G * r**k for k in range(6)])
     fit = fraction_fragility(fr)
     assert fit is not None and fit.method == "binomial-mle"
     assert collapse_fractions([a, b], st) == fr
@@ -81,6 +82,19 @@ def test_fractions_count_the_ladder_points_and_the_early_stop_as_collapsed() -> 
         )
         == ()
     )
+
+
+def test_a_level_not_run_takes_the_nearest_sample() -> None:
+    """The default sampling runs the coarse ladder (every 8th level) below its first collapse:
+    a level it skipped takes the outcome of the nearest sample in ln C (the midpoint rule of
+    the integral).  By hand: samples at levels 0 (stands), 9 (falls), 10 (stands); levels 1–4
+    are nearer level 0 (stand), 5–8 nearer level 9 (fall); none above the last sample."""
+    st = IdaSettings(capacity="effective")
+    steps = ladder(1.0, st.max_multiplier, st.ladder_ratio, st.offset)
+    curve = tuple(IdaPoint(float(steps[k]), k == 9, 0.5) for k in (0, 9, 10))
+    res = IdaResult(2.0, 1.0, None, None, None, 3, None, curve, capacity="effective")
+    fr = collapse_fractions([res], st)
+    assert [f.collapsed for f in fr] == [0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 0]
 
 
 def test_a_collapse_window_at_the_demand() -> None:

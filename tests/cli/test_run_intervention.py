@@ -17,7 +17,7 @@ from frp_assess.cli import main
 
 ROOT = Path(__file__).resolve().parents[2]
 #: the golden small wall (tests/golden/projects/small.yaml) with the IDA's target raised to
-#: 7: its unreinforced ζ_E is 3.27 and the option's 5.96 (tests/golden/expected/small)
+#: 7: its unreinforced ζ_E is 4.31 and the option's 6.07 (tests/golden/expected/small)
 PROJECT = (ROOT / "tests" / "golden" / "projects" / "small.yaml").read_text(encoding="utf-8")
 TARGET_7 = PROJECT.replace(
     "analysis:\n  ida:", "analysis:\n  target: 7.0\n  ida:"
@@ -33,10 +33,10 @@ def run(tmp_path: Path, name: str, code_check: str) -> dict:
 
 
 def test_an_improvement_passes_what_an_upgrade_fails(tmp_path: Path) -> None:
-    """As an upgrade (the default) the option's IDA ζ_E 5.96 < 7 fails, and so does the
-    wall as it is (3.27 < 7): nothing is recommended.  As an improvement of a class II
+    """As an upgrade (the default) the option's IDA ζ_E 6.07 < 7 fails, and so does the
+    wall as it is (4.31 < 7): nothing is recommended.  As an improvement of a class II
     building the option must reach the unreinforced mechanism's ζ_E + 0.1 on every deciding
-    check: 3.27 + 0.1 = 3.37 ≤ 5.96 (IDA), ≤ 551 (SLV), ≤ 1249 (SLC): it passes and is
+    check: 4.31 + 0.1 = 4.41 ≤ 6.07 (IDA), ≤ 551 (SLV), ≤ 1249 (SLC): it passes and is
     recommended; the wall as it is still fails (it is judged by the assessment)."""
     up = run(tmp_path, "upgrade", "")
     assert up["intervention"]["category"] == "upgrade"
@@ -53,7 +53,7 @@ def test_an_improvement_passes_what_an_upgrade_fails(tmp_path: Path) -> None:
     assert urm["passes"] is False and imp["retrofit_required"] is True
     assert option["passes"] is True and imp["recommended"] == option["name"]
     ida = option["deciding_checks"][0]
-    assert ida["margin"] == pytest.approx(5.9646 / block["required_zeta"], rel=1e-4)
+    assert ida["margin"] == pytest.approx(6.0659 / block["required_zeta"], rel=1e-4)
     assert "§8.4.2" in imp["decision_rule"]
 
 
@@ -101,9 +101,9 @@ def test_the_use_class_of_the_site_and_of_code_check_must_agree(
 def test_design_mode_searches_the_category_s_target(tmp_path: Path) -> None:
     """Design mode walks the grid up to the first ratio meeting what the category asks: as
     an upgrade the IDA's ζ_E must reach the target 7 (the golden small wall's 1 ‰ gives
-    5.96: a larger ratio); as an improvement of class II it must reach 3.27 + 0.1 = 3.37,
+    6.07: a larger ratio); as an improvement of class II it must reach 4.31 + 0.1 = 4.41,
     which a smaller ratio does.  Each answer passes the decision; the improvement's is the
-    smaller and its ζ_E lies between 3.37 and 7."""
+    smaller and its ζ_E lies between 4.41 and 7."""
     design = "design: {materials: [GFRP], positions: [external], ratio_range: [0.1, 2.1], "
     design += "resolution: 0.2}\n"
     up = run(tmp_path, "design-upgrade", design)["design"][0]
