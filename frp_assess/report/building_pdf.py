@@ -10,55 +10,30 @@ from typing import Any
 
 from reportlab.lib.units import mm
 from reportlab.pdfgen.canvas import Canvas
-from reportlab.platypus import BaseDocTemplate, Frame, PageTemplate
+from reportlab.platypus import BaseDocTemplate
 
 from frp_assess.io_utils import atomic_path
 from frp_assess.report import render_pdf
 from frp_assess.report import styles as st
 from frp_assess.report.building_document import building_document, words
 from frp_assess.report.doc_model import Document
-from frp_assess.report.pdf_document import NumberedCanvas, pdf_date
+from frp_assess.report.pdf_document import A4Template, NumberedCanvas, pdf_date
 from frp_assess.report.render_docx import write_docx
 from frp_assess.report.render_pdf import fit
 from frp_assess.results.building_summary import BuildingResults
-from frp_assess.text_safety import pdf_plain
 
 __all__ = ["build_building_docx", "build_building_pdf"]
 
 
-class _BuildingTemplate(BaseDocTemplate):
+class _BuildingTemplate(A4Template):
     """A4 portrait, one frame, the document's header (its title, left; the report's kind,
     right) and footer."""
 
     def __init__(self, filename: str, document: Document, subject: str, creator: str) -> None:
-        super().__init__(
-            filename,
-            pagesize=st.PAGE_SIZE,
-            leftMargin=st.MARGIN_X,
-            rightMargin=st.MARGIN_X,
-            topMargin=st.MARGIN_TOP,
-            bottomMargin=st.MARGIN_BOTTOM,
-            title=pdf_plain(document.title),
-            author=pdf_plain(document.author),
-            subject=subject,
-            creator=pdf_plain(creator),
-            invariant=1,
-            initialFontName=st.FONT,
-            initialFontSize=st.BODY_SIZE,
-        )
         self.document = document
-        frame = Frame(
-            self.leftMargin,
-            self.bottomMargin,
-            self.width,
-            self.height,
-            id="body",
-            leftPadding=0,
-            rightPadding=0,
-            topPadding=0,
-            bottomPadding=0,
+        super().__init__(
+            filename, title=document.title, author=document.author, subject=subject, creator=creator
         )
-        self.addPageTemplates([PageTemplate(id="page", frames=[frame], onPage=self._decorate)])
 
     def _decorate(self, canv: Canvas, doc: BaseDocTemplate) -> None:
         w, h = st.PAGE_SIZE

@@ -76,12 +76,14 @@ class NumberedCanvas(Canvas):
         self.drawRightString(st.PAGE_SIZE[0] - st.MARGIN_X, 10 * mm, text)
 
 
-class ReportTemplate(BaseDocTemplate):
-    """A4 portrait, one frame, header and footer, PDF outline from the section headings."""
+class A4Template(BaseDocTemplate):
+    """A4 portrait, one body frame within the report's margins, the PDF's metadata as plain
+    text and invariant (a rebuild is byte-identical); a subclass draws each page's header
+    and footer in :meth:`_decorate`."""
 
-    def __init__(self, filename: str, results: AssessmentResult) -> None:
-        p = results.project
-        self.document = document_head(results)
+    def __init__(
+        self, filename: str, *, title: str, author: str, subject: str, creator: str
+    ) -> None:
         super().__init__(
             filename,
             pagesize=st.PAGE_SIZE,
@@ -89,15 +91,14 @@ class ReportTemplate(BaseDocTemplate):
             rightMargin=st.MARGIN_X,
             topMargin=st.MARGIN_TOP,
             bottomMargin=st.MARGIN_BOTTOM,
-            title=pdf_plain(self.document.title),
-            author=pdf_plain(p.engineer or ""),
-            subject=_lang(results).t("doc.subject"),
-            creator=pdf_plain(f"frp-assess {results.software.version}"),
+            title=pdf_plain(title),
+            author=pdf_plain(author),
+            subject=subject,
+            creator=pdf_plain(creator),
             invariant=1,
             initialFontName=st.FONT,
             initialFontSize=st.BODY_SIZE,
         )
-        self.results = results
         frame = Frame(
             self.leftMargin,
             self.bottomMargin,
@@ -110,6 +111,24 @@ class ReportTemplate(BaseDocTemplate):
             bottomPadding=0,
         )
         self.addPageTemplates([PageTemplate(id="page", frames=[frame], onPage=self._decorate)])
+
+    def _decorate(self, canv: Canvas, doc: BaseDocTemplate) -> None:
+        raise NotImplementedError
+
+
+class ReportTemplate(A4Template):
+    """A4 portrait, one frame, header and footer, PDF outline from the section headings."""
+
+    def __init__(self, filename: str, results: AssessmentResult) -> None:
+        self.document = document_head(results)
+        super().__init__(
+            filename,
+            title=self.document.title,
+            author=results.project.engineer or "",
+            subject=_lang(results).t("doc.subject"),
+            creator=f"frp-assess {results.software.version}",
+        )
+        self.results = results
         self._outline = 0
 
     def _decorate(self, canv: Canvas, doc: BaseDocTemplate) -> None:
