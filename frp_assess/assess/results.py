@@ -240,9 +240,17 @@ def below_collapse(collapse: float, survivor: float | None, tolerance: float) ->
     return survivor if survivor is not None else collapse * (1.0 - tolerance)
 
 
-def code_check_result(check: KinematicCheck, mass: float, above_ground: bool = False) -> CodeCheck:
+def code_check_result(
+    check: KinematicCheck, mass: float, above_ground: bool = False, tie_options: bool = False
+) -> CodeCheck:
     """The linear check of results.json (of the unreinforced wall's model); ``above_ground``:
-    its demand is a_Z/q."""
+    its demand is a_Z/q; ``tie_options``: some option adds a tie, whose α0 counts it."""
+    same_alpha0 = (
+        "Passive unbonded bars carry no load at rest, so α0 is the same for every bars option; "
+        "a tie option's α0 counts its tie at its capacity (the internal work L_i of eq. C8.7.1.1). "
+        if tie_options
+        else "Passive unbonded bars carry no load at rest, so α0 is the same for every option. "
+    )
     at_height = (
         " Above ground the demand is a_Z/q, a_Z the peak acceleration of the floor at the "
         "wall's base (Circolare 2019 eq. C7.2.7, first mode; §C8.7.1.2.1.7)."
@@ -261,9 +269,10 @@ def code_check_result(check: KinematicCheck, mass: float, above_ground: bool = F
         ratio=check.ratio,
         passed=check.passed,
         note="α0 = a_RM/g of the model the IDA runs (its moment balance about the corner, the "
-        "reaction of the compressed zone at the base included). Passive unbonded bars carry no "
-        "load at rest, so α0 is the same for every option. A supporting check: the IDA and "
-        "the time-history checks decide." + at_height,
+        "reaction of the compressed zone at the base included). "
+        + same_alpha0
+        + "A supporting check: the IDA and the time-history checks decide."
+        + at_height,
     )
 
 
@@ -418,7 +427,10 @@ def build_results(
         records=records,
         compliance=compliance_result(seismic),
         code_check=code_check_result(
-            check, inputs.wall.mass, above_ground=inputs.building is not None
+            check,
+            inputs.wall.mass,
+            above_ground=inputs.building is not None,
+            tie_options=any(o.tie is not None for o in inputs.options),
         ),
         cases=tuple(cases),
         ranking_rule=RANKING_RULE.format(target=inputs.target),

@@ -47,7 +47,7 @@ def ranking_row(case: CaseResult, target: float, lang: Lang) -> list[str]:
         case_label(case, lang),
         case.material or lang.t("ax.tie" if case.tie is not None else "ax.none"),
         DASH if case.position is None else position_words(case.position, lang, short=True),
-        permille(case.ratio, lang),
+        DASH if case.material is None else permille(case.ratio, lang),
         n(case.frp_mass_per_m, 1),
         n(case.frp_mass, 1),
         n(case.option_cost, 0, grouping=True),

@@ -107,7 +107,9 @@ def as_is(results: Results, lang: Lang) -> list[Block]:
             )
         )
     )
-    out.append(markup(lang.t("as_is.linear_note"), "small"))
+    ties = any(c.tie is not None for c in results.options)
+    tie_words = lang.t("as_is.linear_note.ties", section=lang.t("h.retrofit.ties")) if ties else ""
+    out.append(markup(lang.t("as_is.linear_note", ties=tie_words), "small"))
     kc = results.kinematic_checks
     if kc is not None and kc.cases:
         out.append(markup(lang.t("as_is.checks", lines=_checks_lines(kc.cases[0], lang))))
@@ -142,7 +144,7 @@ def _ranking_table(results: Results, lang: Lang, limit: int = 12) -> TableData:
                 c.name,
                 c.material or "—",
                 position_words(c.position, lang, short=True),
-                n(c.ratio, 2),
+                "—" if c.material is None else n(c.ratio, 2),
                 _bound(n(c.design_a_dyn, 3), lb),
                 _bound(n(c.capacity_demand, 2), lb),
                 _bound(n(c.improvement, 2), lb),

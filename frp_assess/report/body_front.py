@@ -106,6 +106,11 @@ def introduction(results: Results, lang: Lang) -> list[Block]:
                 wall=esc(p.name or lang.t("title.unnamed")),
                 location=esc(p.location) if p.location else lang.t("intro.no_location"),
                 n_options=len(results.options),
+                kinds=lang.t(
+                    "intro.kinds.ties"
+                    if any(c.tie is not None for c in results.options)
+                    else "intro.kinds.bars"
+                ),
             )
         )
     )
