@@ -74,7 +74,13 @@ def _ranking(results: Results, lang: Lang) -> list[Block]:
     widths = [12, 22, 11, 14, 8, 11, 11, 11, 14, 12, 16, 15, 15]  # rank: "dropped"
     out.append(grid(data, [x * mm for x in widths], wrap=(1, 2, 3, 12), small=True, numeric_from=4,
                     highlight_rows=hl))  # fmt: skip
-    key = "ax.rank.caption.compliant" if results.input_code_compliant else "ax.rank.caption.not"
+    key = (
+        "ax.rank.caption.not"
+        if not results.input_code_compliant
+        else "ax.rank.caption.compliant"
+        if results.retrofit_required
+        else "ax.rank.caption.optional"
+    )
     out.append(markup(lang.t("ax.rank.caption", highlighted=lang.t(key)), "caption"))
     for c in results.options:  # dropped by the pivot check: no rank, the reason here
         if c.pivot is not None and c.pivot.dropped:

@@ -232,3 +232,34 @@ def test_optional_margin_is_not_called_the_verdict(results, code: str) -> None:
         assert keeps[code] in text, (name, code)
     if name == "norcia":  # the example this was seen on
         assert rob.survives and not r.retrofit_required
+
+
+@pytest.mark.parametrize("code", ["en", "it"])
+def test_the_ranking_caption_names_the_highlighted_row_as_the_decision_does(
+    results, code: str
+) -> None:
+    """The annex's ranking table highlights results.json's `recommended` row; its caption
+    names it as the decision does: the recommended option when a retrofit is required, the
+    cheapest option for extra margin when the wall passes as it is (Norcia: it read
+    "the recommended option" under "no retrofit is needed"), the best ranked when the input
+    is not code-compliant."""
+    name, r0 = results
+    r = in_language(r0, code)
+    text = "\n".join(blocks(r)[0])
+    said = {
+        "recommended": {
+            "en": "Highlighted: the recommended option.",
+            "it": "Evidenziata: la soluzione raccomandata.",
+        },
+        "optional": {
+            "en": "Highlighted: the cheapest option for extra margin",
+            "it": "Evidenziata: la soluzione più economica per un margine maggiore",
+        },
+    }
+    if r.input_code_compliant and r.retrofit_required:
+        assert said["recommended"][code] in text, (name, code)
+    elif r.input_code_compliant:
+        assert said["optional"][code] in text, (name, code)
+        assert said["recommended"][code] not in text, (name, code)
+    if name == "norcia":  # the example this was seen on
+        assert not r.retrofit_required
