@@ -67,20 +67,22 @@ class NearNode:
     distance: float
 
 
-def _grid_text() -> bytes:
+def packaged_text(file: str, what: str, sha256: str) -> bytes:
+    """The packaged data file ``frp_assess/data/<file>`` (gzip), decompressed and checked
+    against its SHA-256; ``what`` names it in the one-line :class:`GridDataError` a missing,
+    corrupt or changed file gives."""
     try:
-        raw = resources.files("frp_assess").joinpath("data", GRID_FILE).read_bytes()
+        raw = resources.files("frp_assess").joinpath("data", file).read_bytes()
     except OSError as exc:
         raise GridDataError(
-            f"the NTC hazard grid frp_assess/data/{GRID_FILE} is missing ({exc}); reinstall "
-            "frp-assess"
+            f"{what} frp_assess/data/{file} is missing ({exc}); reinstall frp-assess"
         ) from None
     text = gzip.decompress(raw)
     digest = hashlib.sha256(text).hexdigest()
-    if digest != GRID_SHA256:
+    if digest != sha256:
         raise GridDataError(
-            f"the NTC hazard grid frp_assess/data/{GRID_FILE} is corrupt or was changed: "
-            f"SHA-256 {digest}, expected {GRID_SHA256}; reinstall frp-assess"
+            f"{what} frp_assess/data/{file} is corrupt or was changed: SHA-256 {digest}, "
+            f"expected {sha256}; reinstall frp-assess"
         )
     return text
 
@@ -89,7 +91,12 @@ def _grid_text() -> bytes:
 def load_grid() -> HazardGrid:
     """The packaged grid, read and checked once (:class:`GridDataError` if it is not the
     file of this version)."""
-    table = np.loadtxt(io.BytesIO(_grid_text()), delimiter=",", comments="#", skiprows=8)
+    table = np.loadtxt(
+        io.BytesIO(packaged_text(GRID_FILE, "the NTC hazard grid", GRID_SHA256)),
+        delimiter=",",
+        comments="#",
+        skiprows=8,
+    )
     if table.shape != (GRID_NODES, 2 + 3 * len(GRID_RETURN_PERIODS)):
         raise GridDataError(f"the NTC hazard grid has shape {table.shape}")  # pragma: no cover
     table.setflags(write=False)

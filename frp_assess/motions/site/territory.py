@@ -26,19 +26,16 @@ the nearest border may not be the country the site is in (Monaco, Croatia).
 from __future__ import annotations
 
 import functools
-import gzip
-import hashlib
 import io
 import math
 from dataclasses import dataclass
-from importlib import resources
 
 import numpy as np
 
 from frp_assess import libm
 from frp_assess.errors import InputError
 from frp_assess.motions.site.formulas import EARTH_RADIUS_KM
-from frp_assess.motions.site.grid import GridDataError
+from frp_assess.motions.site.grid import packaged_text
 
 OUTLINE_FILE = "italy_outline.csv.gz"
 #: SHA-256 of the uncompressed text of :data:`OUTLINE_FILE` (printed by the script)
@@ -94,31 +91,15 @@ class Placement:
     neighbour: str
 
 
-def _outline_text() -> bytes:
-    try:
-        raw = resources.files("frp_assess").joinpath("data", OUTLINE_FILE).read_bytes()
-    except OSError as exc:
-        raise GridDataError(
-            f"Italy's outline frp_assess/data/{OUTLINE_FILE} is missing ({exc}); reinstall "
-            "frp-assess"
-        ) from None
-    text = gzip.decompress(raw)
-    digest = hashlib.sha256(text).hexdigest()
-    if digest != OUTLINE_SHA256:
-        raise GridDataError(
-            f"Italy's outline frp_assess/data/{OUTLINE_FILE} is corrupt or was changed: "
-            f"SHA-256 {digest}, expected {OUTLINE_SHA256}; reinstall frp-assess"
-        )
-    return text
-
-
 @functools.cache
 def load_outline() -> Outline:
     """The packaged outline, read and checked once (:class:`GridDataError` if it is not the
     file of this version)."""
     rows = [
         line.split(",")
-        for line in io.StringIO(_outline_text().decode("ascii"))
+        for line in io.StringIO(
+            packaged_text(OUTLINE_FILE, "Italy's outline", OUTLINE_SHA256).decode("ascii")
+        )
         if line.strip() and not line.startswith("#")
     ][1:]  # the column names
     ring = np.array([int(r[0]) for r in rows])
