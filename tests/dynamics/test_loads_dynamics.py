@@ -159,3 +159,45 @@ def test_a_loaded_walls_capacity_does_not_move_with_the_integration_tolerance(
             for tol in (1e-6, 1e-8)
         ]  # fmt: skip
         assert c[1] == pytest.approx(c[0], rel=0.005), (seed, c)
+
+
+#: a tie that yields without losing its anchorage: the capacity moves by 1.2-2.0 % from 1e-6
+#: to 1e-8, converged from 1e-7 on (seeds 0 and 1 of this test; measured 2026-11-28);
+#: an open defect of the tie's plastic bookkeeping, kept failing here until it is found
+YIELDING = pytest.param(
+    math.inf,
+    id="yielding",
+    marks=pytest.mark.xfail(
+        strict=True,
+        reason="a yielding tie's capacity moves 1.2-2.0 % with a 100x tighter tolerance",
+    ),
+)
+
+
+@pytest.mark.parametrize("anchorage", [pytest.param(13.3e3, id="brittle"), YIELDING])
+@pytest.mark.parametrize("capacity", ["first-collapse", "effective"])
+def test_a_tied_walls_capacity_does_not_move_with_the_integration_tolerance(
+    capacity: str, anchorage: float
+) -> None:
+    """The same façade held by a steel tie at 5.5 m (Ø20 S235 every 3 m, 8 m long: k_t =
+    E_s·A_s/(L_t·i_t) = 2.75 MN/m per m, F_y = 24.6 kN/m; its anchorage lost at 13.3 kN/m, or
+    never): its yield, unloading, slack and loss are events located inside the step, so a
+    100× tighter integration tolerance (1e-6 → 1e-8) moves no record's capacity by more than
+    the IDA's bisection tolerance (0.5 %), with either capacity rule."""
+    from frp_assess.dynamics import IdaSettings, ida
+    from frp_assess.dynamics.loads import Tie
+    from tests.conftest import synthetic_record
+
+    area, spacing, length = math.pi * 0.010**2, 3.0, 8.0
+    tie = Tie(5.5, 210e9 * area / (length * spacing), 235e6 * area / spacing, anchorage)
+    loads = Loads(top=tuple(TopLoad(p, d, c) for p, d, c in TOP), ties=(tie,))
+    wall = Wall(B, H, W_UNIT, 2e6)
+    settings = IdaSettings(capacity=capacity)  # type: ignore[arg-type]
+    for seed in range(3):
+        acc = synthetic_record(seed, duration=8.0)
+        c = [
+            ida(RockingModel(wall, "one-sided", None, ModelOptions(tolerance=tol), loads), acc,
+                0.01, settings).capacity_multiplier
+            for tol in (1e-6, 1e-8)
+        ]  # fmt: skip
+        assert c[1] == pytest.approx(c[0], rel=0.005), (seed, c)
