@@ -102,6 +102,16 @@ def history_length(n_input: int, dt: float, collapse_mode: int) -> int:
     return n_input + int(math.ceil(MAX_FREE_VIBRATION / dt)) + 1
 
 
+@njit(cache=True, nogil=True, inline="always")
+def reached(x: float, dt: float, h_min: float) -> float:
+    """The time x [s] into the sample interval after a step or an event, snapped to the sample
+    dt when less than ``h_min`` is left: x + (dt − x) can fall an ulp short of dt, and a step
+    of 1e-18 s on that sliver was no step at all — its dense output is round-off, in which a
+    yielding tie found a spurious turning point and stopped the wall (θ' set to 0), and the
+    next step proposal started from 5e-18 s."""
+    return dt if dt - x < h_min else x
+
+
 @njit(cache=True, nogil=True)
 def simulate(
     ground: Ground,
@@ -220,7 +230,7 @@ def simulate(
                         omega = om1
                         a1 = a_end
                         need_a = not ctl.adaptive  # RK4 gives no end acceleration
-                    x = x + hh
+                    x = reached(x + hh, dt, ctl.h_min)
                     now = t_i + min(x, dt)
                 else:
                     # --- an event inside the step: locate it on the integrator, jump, restart
@@ -241,7 +251,7 @@ def simulate(
                     last_alpha_up = alpha_x_crossing(
                         y0, level, t_i + x, tau, prm.alpha_x, last_alpha_up
                     )
-                    x = x + tau
+                    x = reached(x + tau, dt, ctl.h_min)
                     now = t_i + x
                     theta, omega, r = jump(event, level, om_e, r, prm)
                     need_a = True
