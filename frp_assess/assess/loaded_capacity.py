@@ -105,10 +105,16 @@ class LoadedCapacityCurve(CapacityCurve):
         return self._displacement(self.rupture_rotation)
 
     def a_at(self, d: float) -> float:
-        """a(d) [m/s²], each component still holding at the displacement of its loss."""
-        return spectral_acceleration(
-            self.multiplier(rotation_at(d / self.ratio, self.wall)), self.e_star, self.fc
-        )
+        """a(d) [m/s²], each component still holding at the displacement of its loss (the
+        value just before it breaks, as :meth:`CapacityCurve.a_at`).  Whether a component
+        holds is decided on d, not on the rotation: θ(d) of a loss's own displacement can come
+        back an ulp beyond the loss, and d_SLV at a tie's loss then read the curve after it
+        (the bare wall's a, a secant period 4× too long)."""
+        theta = rotation_at(d / self.ratio, self.wall)
+        for event in (self.rupture_rotation, *self.tie_losses):
+            if d <= self._displacement(event):
+                theta = min(theta, event)
+        return spectral_acceleration(self.multiplier(theta), self.e_star, self.fc)
 
     @property
     def rupture_limit(self) -> float:

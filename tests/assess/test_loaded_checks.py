@@ -193,6 +193,14 @@ def test_tie_on_the_capacity_curve_and_in_d0() -> None:
     assert brittle.multiplier(loss, after=True) == pytest.approx(floor.multiplier(loss), rel=1e-12)
     # the loss drops the capacity by more than 50 % of its largest value: d_SLV stops there
     assert brittle.rupture_limit == pytest.approx(brittle._displacement(loss), rel=1e-12)
+    # at d_SLV the tie still holds (the value just before its loss, as for a bar rupture):
+    # α = (hold + F_a/i_t·h_t·cos θ)/drive at the loss, F_a/i_t = 10 kN/m
+    c, s = math.cos(loss), math.sin(loss)
+    hold = 43.2e3 * (0.2 * c - 3.0 * s) + 10e3 * (0.3 * c - 6.0 * s) + 10e3 * 5.8 * c
+    drive = 43.2e3 * (3.0 * c + 0.2 * s) + 10e3 * (6.0 * c + 0.3 * s)
+    a_loss = hold / drive * G / (brittle.e_star * FC_LC1)
+    assert brittle.a_at(brittle.rupture_limit) == pytest.approx(a_loss, rel=1e-9)
+    assert brittle.a_at(brittle.rupture_limit * (1.0 + 1e-9)) < 0.5 * a_loss
 
 
 def test_case_checks_with_loads_without_the_kernel() -> None:
