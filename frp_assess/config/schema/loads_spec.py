@@ -156,8 +156,8 @@ class WallLoadsSpec(_Model):
 
     def problem(self, thickness: float, height: float) -> tuple[str, tuple[str | int, ...]] | None:
         """The first load outside the wall, as (message, location inside ``loads``): a line of
-        action outside the thickness, a thrust or a tie above the top, a fourth tie level (the
-        time histories hold three); ``None`` if all fit."""
+        action outside the thickness, a thrust or a tie above the top, a third tie level (the
+        time histories hold two); ``None`` if all fit."""
         for i, p in enumerate(self.top):
             if p.distance > thickness:
                 return (
