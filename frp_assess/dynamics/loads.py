@@ -20,12 +20,18 @@ wall's own numbers, bit for bit (s·sin α, cos α, −cos α, s·sin α, p²): 
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import NamedTuple
 
 from frp_assess.dynamics.wall import Wall
 from frp_assess.motions.record import G
-from frp_assess.rules.tie_rods import ONE_TIE_LEVEL, same_tie_level, tie_anchorage_force
+from frp_assess.rules.tie_rods import (
+    MAX_TIE_LEVELS,
+    TIE_LEVELS_RULE,
+    tie_anchorage_force,
+    tie_level_of_each,
+)
 from frp_assess.rules.wall_loads import Thrust, TopLoad, lever
 
 
@@ -70,37 +76,68 @@ class Loads:
 NO_LOADS = Loads()
 
 
-def tie_level(loads: Loads) -> Tie | None:
-    """The one tie level the time histories model (docs/model.md §12), or None without a tie.
+def tie_levels(loads: Loads) -> tuple[Tie, ...]:
+    """The tie levels the time histories model (docs/model.md §12), in the order of the ties;
+    () without a tie.
 
-    A tie that carries nothing (k_t, F_y or F_a zero) is no tie.  Several ties are summed when
-    they act as one (:func:`~frp_assess.rules.tie_rods.same_tie_level`: at the same height,
-    yielding and losing their anchorage at the same elongations; the usual row of equal ties,
-    or two rows of the same steel and length).  Others are refused with one line (the project
-    file's check refuses them first: config/schema/loads_spec.py).
+    A tie that carries nothing (k_t, F_y or F_a zero) is no tie.  Ties that act as one
+    (:func:`~frp_assess.rules.tie_rods.same_tie_level`: at the same height, yielding and
+    losing their anchorage at the same elongations; the usual row of equal ties, or two rows
+    of the same steel and length) are summed into one level; more than MAX_TIE_LEVELS levels
+    are refused with one line (the project file's check refuses them first:
+    config/schema/loads_spec.py).
     """
     ties = [
         t
         for t in loads.ties
         if t.stiffness > 0.0 and t.yield_force > 0.0 and t.anchorage_force > 0.0
     ]
-    if not ties:
-        return None
-    first = ties[0]
-    for t in ties[1:]:
-        if not same_tie_level(_numbers(first), _numbers(t)):
-            raise ValueError(
-                f"the time histories model one tie level: {ONE_TIE_LEVEL}; found ties at "
-                f"{first.height:g} m and {t.height:g} m yielding at "
-                f"{first.yield_force / first.stiffness * 1e3:.4g} mm and "
-                f"{t.yield_force / t.stiffness * 1e3:.4g} mm"
+    of_each = tie_level_of_each([_numbers(t) for t in ties])
+    count = max(of_each, default=-1) + 1
+    if count > MAX_TIE_LEVELS:
+        raise ValueError(f"the time histories model {TIE_LEVELS_RULE}; found {count} levels")
+    levels = []
+    for j in range(count):
+        group = [t for t, level in zip(ties, of_each, strict=True) if level == j]
+        levels.append(
+            Tie(
+                group[0].height,
+                sum(t.stiffness for t in group),
+                sum(t.yield_force for t in group),
+                sum(t.anchorage_force for t in group),
             )
-    return Tie(
-        first.height,
-        sum(t.stiffness for t in ties),
-        sum(t.yield_force for t in ties),
-        sum(t.anchorage_force for t in ties),
-    )
+        )
+    return tuple(levels)
+
+
+class TieConstants(NamedTuple):
+    """The ties' fields of :class:`~frp_assess.dynamics.kernel.params.KernelParams`
+    (docs/model.md §12)."""
+
+    tie_on: bool
+    tie_count: int
+    tie_height: tuple[float, float]
+    tie_kn: tuple[float, float]
+    tie_yield: tuple[float, float]
+    tie_theta_loss: tuple[float, float]
+
+
+def tie_constants(wall: Wall, levels: tuple[Tie, ...]) -> TieConstants:
+    """The kernel's constants of the tie levels: each one's height, k_t·h_t/(W·R), the yield
+    elongation F_y/k_t and the rotation where a brittle tie (F_a ≤ F_y) is lost; the entries
+    beyond the wall's levels (all of them without a tie) are numbers that are never read."""
+    if len(levels) > MAX_TIE_LEVELS or MAX_TIE_LEVELS != 2:
+        raise ValueError(f"the kernel holds 2 tie levels, got {len(levels)}")
+    height, kn, yields, losses = [1.0] * 2, [0.0] * 2, [math.inf] * 2, [math.inf] * 2
+    for j, tie in enumerate(levels):
+        h, k = tie.height, tie.stiffness
+        height[j], kn[j], yields[j] = h, k * h / (wall.weight * wall.R), tie.yield_force / k
+        if tie.anchorage_force <= tie.yield_force and tie.anchorage_force < k * h:
+            losses[j] = math.asin(tie.anchorage_force / (k * h))
+    return TieConstants(
+        bool(levels), len(levels), (height[0], height[1]), (kn[0], kn[1]),
+        (yields[0], yields[1]), (losses[0], losses[1]),
+    )  # fmt: skip
 
 
 def _numbers(t: Tie) -> tuple[float, float, float, float]:

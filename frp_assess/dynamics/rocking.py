@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field, replace
 from functools import cached_property
-from typing import Literal, NamedTuple
+from typing import Literal
 
 import numpy as np
 from numpy.typing import NDArray
@@ -14,7 +14,7 @@ from frp_assess.dynamics.base_reaction import PIVOT_RULES, BaseReaction, PivotRu
 from frp_assess.dynamics.kernel import Buffers, Ground, history_length, simulate
 from frp_assess.dynamics.kernel import params as kp
 from frp_assess.dynamics.kernel.fate import loaded_tipping_angle, tipping_angle
-from frp_assess.dynamics.loads import NO_LOADS, Loads, Tie, side_terms, tie_level
+from frp_assess.dynamics.loads import NO_LOADS, Loads, side_terms, tie_constants, tie_levels
 from frp_assess.dynamics.options import (
     COLLAPSE,
     COLLAPSE_RULES,
@@ -192,7 +192,8 @@ class RockingResult:
     rejected_steps: int  #: steps the error control rejected
     history: History | None = field(default=None, repr=False)
     tie_lost: bool = False  #: the tie's anchorage failed (docs/model.md §12)
-    tie_plastic_elongation: float = 0.0  #: the tie's δ_p at the end [m] (0 without a tie)
+    #: each tie level's δ_p at the end [m] (:func:`~.loads.tie_levels`; () without a tie)
+    tie_plastic_elongations: tuple[float, ...] = ()
 
     @property
     def collapsed(self) -> bool:
@@ -204,6 +205,11 @@ class RockingResult:
     def failure_mode(self) -> FailureMode | None:
         """How the wall failed (``None``: it did not collapse)."""
         return failure_mode_of(self.fate, bool(self.ruptures), self.tie_lost)
+
+    @property
+    def tie_plastic_elongation(self) -> float:
+        """The largest plastic elongation of a tie level at the end [m] (0 without a tie)."""
+        return max(self.tie_plastic_elongations, default=0.0)
 
 
 @dataclass(frozen=True)
@@ -297,9 +303,9 @@ class RockingModel:
         k_bar = self.K
         sin_a, cos_a = math.sin(alpha), math.cos(alpha)
         loads = self.loads
-        tie = tie_level(loads)
+        ties = tie_levels(loads)
         # a tie that carries nothing is no tie: the wall alone, bit for bit
-        loaded = bool(loads.top or loads.thrusts) or tie is not None
+        loaded = bool(loads.top or loads.thrusts or ties)
         pos = side_terms(wall, loads, 1, sin_a, cos_a)
         neg = side_terms(wall, loads, -1, sin_a, cos_a)
         e_wall = self.impact_velocity_ratio
@@ -353,7 +359,7 @@ class RockingModel:
             e_to_neg=e_neg,
             alpha_x_neg=base.alpha_x,
             tip_bar_neg=math.nan,
-            **_tie_params(wall, tie)._asdict(),
+            **tie_constants(wall, ties)._asdict(),
             # the bound on the bounces that surely die out is written for the wall alone
             settle_chatter=not loaded,
         )
@@ -451,31 +457,8 @@ class RockingModel:
             rejected_steps=int(out.rejected),
             history=hist,
             tie_lost=bool(out.tie_lost),
-            tie_plastic_elongation=float(out.tie_plastic),
+            tie_plastic_elongations=tuple(float(v) for v in out.tie_plastic[: prm.tie_count]),
         )
-
-
-class _TieConstants(NamedTuple):
-    """The tie's fields of :class:`~.kernel.params.KernelParams` (docs/model.md §12)."""
-
-    tie_on: bool
-    tie_height: float
-    tie_kn: float
-    tie_yield: float
-    tie_theta_loss: float
-
-
-def _tie_params(wall: Wall, tie: Tie | None) -> _TieConstants:
-    """The kernel's constants of the tie: its height, k_t·h_t/(W·R), the yield elongation
-    F_y/k_t and the rotation where a brittle tie (F_a ≤ F_y) is lost; no tie: off, and
-    numbers that are never read."""
-    if tie is None:
-        return _TieConstants(False, 1.0, 0.0, math.inf, math.inf)
-    h, k = tie.height, tie.stiffness
-    loss = math.inf
-    if tie.anchorage_force <= tie.yield_force and tie.anchorage_force < k * h:
-        loss = math.asin(tie.anchorage_force / (k * h))
-    return _TieConstants(True, h, k * h / (wall.weight * wall.R), tie.yield_force / k, loss)
 
 
 def _with_loads(prm: kp.KernelParams, one_sided: bool) -> kp.KernelParams:

@@ -16,6 +16,7 @@ Sources: Circolare 2019 §C8.7.1.2 (the tie's work in the kinematic analysis); E
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
 #: f_y of S235 steel, the usual steel of existing and new ties (EN 10025-2) [Pa].
 DEFAULT_YIELD_STRENGTH = 235e6
@@ -112,10 +113,14 @@ def tie_elongations(
     return yield_force / stiffness, loss
 
 
-#: What the time histories need of several ties (docs/model.md §12), for the messages.
-ONE_TIE_LEVEL = (
-    "ties at the same height whose steel yields and whose anchorage fails at the same "
-    "elongation (the same f_y·L_t/E_s and F_a·L_t/(E_s·A_s))"
+#: Tie levels the time histories hold (docs/model.md §12): ties at different heights, or
+#: yielding or losing their anchorage at different elongations, are different levels.
+MAX_TIE_LEVELS = 2
+#: What the time histories need of several ties, for the messages.
+TIE_LEVELS_RULE = (
+    f"at most {MAX_TIE_LEVELS} tie levels; ties at the same height whose steel yields and "
+    "whose anchorage fails at the same elongation (the same f_y·L_t/E_s and F_a·L_t/(E_s·A_s)) "
+    "are one level"
 )
 #: Relative difference below which two ties' heights and elongations are the same [-].
 SAME_LEVEL = 1e-9
@@ -127,7 +132,7 @@ def same_tie_level(
     """Whether two ties, each (h_t [m], k_t [N/m per m], F_y [N/m], F_a/i_t [N/m]), act as one
     and may be summed [-]: at the same height, yielding and losing their anchorage at the same
     elongations
-    (:func:`tie_elongations`).  The time histories hold one tie level (docs/model.md §12)."""
+    (:func:`tie_elongations`): one level of the time histories (docs/model.md §12)."""
 
     def close(x: float, y: float) -> bool:
         if math.isinf(x) or math.isinf(y):
@@ -136,3 +141,21 @@ def same_tie_level(
 
     ea, eb = tie_elongations(*a[1:]), tie_elongations(*b[1:])
     return close(a[0], b[0]) and close(ea[0], eb[0]) and close(ea[1], eb[1])
+
+
+def tie_level_of_each(ties: Sequence[tuple[float, float, float, float]]) -> list[int]:
+    """The level of each tie, each (h_t [m], k_t [N/m per m], F_y [N/m], F_a/i_t [N/m]): 0
+    for the first tie and every tie that acts as one with it (:func:`same_tie_level`), then
+    1 for the next tie that does not, and so on, in the order given: the tie levels of the
+    time histories (docs/model.md §12)."""
+    firsts: list[tuple[float, float, float, float]] = []
+    levels = []
+    for t in ties:
+        for j, first in enumerate(firsts):
+            if same_tie_level(first, t):
+                levels.append(j)
+                break
+        else:
+            firsts.append(t)
+            levels.append(len(firsts) - 1)
+    return levels

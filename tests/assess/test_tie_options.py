@@ -113,16 +113,23 @@ def test_the_options_model_is_the_walls_with_the_tie_in_its_loads() -> None:
     assert ties[0] == loaded.model_for(None).loads.ties[0]
 
 
-def test_a_tie_option_at_another_level_than_the_walls_own_tie_is_refused() -> None:
-    """The time histories hold one tie level (docs/model.md §12): an option's tie at 5.5 m on
-    a wall whose own tie is at 5.8 m is refused with one located line, not a traceback."""
-    with_catena = PROJECT.replace(
-        "    top: [{name: floor, load: 10.0, distance: 0.3}]\n",
-        "    top: [{name: floor, load: 10.0, distance: 0.3}]\n"
-        "    ties: [{height: 5.8, diameter: 16, spacing: 4.0, length: 8.0}]\n",
+def test_a_tie_option_at_another_level_than_the_walls_own_ties() -> None:
+    """The time histories hold two tie levels (docs/model.md §12): an option's tie at 5.5 m
+    on a wall whose own tie is at 5.8 m is a second level, both in the option's model; on a
+    wall with ties at two other heights it is refused with one located line, not a
+    traceback."""
+    own = "    ties: [{height: 5.8, diameter: 16, spacing: 4.0, length: 8.0}]\n"
+    floor = "    top: [{name: floor, load: 10.0, distance: 0.3}]\n"
+    loaded = _inputs(PROJECT.replace(floor, floor + own))
+    heights = [t.height for t in loaded.model_for(loaded.options[0]).loads.ties]
+    assert heights == [5.8, 5.5]
+    two = (
+        "    ties: ["
+        + ", ".join(f"{{height: {h}, diameter: 16, spacing: 4.0, length: 8.0}}" for h in (5.8, 4.0))
+        + "]\n"
     )
-    with pytest.raises(InputError, match=r"interventions\[0\].*one tie level.*5\.8 m"):
-        _inputs(with_catena)
+    with pytest.raises(InputError, match=r"interventions\[0\].*at most 2 tie levels.*level 3"):
+        _inputs(PROJECT.replace(floor, floor + two))
 
 
 def test_static_alpha0_of_a_tie_option_by_hand() -> None:

@@ -85,16 +85,19 @@ REFUSED: list[tuple[str, str, str, int, str]] = [
         "wall.loads.ties[0]",
     ),
     (
-        # the time histories hold one tie level: a second tie lower down is refused
-        "two-tie-levels",
+        # the time histories hold two tie levels: a third height is refused
+        "three-tie-levels",
         _sub(
             "length: 8.0}\n",
-            "length: 8.0}\n      - {name: low, height: 3.0, diameter: 20, spacing: 3.0, "
-            "length: 8.0}\n",
+            "length: 8.0}\n"
+            + "".join(
+                f"      - {{name: t{h}, height: {h}, diameter: 20, spacing: 3.0, length: 8.0}}\n"
+                for h in (2.0, 3.0)
+            ),
         ),
-        "the time histories model one tie level: ties at the same height",
-        15,
-        "wall.loads.ties[1]",
+        "the time histories model at most 2 tie levels; ties at the same height",
+        16,
+        "wall.loads.ties[2]",
     ),
     (
         "inertia-unknown",
@@ -140,13 +143,19 @@ def test_ties_are_in_the_time_histories_without_a_warning(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     """The time histories model the tie (docs/model.md §12): validate accepts it silently,
-    and two rows of the same tie at the same height (one level) too."""
+    two rows of the same tie at the same height (one level) too, and a floor tie below the
+    eaves tie (a second level)."""
     doubled = _sub(
         "length: 8.0}\n",
         "length: 8.0}\n      - {name: second row, height: 5.8, diameter: 16, spacing: 2.0, "
         "length: 8.0}\n",
     )
-    for text in (BASE, doubled):
+    floor_tie = _sub(
+        "length: 8.0}\n",
+        "length: 8.0}\n      - {name: floor tie, height: 3.0, diameter: 20, spacing: 3.0, "
+        "length: 8.0}\n",
+    )
+    for text in (BASE, doubled, floor_tie):
         code, err = _validate(tmp_path, text, capsys)
         assert code == 0, err
         assert "tie" not in err and "time histories" not in err, err

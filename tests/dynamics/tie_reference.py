@@ -40,6 +40,7 @@ class TiedResult:
     plastic: float  #: δ_p at the end [m]
     lost: bool
     plastic_work: float  #: Σ F_y·Δδ_p [J/m]
+    plastic_by_tie: tuple[float, ...] = ()  #: δ_p of each tie at the end [m]
 
 
 def _force(tie: RefTie, mode: str, theta: float, dp: float) -> float:
@@ -53,7 +54,7 @@ def _force(tie: RefTie, mode: str, theta: float, dp: float) -> float:
 
 def tied_rocking(
     wall: LoadedWall,
-    tie: RefTie,
+    tie: RefTie | Sequence[RefTie],
     duration: float,
     times: np.ndarray,
     theta0: float = 0.0,
@@ -64,23 +65,26 @@ def tied_rocking(
 ) -> TiedResult:
     """θ(t) at ``times`` from (θ0, θ'0) under ü_g = ``ground(t)`` [m/s²] (smooth between the
     instants ``breaks``, where the integration restarts), the wall rocking first on
-    ``side0``; two-sided impacts by angular momentum."""
+    ``side0``; two-sided impacts by angular momentum.  ``tie``: one tie, or several (each
+    with its own state and δ_p; the result's ``plastic`` is the largest δ_p, ``plastic_by_tie``
+    each, ``lost`` whether any was lost)."""
+    ties = (tie,) if isinstance(tie, RefTie) else tuple(tie)
     out = np.full(times.shape, np.nan)
     t0, y0 = 0.0, np.array([theta0, omega0])
     side = side0
-    mode = ELASTIC
-    dp = 0.0
+    modes = [ELASTIC] * len(ties)
+    dps = [0.0] * len(ties)
     work = 0.0
-    h, k = tie.height, tie.stiffness
     while t0 < duration:
 
         def rhs(
-            t: float, y: np.ndarray, s: int = side, m: str = mode, d: float = dp
+            t: float, y: np.ndarray, s: int = side, m: tuple = tuple(modes), d: tuple = tuple(dps)
         ) -> list[float]:
             th = float(y[0])
             moment = s * wall.moment(s * th, s, ground(t))
             if s > 0:
-                moment -= _force(tie, m, th, d) * h * math.cos(th)
+                for tj, mj, dj in zip(ties, m, d, strict=True):
+                    moment -= _force(tj, mj, th, dj) * tj.height * math.cos(th)
             return [float(y[1]), moment / wall.inertia(s)]
 
         def cross(_t: float, y: np.ndarray) -> float:
@@ -94,28 +98,32 @@ def tied_rocking(
 
         fall.terminal = True  # type: ignore[attr-defined]
         events = [cross, fall]
-        names = ["impact", "fall"]
-        if side > 0 and mode != LOST:
+        names: list[tuple[str, int]] = [("impact", -1), ("fall", -1)]
+        if side > 0:
+            for j, (tj, mode, dp) in enumerate(zip(ties, modes, dps, strict=True)):
+                h, k = tj.height, tj.stiffness
 
-            def stretch(_t: float, y: np.ndarray, d: float = dp) -> float:
-                return h * math.sin(float(y[0])) - d
+                def stretch(y: np.ndarray, h: float = h, d: float = dp) -> float:
+                    return h * math.sin(float(y[0])) - d
 
-            if mode == SLACK:
-                engage = _event(lambda t, y: stretch(t, y), +1)
-                events.append(engage)
-                names.append("engage")
-            elif mode == ELASTIC:
-                events.append(_event(lambda t, y: stretch(t, y) - tie.yield_force / k, +1))
-                names.append("yield")
-                if math.isfinite(tie.anchorage):
-                    events.append(_event(lambda t, y: k * stretch(t, y) - tie.anchorage, +1))
-                    names.append("loss")
-                if dp > 0.0:
-                    events.append(_event(lambda t, y: stretch(t, y), -1))
-                    names.append("slack")
-            else:
+                if mode == SLACK:
+                    events.append(_event(lambda _t, y, f=stretch: f(y), +1))
+                    names.append(("engage", j))
+                elif mode == ELASTIC:
+                    fy = tj.yield_force / k
+                    events.append(_event(lambda _t, y, f=stretch, fy=fy: f(y) - fy, +1))
+                    names.append(("yield", j))
+                    if math.isfinite(tj.anchorage):
+                        fa = tj.anchorage
+                        loss = _event(lambda _t, y, f=stretch, k=k, fa=fa: k * f(y) - fa, +1)
+                        events.append(loss)
+                        names.append(("loss", j))
+                    if dp > 0.0:
+                        events.append(_event(lambda _t, y, f=stretch: f(y), -1))
+                        names.append(("slack", j))
+            if YIELD in modes:
                 events.append(_event(lambda _t, y: float(y[1]), -1))
-                names.append("unload")
+                names.append(("unload", -1))
         t_stop = min([b for b in breaks if b > t0] + [duration])
         sol = solve_ivp(
             rhs, (t0, t_stop), y0, method="DOP853", rtol=1e-12, atol=1e-14,
@@ -131,34 +139,37 @@ def tied_rocking(
         if sol.status != 1:
             break
         hit = next(i for i, te in enumerate(sol.t_events) if te.size)
-        name = names[hit]
+        name, which = names[hit]
         th, om = (float(v) for v in sol.y_events[hit][0])
         if name == "fall":
             break
-        if mode == YIELD:  # the plastic elongation reached so far
-            new_dp = h * math.sin(th) - tie.yield_force / k
-            work += tie.yield_force * (new_dp - dp)
-            dp = new_dp
+        for j, tj in enumerate(ties):
+            if modes[j] == YIELD:  # the plastic elongation reached so far
+                new_dp = tj.height * math.sin(th) - tj.yield_force / tj.stiffness
+                work += tj.yield_force * (new_dp - dps[j])
+                dps[j] = new_dp
         if name == "impact":
             side = -side
             om *= wall.impact_ratio(side)
             th = 0.0
-            if mode != LOST:
-                mode = SLACK if dp > 0.0 else ELASTIC
+            modes = [
+                m if m == LOST else (SLACK if d > 0.0 else ELASTIC)
+                for m, d in zip(modes, dps, strict=True)
+            ]
         elif name == "engage":
-            mode = ELASTIC
+            modes[which] = ELASTIC
         elif name == "yield":
-            mode = YIELD
+            modes[which] = YIELD
         elif name == "unload":
-            mode = ELASTIC
+            modes = [ELASTIC if m == YIELD else m for m in modes]
             om = 0.0
         elif name == "slack":
-            mode = SLACK
+            modes[which] = SLACK
         elif name == "loss":
-            mode = LOST
+            modes[which] = LOST
         y0 = np.array([th, om])
         t0 = t_end
-    return TiedResult(out, dp, mode == LOST, work)
+    return TiedResult(out, max(dps), LOST in modes, work, tuple(dps))
 
 
 def _event(f, direction: int):  # type: ignore[no-untyped-def]

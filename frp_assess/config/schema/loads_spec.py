@@ -14,9 +14,10 @@ from pydantic import Field, model_validator
 
 from frp_assess.config.schema.spec_base import Number, _Model, located_error
 from frp_assess.rules.tie_rods import (
-    ONE_TIE_LEVEL,
-    same_tie_level,
+    MAX_TIE_LEVELS,
+    TIE_LEVELS_RULE,
     tie_anchorage_force,
+    tie_level_of_each,
     tie_stiffness,
     tie_yield_force,
 )
@@ -155,8 +156,8 @@ class WallLoadsSpec(_Model):
 
     def problem(self, thickness: float, height: float) -> tuple[str, tuple[str | int, ...]] | None:
         """The first load outside the wall, as (message, location inside ``loads``): a line of
-        action outside the thickness, a thrust or a tie above the top, ties that do not act as
-        one level (the time histories hold one); ``None`` if all fit."""
+        action outside the thickness, a thrust or a tie above the top, a third tie level (the
+        time histories hold two); ``None`` if all fit."""
         for i, p in enumerate(self.top):
             if p.distance > thickness:
                 return (
@@ -177,11 +178,11 @@ class WallLoadsSpec(_Model):
                     f"{t.height:g}",
                     ("ties", i, "height"),
                 )
-        for i, t in enumerate(self.ties[1:], start=1):
-            if not same_tie_level(self.ties[0].per_metre(), t.per_metre()):
+        of_each = tie_level_of_each([t.per_metre() for t in self.ties])
+        for i, level in enumerate(of_each):
+            if level >= MAX_TIE_LEVELS:
                 return (
-                    f"the time histories model one tie level: {ONE_TIE_LEVEL}; this tie "
-                    "differs from the first",
+                    f"the time histories model {TIE_LEVELS_RULE}; this tie is a level {level + 1}",
                     ("ties", i),
                 )
         return None

@@ -38,7 +38,7 @@ from frp_assess.config.schema.spec_base import (
     option_name,
 )
 from frp_assess.config.schema.wall_spec import BuildingSpec, WallSpec
-from frp_assess.rules.tie_rods import ONE_TIE_LEVEL, same_tie_level
+from frp_assess.rules.tie_rods import MAX_TIE_LEVELS, TIE_LEVELS_RULE, tie_level_of_each
 
 
 # --------------------------------------------------------------------------------- project
@@ -177,8 +177,8 @@ class Project(_Model):
                 )
 
     def _check_tie_heights(self) -> None:
-        """A tie option's tie is on the wall: 0 < height <= H, and at the level of the wall's own
-        ties if it has any (the time histories hold one tie level, docs/model.md §12)."""
+        """A tie option's tie is on the wall, 0 < height <= H, and with the wall's own ties makes
+        at most MAX_TIE_LEVELS tie levels (the time histories' limit, docs/model.md §12)."""
         height = float(self.wall.height)
         existing = () if self.wall.loads is None else self.wall.loads.ties
         for i, item in enumerate(self.interventions):
@@ -196,11 +196,11 @@ class Project(_Model):
                     f"{tie.height:g}",
                     *loc,
                 )
-            if existing and not same_tie_level(existing[0].per_metre(), tie.per_metre()):
+            levels = tie_level_of_each([t.per_metre() for t in (*existing, tie)])
+            if levels[-1] >= MAX_TIE_LEVELS:
                 raise located_error(
-                    f"the time histories model one tie level: {ONE_TIE_LEVEL}; this option's "
-                    f"tie differs from the wall's own at {existing[0].height:g} m "
-                    "(wall.loads.ties)",
+                    f"the time histories model {TIE_LEVELS_RULE}; with the wall's own ties "
+                    f"(wall.loads.ties) this option's tie is a level {levels[-1] + 1}",
                     *loc[:-1],
                 )
 

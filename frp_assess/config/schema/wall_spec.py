@@ -105,8 +105,8 @@ class WallSpec(_Model):
         return self
 
     def _check_loads(self, loads: WallLoadsSpec) -> None:
-        """Loads outside the wall, several ties that are not one level, and thrusts that tip
-        it without an earthquake, refused."""
+        """Loads outside the wall, more tie levels than the time histories hold, and thrusts
+        that tip it without an earthquake, refused."""
         if (problem := loads.problem(self.thickness, self.height)) is not None:
             message, where = problem
             raise located_error(message, "loads", *where)

@@ -29,6 +29,8 @@ from frp_assess.dynamics.kernel.state import (
     Regime,
     acting_bar,
     rocking_on,
+    tie_down_level,
+    tie_up_level,
     with_bars,
     with_tie,
 )
@@ -238,30 +240,39 @@ def jump(
         omega, intact_pos, intact_neg = rupture(omega, r.s, r.intact_pos, r.intact_neg, prm)
         return theta, omega, with_bars(r, intact_pos, intact_neg)
     if event == TIE_UP or event == TIE_DOWN or event == TIE_TURN:
-        return theta, omega, tie_jump(event, theta, r, prm)
+        return theta, omega, tie_jump(event, level, theta, r, prm)
     return theta, omega, r
 
 
 @njit(cache=True, nogil=True, inline="always")
-def tie_jump(event: int, theta: float, r: Regime, prm: KernelParams) -> Regime:
-    """The tie's new state at its ``event`` (a step_scan code) at θ > 0 (docs/model.md §12);
-    θ and θ' do not jump.
+def tie_jump(event: int, level: float, theta: float, r: Regime, prm: KernelParams) -> Regime:
+    """The ties' new states at their ``event`` (a step_scan code) at s·θ = ``level`` > 0
+    (docs/model.md §12): every tie level whose own event is at that level changes; θ and θ'
+    do not jump.
 
     Upward: a slack tie is re-engaged (elastic); an elastic one yields at F_y, or is lost when
     its force reaches F_a < F_y (it carries nothing afterwards: its elastic energy
     ½·k_t·(δ − δ_p)² leaves with it, θ' is kept).  Downward: it goes slack.  At the turning
-    point while it yields it unloads, elastic, with δ_p = h_t·sin θ − F_y/k_t.
+    point every level that yields unloads, elastic, with δ_p = h_t·sin θ − F_y/k_t.
     """
-    if event == TIE_DOWN:
-        return with_tie(r, TIE_SLACK, r.tie_dp, prm)
-    if event == TIE_TURN:
-        dp = max(r.tie_dp, prm.tie_height * math.sin(theta) - prm.tie_yield)
-        return with_tie(r, TIE_ELASTIC, dp, prm)
-    if r.tie == TIE_SLACK:
-        return with_tie(r, TIE_ELASTIC, r.tie_dp, prm)
-    if r.tie_yield < prm.tie_theta_loss:
-        return with_tie(r, TIE_YIELD, r.tie_dp, prm)
-    return with_tie(r, TIE_LOST, r.tie_dp, prm)
+    for j in range(prm.tie_count):
+        state = r.tie[j]
+        dp = r.tie_dp[j]
+        if event == TIE_DOWN:
+            if tie_down_level(r, j) == level:
+                r = with_tie(r, j, TIE_SLACK, dp, prm)
+        elif event == TIE_TURN:
+            if state == TIE_YIELD:
+                dp = max(dp, prm.tie_height[j] * math.sin(theta) - prm.tie_yield[j])
+                r = with_tie(r, j, TIE_ELASTIC, dp, prm)
+        elif tie_up_level(r, j, prm) == level:
+            if state == TIE_SLACK:
+                r = with_tie(r, j, TIE_ELASTIC, dp, prm)
+            elif r.tie_yield[j] < prm.tie_theta_loss[j]:
+                r = with_tie(r, j, TIE_YIELD, dp, prm)
+            else:
+                r = with_tie(r, j, TIE_LOST, dp, prm)
+    return r
 
 
 @njit(cache=True, nogil=True, inline="always")

@@ -34,7 +34,8 @@ FATE_EXCEEDED = 2  #: `end-of-record`/`first-exceedance`: the rule's limit |θ| 
 FATE_STANDING = 3  #: `end-of-record`/`first-exceedance`: the input ended below the limit
 FATE_CRUSHED = 4  #: the compressed zone reached the intact acting bar: the toe crushed
 
-# the state of the tie (docs/model.md §12), one level per wall; it acts on side + only
+# the state of a tie level (docs/model.md §12), up to MAX_TIE_LEVELS (of rules.tie_rods: the
+# Regime's and KernelParams' tuples hold 2) per wall; a tie acts on side + only
 TIE_OFF = 0  #: no tie
 TIE_SLACK = 1  #: δ ≤ δ_p: the tie carries nothing (or the wall rocks on side −)
 TIE_ELASTIC = 2  #: F_t = k_t·(δ − δ_p) between 0 and F_y (F_a of a brittle tie)
@@ -116,15 +117,17 @@ class KernelParams(NamedTuple):
     e_to_neg: float  #: and on side − [-]
     alpha_x_neg: float  #: where the wall without bar tips on side − [rad] (α_x: side +)
     tip_bar_neg: float  #: θ* of side − with the acting bar intact [rad] (tip_bar: side +)
-    # --- the tie of docs/model.md §12 (one level: :func:`frp_assess.dynamics.loads.tie_level`):
-    # on side + its moment over W·R is tie_kn·(h_t·sin θ − δ_p)·cos θ while elastic and
-    # tie_kn·tie_yield·cos θ while yielding (F_t·h_t·cos θ/(W·R), F_t = k_t·(δ − δ_p) or F_y)
+    # --- the ties of docs/model.md §12, by level (:func:`frp_assess.dynamics.loads.tie_levels`;
+    # the first ``tie_count`` entries of each tuple, the others never read): on side + the
+    # moment of level j over W·R is tie_kn[j]·(h_t·sin θ − δ_p)·cos θ while elastic and
+    # tie_kn[j]·tie_yield[j]·cos θ while yielding (F_t·h_t·cos θ/(W·R), F_t = k_t·(δ − δ_p), F_y)
     tie_on: bool  #: the wall has a tie
-    tie_height: float  #: h_t [m]
-    tie_kn: float  #: k_t·h_t/(W·R) [1/m]
-    tie_yield: float  #: F_y/k_t [m]: the elastic elongation at yield
+    tie_count: int  #: tie levels (0 to MAX_TIE_LEVELS)
+    tie_height: tuple[float, float]  #: h_t [m]
+    tie_kn: tuple[float, float]  #: k_t·h_t/(W·R) [1/m]
+    tie_yield: tuple[float, float]  #: F_y/k_t [m]: the elastic elongation at yield
     #: θ where a brittle tie (F_a ≤ F_y) is lost, asin(F_a/(k_t·h_t)) [rad] (inf: never)
-    tie_theta_loss: float
+    tie_theta_loss: tuple[float, float]
     #: the bounces after an impact are ended at once when they surely die out where the input
     #: cannot uplift the wall (:func:`.jumps.chatter_ends`; the same results, fewer impacts to
     #: follow); False only to show that

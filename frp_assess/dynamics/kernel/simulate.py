@@ -63,10 +63,11 @@ from frp_assess.dynamics.kernel.state import (
     Buffers,
     Ground,
     acting_bar,
+    any_tie,
     at_rest,
     bar_stiffness,
     initial_regime,
-    plastic_elongation,
+    plastic_elongations,
     record_rupture,
     record_sample,
     tie_terms,
@@ -91,8 +92,9 @@ class Outcome(NamedTuple):
     samples: int  #: history samples written
     steps: int  #: accepted integration steps
     rejected: int  #: rejected integration steps
-    tie_lost: bool  #: the tie's anchorage failed (docs/model.md §12)
-    tie_plastic: float  #: the tie's plastic elongation δ_p at the end [m] (0 without a tie)
+    tie_lost: bool  #: a tie's anchorage failed (docs/model.md §12)
+    #: each tie level's plastic elongation δ_p at the end [m] (0 beyond the wall's levels)
+    tie_plastic: tuple[float, float]
 
 
 def history_length(n_input: int, dt: float, collapse_mode: int) -> int:
@@ -192,7 +194,7 @@ def simulate(
                 t0 = 0.0
                 t1 = 0.0
                 if prm.tie_on:  # the tie's moment in this regime (docs/model.md §12)
-                    if r.tie == TIE_YIELD and r.s * omega <= 0.0:
+                    if r.s * omega <= 0.0 and any_tie(r, TIE_YIELD, prm):
                         # a yielding tie whose wall stopped at the end of a step: it unloads
                         theta, omega, r = jump(TIE_TURN, r.s * theta, omega, r, prm)
                         need_a = True
@@ -304,6 +306,6 @@ def simulate(
         samples,
         n_steps,
         n_rejected,
-        r.tie == TIE_LOST,
-        plastic_elongation(theta, r, prm),
+        any_tie(r, TIE_LOST, prm),
+        plastic_elongations(theta, r, prm),
     )

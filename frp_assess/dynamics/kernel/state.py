@@ -56,83 +56,171 @@ class Regime(NamedTuple):
     resting: bool  #: at rest on its base (θ = θ' = 0): nothing is integrated
     intact_pos: bool  #: the bar acting for s = +1 is intact
     intact_neg: bool  #: the bar acting for s = −1 is intact
-    tie: int  #: the tie's state, a TIE_* code of :mod:`.params` (TIE_OFF: no tie)
-    tie_dp: float  #: its plastic elongation δ_p [m]
-    tie_slack: float  #: θ where it goes slack, asin(δ_p/h_t) [rad]
-    tie_yield: float  #: θ where it yields, asin((δ_p + F_y/k_t)/h_t) [rad] (inf: never)
+    # each tie level's (MAX_TIE_LEVELS entries; TIE_OFF beyond the wall's levels):
+    tie: tuple[int, int]  #: its state, a TIE_* code of :mod:`.params`
+    tie_dp: tuple[float, float]  #: its plastic elongation δ_p [m]
+    tie_slack: tuple[float, float]  #: θ where it goes slack, asin(δ_p/h_t) [rad]
+    #: θ where it yields, asin((δ_p + F_y/k_t)/h_t) [rad] (inf: never)
+    tie_yield: tuple[float, float]
 
 
 @njit(cache=True, nogil=True, inline="always")
 def initial_regime(theta0: float, omega0: float, prm: KernelParams) -> Regime:
     """The regime of the initial state: at rest when it is (0, 0), the side θ0 (or θ'0) points
-    to, every bar intact, the tie (if any) unstretched and elastic from θ = 0 (θ0 > 0 stretches
-    it at once: the initial state is the wall's, the tie taken as fitted at θ = 0)."""
+    to, every bar intact, the ties (if any) unstretched and elastic from θ = 0 (θ0 > 0
+    stretches them at once: the initial state is the wall's, the ties taken as fitted at
+    θ = 0)."""
     resting = theta0 == 0.0 and omega0 == 0.0
     s = -1.0 if (theta0 < 0.0 or (theta0 == 0.0 and omega0 < 0.0)) else 1.0
     bars = prm.bar_mode != BAR_NONE
-    r = Regime(s, resting, bars, bars, TIE_OFF, 0.0, 0.0, math.inf)
-    if prm.tie_on:
-        r = with_tie(r, TIE_ELASTIC, 0.0, prm)
+    off = (TIE_OFF, TIE_OFF)
+    zero = (0.0, 0.0)
+    r = Regime(s, resting, bars, bars, off, zero, zero, (math.inf, math.inf))
+    for j in range(prm.tie_count):
+        r = with_tie(r, j, TIE_ELASTIC, 0.0, prm)
     return r
 
 
 @njit(cache=True, nogil=True, inline="always")
-def tie_angle(elongation: float, prm: KernelParams) -> float:
-    """θ ∈ [0, π/2) at which the tie's elongation h_t·sin θ is ``elongation`` [m] (inf: never)."""
-    ratio = elongation / prm.tie_height
+def put(values: tuple, j: int, value: float | int) -> tuple:  # type: ignore[type-arg]
+    """The tuple of a tie level's values with entry j replaced (MAX_TIE_LEVELS = 2 entries)."""
+    return (
+        value if j == 0 else values[0],
+        value if j == 1 else values[1],
+    )
+
+
+@njit(cache=True, nogil=True, inline="always")
+def tie_angle(elongation: float, height: float) -> float:
+    """θ ∈ [0, π/2) at which a tie's elongation h_t·sin θ is ``elongation`` [m] (inf: never)."""
+    ratio = elongation / height
     return math.asin(ratio) if ratio < 1.0 else math.inf
 
 
 @njit(cache=True, nogil=True, inline="always")
-def with_tie(r: Regime, state: int, dp: float, prm: KernelParams) -> Regime:
-    """The regime with the tie's state and plastic elongation δ_p [m] changed (its levels with
-    them)."""
-    slack = tie_angle(dp, prm) if dp > 0.0 else 0.0
-    yields = tie_angle(dp + prm.tie_yield, prm)
-    return Regime(r.s, r.resting, r.intact_pos, r.intact_neg, state, dp, slack, yields)
+def with_tie(r: Regime, j: int, state: int, dp: float, prm: KernelParams) -> Regime:
+    """The regime with tie level j's state and plastic elongation δ_p [m] changed (its levels
+    with them)."""
+    h = prm.tie_height[j]
+    slack = tie_angle(dp, h) if dp > 0.0 else 0.0
+    yields = tie_angle(dp + prm.tie_yield[j], h)
+    return Regime(
+        r.s, r.resting, r.intact_pos, r.intact_neg, put(r.tie, j, state), put(r.tie_dp, j, dp),
+        put(r.tie_slack, j, slack), put(r.tie_yield, j, yields),
+    )  # fmt: skip
 
 
 @njit(cache=True, nogil=True, inline="always")
 def tie_terms(r: Regime, prm: KernelParams) -> tuple[float, float]:
-    """(t0, t1): the tie's moment over W·R is cos θ·(t0 + t1·sin θ) in this regime (0 on side
-    −, slack or lost): elastic, k_t·h_t·(h_t·sin θ − δ_p)/(W·R); yielding, F_y·h_t/(W·R)."""
-    if r.s < 0.0 or r.tie == TIE_OFF or r.tie == TIE_SLACK or r.tie == TIE_LOST:
-        return 0.0, 0.0
-    if r.tie == TIE_YIELD:
-        return prm.tie_kn * prm.tie_yield, 0.0
-    return -prm.tie_kn * r.tie_dp, prm.tie_kn * prm.tie_height
+    """(t0, t1): the ties' moment over W·R is cos θ·(t0 + t1·sin θ) in this regime (0 on side
+    −): the sum over the levels, elastic k_t·h_t·(h_t·sin θ − δ_p)/(W·R), yielding
+    F_y·h_t/(W·R), slack or lost nothing."""
+    t0 = 0.0
+    t1 = 0.0
+    if r.s < 0.0:
+        return t0, t1
+    for j in range(prm.tie_count):
+        state = r.tie[j]
+        if state == TIE_YIELD:
+            t0 += prm.tie_kn[j] * prm.tie_yield[j]
+        elif state == TIE_ELASTIC:
+            t0 -= prm.tie_kn[j] * r.tie_dp[j]
+            t1 += prm.tie_kn[j] * prm.tie_height[j]
+    return t0, t1
+
+
+@njit(cache=True, nogil=True, inline="always")
+def tie_up_level(r: Regime, j: int, prm: KernelParams) -> float:
+    """Tie level j's next upward event as a level of θ on side + — re-engaged (slack), yields
+    or is lost (elastic) — or inf."""
+    state = r.tie[j]
+    if state == TIE_SLACK:
+        return r.tie_slack[j]
+    if state == TIE_ELASTIC:
+        return min(r.tie_yield[j], prm.tie_theta_loss[j])
+    return math.inf
+
+
+@njit(cache=True, nogil=True, inline="always")
+def tie_down_level(r: Regime, j: int) -> float:
+    """Tie level j's downward event (it goes slack: elastic with δ_p > 0) as a level of θ, or 0
+    (none besides the impact)."""
+    return r.tie_slack[j] if r.tie[j] == TIE_ELASTIC else 0.0
 
 
 @njit(cache=True, nogil=True, inline="always")
 def tie_levels(r: Regime, prm: KernelParams) -> tuple[float, float, bool]:
-    """The tie's events ahead in this regime, as levels of s·θ: (the next upward one — it is
-    re-engaged, yields or is lost — or inf; the downward one where it goes slack, or 0: none
-    besides the impact; whether the turning point is an event: it unloads from yielding)."""
-    if r.s < 0.0 or r.tie == TIE_OFF or r.tie == TIE_LOST:
-        return math.inf, 0.0, False
-    if r.tie == TIE_SLACK:
-        return r.tie_slack, 0.0, False
-    if r.tie == TIE_YIELD:
-        return math.inf, 0.0, True
-    return min(r.tie_yield, prm.tie_theta_loss), r.tie_slack, False
-
-
-@njit(cache=True, nogil=True)
-def plastic_elongation(theta: float, r: Regime, prm: KernelParams) -> float:
-    """δ_p [m] in the regime r at θ: the regime's, or while the tie yields the elongation
-    beyond F_y/k_t (δ_p grows with δ; the regime keeps the value of the last yield)."""
-    if r.tie == TIE_YIELD and theta > 0.0:
-        return max(r.tie_dp, prm.tie_height * math.sin(theta) - prm.tie_yield)
-    return r.tie_dp
+    """The ties' events ahead in this regime, as levels of s·θ: (the lowest upward one or inf;
+    the highest downward one, or 0: none besides the impact; whether the turning point is an
+    event: a level that yields unloads there)."""
+    up = math.inf
+    down = 0.0
+    turn = False
+    if r.s < 0.0:
+        return up, down, turn
+    for j in range(prm.tie_count):
+        up = min(up, tie_up_level(r, j, prm))
+        down = max(down, tie_down_level(r, j))
+        turn = turn or r.tie[j] == TIE_YIELD
+    return up, down, turn
 
 
 @njit(cache=True, nogil=True, inline="always")
-def tie_at_zero(r: Regime) -> int:
-    """The tie's state when the wall is at θ = 0 (an uplift or an impact): slack with a
+def any_tie(r: Regime, state: int, prm: KernelParams) -> bool:
+    """Whether a tie level is in ``state`` (a TIE_* code)."""
+    for j in range(prm.tie_count):
+        if r.tie[j] == state:
+            return True
+    return False
+
+
+@njit(cache=True, nogil=True, inline="always")
+def ties_left(r: Regime, prm: KernelParams) -> bool:
+    """Whether a tie level is still anchored (not lost)."""
+    for j in range(prm.tie_count):
+        if r.tie[j] != TIE_LOST:
+            return True
+    return False
+
+
+@njit(cache=True, nogil=True)
+def plastic_elongation(theta: float, r: Regime, j: int, prm: KernelParams) -> float:
+    """δ_p [m] of tie level j in the regime r at θ: the regime's, or while it yields the
+    elongation beyond F_y/k_t (δ_p grows with δ; the regime keeps the value of the last
+    yield)."""
+    if r.tie[j] == TIE_YIELD and theta > 0.0:
+        return max(r.tie_dp[j], prm.tie_height[j] * math.sin(theta) - prm.tie_yield[j])
+    return r.tie_dp[j]
+
+
+@njit(cache=True, nogil=True)
+def plastic_elongations(theta: float, r: Regime, prm: KernelParams) -> tuple[float, float]:
+    """δ_p [m] of every tie level at θ (:func:`plastic_elongation`; 0 beyond the wall's)."""
+    dp = (0.0, 0.0)
+    for j in range(prm.tie_count):
+        dp = put(dp, j, plastic_elongation(theta, r, j, prm))
+    return dp
+
+
+@njit(cache=True, nogil=True, inline="always")
+def tie_state_at_zero(state: int, dp: float) -> int:
+    """A tie level's state when the wall is at θ = 0 (an uplift or an impact): slack with a
     plastic elongation, else elastic (it stretches from θ = 0); lost and no tie stay."""
-    if r.tie == TIE_OFF or r.tie == TIE_LOST:
+    if state == TIE_OFF or state == TIE_LOST:
+        return state
+    return TIE_SLACK if dp > 0.0 else TIE_ELASTIC
+
+
+@njit(cache=True, nogil=True, inline="always")
+def tie_at_zero(r: Regime) -> tuple[int, int]:
+    """Every tie level's state at θ = 0 (:func:`tie_state_at_zero`; the levels are filled from
+    the first, so a wall whose first is off has none)."""
+    if r.tie[0] == TIE_OFF:
         return r.tie
-    return TIE_SLACK if r.tie_dp > 0.0 else TIE_ELASTIC
+    return (
+        tie_state_at_zero(r.tie[0], r.tie_dp[0]),
+        tie_state_at_zero(r.tie[1], r.tie_dp[1]),
+    )
 
 
 @njit(cache=True, nogil=True, inline="always")

@@ -11,7 +11,9 @@ Moving outward from its current state the wall therefore meets the *effective* p
 τ = 0 while e ≤ 0 (slack), and it turns where w = ε, its energy ½·θ'²/p²_s + v_s + the tie's
 elastic energy.  The tipping angle of the outputs excludes the tie (docs/model.md §12: α_x of
 the loads alone); the fate does not: a wall held by its tie beyond that angle cannot fall as
-long as w rises above ε before π/2.
+long as w rises above ε before π/2.  With several tie levels (:mod:`.state`) τ and the elastic
+energy are the sums over the levels still anchored, and the search outward stops at the first
+brittle loss among them.
 
 **Why the test below is exact.**  ε never grows (impacts lose energy, yielding dissipates
 F_y·Δδ_p, a lost tie takes its elastic energy with it).  If w(q) > ε at some q ahead, the wall
@@ -42,7 +44,10 @@ from frp_assess.dynamics.kernel.fate import (
     side_p2,
 )
 from frp_assess.dynamics.kernel.params import TIE_LOST, KernelParams
-from frp_assess.dynamics.kernel.state import Regime, plastic_elongation
+from frp_assess.dynamics.kernel.state import Regime, plastic_elongations, ties_left
+
+#: The plastic elongations of the tie levels [m] (:func:`.state.plastic_elongations`).
+Elongations = tuple[float, float]
 
 _HALF_PI = 0.5 * math.pi
 #: Points of the grid on which the effective potential is searched.
@@ -53,57 +58,90 @@ _INV_PHI = 0.5 * (math.sqrt(5.0) - 1.0)
 
 
 @njit(cache=True, nogil=True)
-def tie_work(q: float, dp: float, prm: KernelParams) -> float:
-    """τ(q) over W·R [-]: the work the tie takes as the wall turns outward to q from slack,
-    with plastic elongation δ_p = ``dp`` (module docstring)."""
-    e = prm.tie_height * math.sin(q) - dp
-    if e <= 0.0:
-        return 0.0
-    k = prm.tie_kn / prm.tie_height  # k_t/(W·R) [1/m²]
-    fy = prm.tie_yield
-    if e <= fy:
-        return 0.5 * k * e * e
-    return k * fy * (e - 0.5 * fy)
+def tie_work(q: float, dps: Elongations, r: Regime, prm: KernelParams) -> float:
+    """τ(q) over W·R [-]: the work the ties still anchored take as the wall turns outward to q
+    from slack, with plastic elongations δ_p = ``dps`` by level (module docstring)."""
+    work = 0.0
+    for j in range(prm.tie_count):
+        if r.tie[j] == TIE_LOST:
+            continue
+        e = prm.tie_height[j] * math.sin(q) - dps[j]
+        if e <= 0.0:
+            continue
+        k = prm.tie_kn[j] / prm.tie_height[j]  # k_t/(W·R) [1/m²]
+        fy = prm.tie_yield[j]
+        work += 0.5 * k * e * e if e <= fy else k * fy * (e - 0.5 * fy)
+    return work
 
 
 @njit(cache=True, nogil=True)
-def tie_elastic_energy(theta: float, dp: float, prm: KernelParams) -> float:
-    """The tie's elastic energy over W·R at θ [-]: ½·k_t·(δ − δ_p)² for 0 < δ − δ_p ≤ F_y/k_t."""
+def tie_elastic_energy(theta: float, dps: Elongations, r: Regime, prm: KernelParams) -> float:
+    """The ties' elastic energy over W·R at θ [-]: Σ ½·k_t·(δ − δ_p)² of the levels still
+    anchored, for 0 < δ − δ_p ≤ F_y/k_t."""
+    energy = 0.0
     if theta <= 0.0:
-        return 0.0
-    e = min(prm.tie_height * math.sin(theta) - dp, prm.tie_yield)
-    return 0.5 * prm.tie_kn / prm.tie_height * e * e if e > 0.0 else 0.0
-
-
-@njit(cache=True, nogil=True)
-def effective_potential(q: float, dp: float, k_s: float, prm: KernelParams) -> float:
-    """w(q) on side + [-]: v_+(q) and the tie's work (module docstring)."""
-    return loaded_potential(q, 1.0, k_s, prm) + tie_work(q, dp, prm)
-
-
-@njit(cache=True, nogil=True)
-def tied_energy(theta: float, omega: float, r: Regime, prm: KernelParams) -> float:
-    """ε with the tie's elastic energy [-]: ½·θ'²/p²_s + v_s(|θ|) + ½·k_t·(δ − δ_p)²/(W·R)."""
-    k_s = prm.k_bar if (r.intact_pos if r.s > 0.0 else r.intact_neg) else 0.0
-    energy = 0.5 * omega * omega / side_p2(r.s, prm) + loaded_potential(abs(theta), r.s, k_s, prm)
-    if r.s > 0.0 and r.tie != TIE_LOST:
-        energy += tie_elastic_energy(theta, plastic_elongation(theta, r, prm), prm)
+        return energy
+    for j in range(prm.tie_count):
+        if r.tie[j] == TIE_LOST:
+            continue
+        e = min(prm.tie_height[j] * math.sin(theta) - dps[j], prm.tie_yield[j])
+        if e > 0.0:
+            energy += 0.5 * prm.tie_kn[j] / prm.tie_height[j] * e * e
     return energy
 
 
 @njit(cache=True, nogil=True)
-def _outward_cap(intact_pos: bool, prm: KernelParams) -> float:
-    """The largest q the search outward on side + covers: π/2, the loss of a brittle tie, the
-    rupture and crushing levels of an intact bar (events that change the potential)."""
-    cap = min(_HALF_PI, prm.tie_theta_loss)
+def effective_potential(
+    q: float, dps: Elongations, r: Regime, k_s: float, prm: KernelParams
+) -> float:
+    """w(q) on side + [-]: v_+(q) and the ties' work (module docstring)."""
+    return loaded_potential(q, 1.0, k_s, prm) + tie_work(q, dps, r, prm)
+
+
+@njit(cache=True, nogil=True)
+def tied_energy(theta: float, omega: float, r: Regime, prm: KernelParams) -> float:
+    """ε with the ties' elastic energy [-]: ½·θ'²/p²_s + v_s(|θ|) + Σ ½·k_t·(δ − δ_p)²/(W·R)."""
+    k_s = prm.k_bar if (r.intact_pos if r.s > 0.0 else r.intact_neg) else 0.0
+    energy = 0.5 * omega * omega / side_p2(r.s, prm) + loaded_potential(abs(theta), r.s, k_s, prm)
+    if r.s > 0.0:
+        energy += tie_elastic_energy(theta, plastic_elongations(theta, r, prm), r, prm)
+    return energy
+
+
+@njit(cache=True, nogil=True)
+def _outward_cap(intact_pos: bool, r: Regime, prm: KernelParams) -> float:
+    """The largest q the search outward on side + covers: π/2, the loss of a brittle tie still
+    anchored, the rupture and crushing levels of an intact bar (events that change the
+    potential)."""
+    cap = _HALF_PI
+    for j in range(prm.tie_count):
+        if r.tie[j] != TIE_LOST:
+            cap = min(cap, prm.tie_theta_loss[j])
     if intact_pos:
         cap = min(cap, prm.theta_max, prm.theta_cr)
     return cap
 
 
+@njit(cache=True, nogil=True, inline="always")
+def _potential(
+    q: float, dps: Elongations, r: Regime, k_s: float, tied: bool, prm: KernelParams
+) -> float:
+    """w(q) with ``tied``, else v_+(q) [-]."""
+    if tied:
+        return effective_potential(q, dps, r, k_s, prm)
+    return loaded_potential(q, 1.0, k_s, prm)
+
+
 @njit(cache=True, nogil=True)
 def _rises_above(
-    energy: float, lo: float, hi: float, dp: float, k_s: float, tied: bool, prm: KernelParams
+    energy: float,
+    lo: float,
+    hi: float,
+    dps: Elongations,
+    r: Regime,
+    k_s: float,
+    tied: bool,
+    prm: KernelParams,
 ) -> bool:
     """Whether the potential of side + (w with ``tied``, else v_+) exceeds ``energy`` somewhere
     in [lo, hi]: a grid, then a golden-section search around its largest value."""
@@ -113,7 +151,7 @@ def _rises_above(
     i_best = 0
     for i in range(_GRID + 1):
         q = lo + (hi - lo) * i / _GRID
-        v = effective_potential(q, dp, k_s, prm) if tied else loaded_potential(q, 1.0, k_s, prm)
+        v = _potential(q, dps, r, k_s, tied, prm)
         if v > energy:
             return True
         if v > best:
@@ -123,8 +161,8 @@ def _rises_above(
     for _ in range(_REFINE):
         c = b - _INV_PHI * (b - a)
         d = a + _INV_PHI * (b - a)
-        vc = effective_potential(c, dp, k_s, prm) if tied else loaded_potential(c, 1.0, k_s, prm)
-        vd = effective_potential(d, dp, k_s, prm) if tied else loaded_potential(d, 1.0, k_s, prm)
+        vc = _potential(c, dps, r, k_s, tied, prm)
+        vd = _potential(d, dps, r, k_s, tied, prm)
         if vc > energy or vd > energy:
             return True
         if vc > vd:
@@ -136,20 +174,21 @@ def _rises_above(
 
 @njit(cache=True, nogil=True)
 def tied_cannot_fall(theta: float, omega: float, r: Regime, prm: KernelParams) -> bool:
-    """:func:`.fate.loaded_cannot_fall` with the tie (module docstring); a lost tie: without."""
-    if r.tie == TIE_LOST:
+    """:func:`.fate.loaded_cannot_fall` with the ties (module docstring); every tie lost:
+    without."""
+    if not ties_left(r, prm):
         return loaded_cannot_fall(theta, omega, r.s, r.intact_pos, r.intact_neg, prm)
     energy = tied_energy(theta, omega, r, prm)
     k_pos = prm.k_bar if r.intact_pos else 0.0
     q = abs(theta)
-    cap = _outward_cap(r.intact_pos, prm)
+    cap = _outward_cap(r.intact_pos, r, prm)
     if r.s > 0.0:
-        dp = plastic_elongation(theta, r, prm)
-        if not _rises_above(energy, q, cap, dp, k_pos, True, prm):
+        dps = plastic_elongations(theta, r, prm)
+        if not _rises_above(energy, q, cap, dps, r, k_pos, True, prm):
             return False
-        if prm.one_sided or _rises_above(energy, 0.0, q, dp, k_pos, False, prm):
+        if prm.one_sided or _rises_above(energy, 0.0, q, dps, r, k_pos, False, prm):
             return True  # it never leaves side +
-    elif not _rises_above(energy, 0.0, cap, r.tie_dp, k_pos, True, prm):
+    elif not _rises_above(energy, 0.0, cap, r.tie_dp, r, k_pos, True, prm):
         return False  # side −: it may come back to side + and fall there
     if q >= loaded_barrier_angle(-1.0, r.intact_neg, prm) and r.s < 0.0:
         return False
@@ -157,19 +196,21 @@ def tied_cannot_fall(theta: float, omega: float, r: Regime, prm: KernelParams) -
 
 
 @njit(cache=True, nogil=True)
-def _first_above(energy: float, lo: float, dp: float, intact_pos: bool, prm: KernelParams) -> float:
+def _first_above(
+    energy: float, lo: float, dps: Elongations, r: Regime, intact_pos: bool, prm: KernelParams
+) -> float:
     """The first q ≥ lo on side + where w(q) reaches ``energy`` [rad] (the turning angle of
     the wall moving outward; the grid's bracket bisected), the cap when none."""
     k_s = prm.k_bar if intact_pos else 0.0
-    hi = _outward_cap(intact_pos, prm)
+    hi = _outward_cap(intact_pos, r, prm)
     prev = lo
     for i in range(1, _GRID + 1):
         q = lo + (hi - lo) * i / _GRID
-        if effective_potential(q, dp, k_s, prm) >= energy:
+        if effective_potential(q, dps, r, k_s, prm) >= energy:
             a, b = prev, q
             for _ in range(200):
                 mid = 0.5 * (a + b)
-                if effective_potential(mid, dp, k_s, prm) < energy:
+                if effective_potential(mid, dps, r, k_s, prm) < energy:
                     a = mid
                 else:
                     b = mid
@@ -184,21 +225,21 @@ def _first_above(energy: float, lo: float, dp: float, intact_pos: bool, prm: Ker
 def tied_remaining_peak(
     theta: float, omega: float, r: Regime, prm: KernelParams
 ) -> tuple[float, bool]:
-    """:func:`.fate.loaded_remaining_peak` with the tie, once :func:`tied_cannot_fall` holds:
+    """:func:`.fate.loaded_remaining_peak` with the ties, once :func:`tied_cannot_fall` holds:
     the largest |θ| still to come and whether the acting bar is intact there."""
-    if r.tie == TIE_LOST:
+    if not ties_left(r, prm):
         return loaded_remaining_peak(theta, omega, r.s, r.intact_pos, r.intact_neg, prm)
     energy = tied_energy(theta, omega, r, prm)
     k_pos = prm.k_bar if r.intact_pos else 0.0
     q = abs(theta)
     if r.s > 0.0:
-        dp = plastic_elongation(theta, r, prm)
+        dps = plastic_elongations(theta, r, prm)
         # outward it turns where w = ε; inward, held by the weights, it comes back there
-        if omega > 0.0 or prm.one_sided or _rises_above(energy, 0.0, q, dp, k_pos, False, prm):
-            return _first_above(energy, q, dp, r.intact_pos, prm), r.intact_pos
+        if omega > 0.0 or prm.one_sided or _rises_above(energy, 0.0, q, dps, r, k_pos, False, prm):
+            return _first_above(energy, q, dps, r, r.intact_pos, prm), r.intact_pos
         after = prm.cos_a + prm.e_to_neg**2 * (energy - prm.cos_a) * prm.p2_pos / prm.p2_neg
         return loaded_turning_angle(after, -1.0, r.intact_neg, prm), r.intact_neg
     if omega < 0.0:
         return loaded_turning_angle(energy, -1.0, r.intact_neg, prm), r.intact_neg
     after = prm.cos_a + prm.e_to_pos**2 * (energy - prm.cos_a) * prm.p2_neg / prm.p2_pos
-    return _first_above(after, 0.0, r.tie_dp, r.intact_pos, prm), r.intact_pos
+    return _first_above(after, 0.0, r.tie_dp, r, r.intact_pos, prm), r.intact_pos
