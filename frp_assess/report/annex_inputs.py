@@ -67,7 +67,8 @@ def seismic(results: Results, lang: Lang) -> list[Block]:
     out.append(keep([figure(chart), markup(lang.t("ax.fig.spectra"), "caption")]))
     out.append(cond_break(60 * mm))
     out.append(h2("3.3  " + lang.t("ax.h.compliance")))
-    widths = [18 * mm, 30 * mm, 46 * mm, 42 * mm, 20 * mm, 14 * mm]
+    # the Italian words held whole: "soddisfatta", "+4 accelerogrammi" (2026-11-28)
+    widths = [18 * mm, 24 * mm, 44 * mm, 38 * mm, 26 * mm, 20 * mm]
     out.append(grid(ti.compliance_table(results, lang), widths, wrap=(0, 1, 2, 3, 4, 5),
                     numeric_from=4))  # fmt: skip
     ok = bool(results.compliance.passed)

@@ -128,9 +128,11 @@ def shows_run_prose(lang: Lang) -> bool:
 
 def run_text(text: str | None, lang: Lang) -> str:
     """Prose the run wrote in English into results.json (a compliance requirement, a pivot
-    reason, the ranking rule...): shown as written in an English report, a dash in another
-    language (the annex rebuilds what it can from the values)."""
-    return run_words(text, lang) or DASH
+    reason, the ranking rule...): shown as written in an English report; in another language
+    the phrase of the catalogue when it has one (:meth:`Lang.run_phrase`), else a dash (the
+    annex rebuilds what it can from the values)."""
+    translated = lang.run_phrase(text) if text and not shows_run_prose(lang) else None
+    return run_words(text, lang) or translated or DASH
 
 
 def run_words(text: str | None, lang: Lang) -> str | None:

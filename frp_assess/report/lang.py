@@ -98,6 +98,17 @@ class Lang:
                 return self.numbers_in(self.strings["chart:" + name].format(*m.groups()))
         return self.numbers_in(text)
 
+    def run_phrase(self, text: str) -> str | None:
+        """A phrase the run wrote in English with numbers in it (the compliance table's
+        requirement and found columns, :mod:`frp_assess.motions.compliance`) in the language:
+        its catalogue pattern (``run:`` keys) with the numbers re-formatted, or None for a
+        phrase without a pattern."""
+        for pattern, name in _RUN_PATTERNS:
+            m = pattern.fullmatch(text.strip())
+            if m is not None and ("run:" + name) in self.strings:
+                return self.numbers_in(self.strings["run:" + name].format(*m.groups()))
+        return None
+
 
 #: chart labels with a number in them: (English pattern, catalogue key after ``chart:``)
 _CHART_PATTERNS = (
@@ -110,4 +121,27 @@ _CHART_PATTERNS = (
     (re.compile(r"C = (.+) \(survives\)"), "C = {} (survives)"),
     (re.compile(r"(\S+) centred"), "{} centred"),
     (re.compile(r"(\S+) external"), "{} external"),
+)
+
+#: the run's phrases with numbers in them (motions/compliance.py): (English pattern, catalogue
+#: key after ``run:``); matched whole, so "at least 3 records" is not "{} records"
+_RUN_PATTERNS = (
+    (re.compile(r"stationary part ≥ (\S+) s"), "stationary part ≥ {} s"),
+    (re.compile(r"pseudo-stationary part ≥ (\S+) s"), "pseudo-stationary part ≥ {} s"),
+    (re.compile(r"total duration ≥ (\S+) s"), "total duration ≥ {} s"),
+    (re.compile(r"shortest (\S+) s"), "shortest {} s"),
+    (re.compile(r"at least (\d+) records"), "at least {} records"),
+    (re.compile(r"(\d+) records"), "{} records"),
+    (re.compile(r"mean PGA ≥ a_g·S = (\S+) g"), "mean PGA ≥ a_g·S = {} g"),
+    (re.compile(r"mean PGA (\S+) g \((\S+)\)"), "mean PGA {} g ({})"),
+    (
+        re.compile(r"mean spectrum ≥ (\S+) of target in (\S+) s"),
+        "mean spectrum ≥ {} of target in {} s",
+    ),  # noqa: E501
+    (
+        re.compile(r"mean spectrum ≤ (\S+) of target in (\S+) s"),
+        "mean spectrum ≤ {} of target in {} s",
+    ),  # noqa: E501
+    (re.compile(r"min (\S+) at T = (\S+) s"), "min {} at T = {} s"),
+    (re.compile(r"max (\S+) at T = (\S+) s"), "max {} at T = {} s"),
 )

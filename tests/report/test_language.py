@@ -98,3 +98,38 @@ def test_report_command_rebuilds_in_the_language_of_the_results(tmp_path: Path) 
     shutil.copy(d / "report.pdf", tmp_path / "first.pdf")
     assert main(["report", str(d)]) == 0
     assert (d / "report.pdf").read_bytes() == (tmp_path / "first.pdf").read_bytes()
+
+
+@pytest.mark.parametrize("recorded", [False, True])
+def test_every_compliance_phrase_reads_in_italian(recorded: bool) -> None:
+    """The compliance table's requirement and found columns are the run's English phrases
+    (motions/compliance.py); the Italian annex shows each in Italian with decimal commas
+    (a dash before).  Every phrase check_compliance writes — passing and failing sets, an
+    artificial and a recorded set — has a pattern, so a new phrase fails here first."""
+    from frp_assess.motions.compliance import check_compliance
+    from frp_assess.motions.record import Record
+    from frp_assess.motions.spectra import preset_spectrum
+    from frp_assess.report.formats import DASH, run_text
+    from frp_assess.report.lang import Lang
+    from tests.conftest import synthetic_record
+
+    it = Lang("it")
+    sets = [
+        [Record(f"n{i}", 0.01, synthetic_record(i, duration=30.0, pga_g=0.3)) for i in range(7)],
+        [Record(f"s{i}", 0.01, synthetic_record(i, duration=8.0)) for i in range(2)],
+    ]
+    phrases = set()
+    for records in sets:
+        report = check_compliance(records, preset_spectrum("A2"), recorded=recorded)
+        phrases |= {p for c in report.checks for p in (c.requirement, c.found)}
+    assert len(phrases) >= 6
+    for phrase in phrases:
+        words = run_text(phrase, it)
+        assert words != DASH, phrase
+        assert words != phrase and "." not in words.replace("min.", "").replace("max.", ""), (
+            phrase,
+            words,
+        )
+    assert run_text("min 96.4% at T = 0.377 s", it) == "min. 96,4% a T = 0,377 s"
+    assert run_text("at least 3 records", it) == "almeno 3 accelerogrammi"
+    assert run_text("min 96.4% at T = 0.377 s", Lang("en")) == "min 96.4% at T = 0.377 s"
