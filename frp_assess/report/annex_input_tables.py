@@ -15,6 +15,7 @@ from frp_assess.report.formats import (
     run_words,
     rupture_strain_words,
     shows_run_prose,
+    source_text,
 )
 from frp_assess.report.ida_words import settings_value
 from frp_assess.report.lang import Lang
@@ -89,7 +90,7 @@ def materials_table(results: Results, lang: Lang) -> TableData:
             lang.gnum(m.ultimate_strain),
             lang.gnum(m.density),
             lang.num(m.price, 2),
-            run_text(m.source, lang),
+            source_text(m.source, lang),
         ]
         for name, m in sorted(results.materials.items())
     ]

@@ -135,6 +135,17 @@ def run_text(text: str | None, lang: Lang) -> str:
     return run_words(text, lang) or translated or DASH
 
 
+def source_text(text: str | None, lang: Lang) -> str:
+    """Where a value comes from, as results.json says it: the library's and the run's own
+    phrases in the language (:meth:`Lang.run_phrase`); anything else is the user's own text
+    (a material's ``source`` in the project file), shown as written."""
+    if not text:
+        return DASH
+    if shows_run_prose(lang):
+        return text
+    return lang.run_phrase(text) or text
+
+
 def run_words(text: str | None, lang: Lang) -> str | None:
     """:func:`run_text` for a paragraph: the run's English prose, None in another language
     or when there is none."""

@@ -102,7 +102,10 @@ class Lang:
         """A phrase the run wrote in English with numbers in it (the compliance table's
         requirement and found columns, :mod:`frp_assess.motions.compliance`) in the language:
         its catalogue pattern (``run:`` keys) with the numbers re-formatted, or None for a
-        phrase without a pattern."""
+        phrase without a pattern.  A phrase without numbers (a material's source in the
+        library, config/library.py) is its own key."""
+        if ("run:" + text.strip()) in self.strings:
+            return self.numbers_in(self.strings["run:" + text.strip()])
         for pattern, name in _RUN_PATTERNS:
             m = pattern.fullmatch(text.strip())
             if m is not None and ("run:" + name) in self.strings:

@@ -133,3 +133,25 @@ def test_every_compliance_phrase_reads_in_italian(recorded: bool) -> None:
     assert run_text("min 96.4% at T = 0.377 s", it) == "min. 96,4% a T = 0,377 s"
     assert run_text("at least 3 records", it) == "almeno 3 accelerogrammi"
     assert run_text("min 96.4% at T = 0.377 s", Lang("en")) == "min 96.4% at T = 0.377 s"
+
+
+def test_material_sources_read_in_italian_and_the_users_as_written() -> None:
+    """A material's source in the Italian annex: the library's English phrases
+    (config/library.py) and the project file's defaults in Italian (a dash before); a source
+    the user wrote is shown as written."""
+    from frp_assess.config.library import FRP_MATERIALS
+    from frp_assess.report.formats import source_text
+    from frp_assess.report.lang import Lang
+
+    it = Lang("it")
+    sources = {m.source for m in FRP_MATERIALS.values()} | {
+        "user input",
+        "user input (overrides the library)",
+    }
+    for source in sources:
+        words = source_text(source, it)
+        assert words not in (source, "—"), source
+        assert "dati" in words or "dato" in words, (source, words)
+    own = "scheda tecnica del produttore, 2024"
+    assert source_text(own, it) == own
+    assert source_text("typical producer data", Lang("en")) == "typical producer data"
