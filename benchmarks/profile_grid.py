@@ -68,7 +68,7 @@ def profile(study: Path, stride: int) -> dict[str, np.ndarray]:
             ):
                 start = quiet_intervals(peak_so_far, c, prm)
                 a = acc[start:]
-                args = (Ground(a, rec.dt, c, n_tail), prm, 0.0, 0.0, False, buf)
+                args = (Ground(a, rec.dt, c, n_tail), prm, model.tie_params, 0.0, 0.0, False, buf)
                 if warm:  # compile before timing
                     simulate(*args)
                     warm = False

@@ -297,12 +297,13 @@ def _compiled_search(
     tol = float(plan.tolerance)
     if plan.rule == "first-collapse":
         n, status = search(
-            acc, float(dt), model.tail_samples(dt), model.params, plan.steps, tol,
+            acc, float(dt), model.tail_samples(dt), model.params, model.tie_params, plan.steps, tol,
             multiplier, fate, peak, losses, _COLLAPSE_FATE,
         )  # fmt: skip
     else:
         n, status = sample(
-            acc, float(dt), model.tail_samples(dt), model.params, plan.steps, float(plan.c0),
+            acc, float(dt), model.tail_samples(dt), model.params, model.tie_params, plan.steps,
+            float(plan.c0),
             tol, float(plan.band), int(plan.subdivide), int(plan.coarse), int(plan.below),
             int(plan.band_steps), bool(plan.shifted), multiplier, fate, peak, losses,
             _COLLAPSE_FATE,

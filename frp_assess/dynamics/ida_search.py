@@ -24,6 +24,7 @@ from numba import njit
 from frp_assess.dynamics.ida_refine import new_refined_state, next_refined
 from frp_assess.dynamics.kernel import Buffers, Ground, KernelParams, Outcome, simulate
 from frp_assess.dynamics.kernel import params as kp
+from frp_assess.dynamics.kernel.params import TieParams
 
 #: Relative margin of the quiet-start test [-]: an interval is skipped only when both its
 #: samples are below the uplift threshold by more than this, so rounding in the kernel's own
@@ -91,6 +92,7 @@ def _run_and_store(
     c: float,
     n_tail: int,
     prm: KernelParams,
+    ties: TieParams,
     out: Buffers,
     n: int,
     multiplier: np.ndarray,
@@ -106,7 +108,7 @@ def _run_and_store(
     on a cold cache), 1.3-9 % faster per IDA than with a flag known only at run time
     (docs/model.md §4.2)."""
     start = quiet_intervals(quiet, c, prm)
-    res = simulate(Ground(acc[start:], dt, c, n_tail), prm, 0.0, 0.0, False, out)
+    res = simulate(Ground(acc[start:], dt, c, n_tail), prm, ties, 0.0, 0.0, False, out)
     multiplier[n] = c
     fate[n] = res.fate
     peak[n] = res.peak
@@ -120,6 +122,7 @@ def search(
     dt: float,
     n_tail: int,
     prm: KernelParams,
+    ties: TieParams,
     hunt: np.ndarray,
     tolerance: float,
     multiplier: np.ndarray,
@@ -128,8 +131,9 @@ def search(
     losses: np.ndarray,
     collapse_fate: np.ndarray,
 ) -> tuple[int, int]:
-    """Every time history of the IDA of the wall ``prm`` under ``acc`` [m/s²] every dt [s]
-    (``n_tail`` zero samples after it), as :func:`next_multiplier` chooses them.
+    """Every time history of the IDA of the wall ``prm`` (its ties ``ties``) under ``acc``
+    [m/s²] every dt [s] (``n_tail`` zero samples after it), as :func:`next_multiplier`
+    chooses them.
 
     Time history j is stored in ``multiplier[j]`` (C), ``fate[j]`` (the kernel's FATE_*),
     ``peak[j]`` (peak |θ| [rad]) and ``losses[j]`` (LOST_* flags); ``collapse_fate[f]`` says
@@ -149,8 +153,8 @@ def search(
             return n, kp.STATUS_OK
         if n >= multiplier.shape[0]:
             return n, STATUS_TOO_MANY_RUNS
-        res = _run_and_store(acc, quiet, dt, c, n_tail, prm, out, n, multiplier, fate, peak,
-                             losses)  # fmt: skip
+        res = _run_and_store(acc, quiet, dt, c, n_tail, prm, ties, out, n, multiplier, fate,
+                             peak, losses)  # fmt: skip
         n += 1
         if res.status != kp.STATUS_OK:
             return n, res.status
@@ -295,6 +299,7 @@ def sample(
     dt: float,
     n_tail: int,
     prm: KernelParams,
+    ties: TieParams,
     ladder: np.ndarray,
     c0: float,
     tolerance: float,
@@ -329,8 +334,8 @@ def sample(
             return n, kp.STATUS_OK
         if n >= multiplier.shape[0]:
             return n, STATUS_TOO_MANY_RUNS
-        out = _run_and_store(acc, quiet, dt, c, n_tail, prm, buffers, n, multiplier, fate,
-                             peak, losses)  # fmt: skip
+        out = _run_and_store(acc, quiet, dt, c, n_tail, prm, ties, buffers, n, multiplier,
+                             fate, peak, losses)  # fmt: skip
         n += 1
         if out.status != kp.STATUS_OK:
             return n, out.status

@@ -24,6 +24,7 @@ import math
 from dataclasses import dataclass
 from typing import NamedTuple
 
+from frp_assess.dynamics.kernel.params import TieParams
 from frp_assess.dynamics.wall import Wall
 from frp_assess.motions.record import G
 from frp_assess.rules.tie_rods import (
@@ -110,20 +111,9 @@ def tie_levels(loads: Loads) -> tuple[Tie, ...]:
     return tuple(levels)
 
 
-class TieConstants(NamedTuple):
-    """The ties' fields of :class:`~frp_assess.dynamics.kernel.params.KernelParams`
-    (docs/model.md §12)."""
-
-    tie_on: bool
-    tie_count: int
-    tie_height: tuple[float, float]
-    tie_kn: tuple[float, float]
-    tie_yield: tuple[float, float]
-    tie_theta_loss: tuple[float, float]
-
-
-def tie_constants(wall: Wall, levels: tuple[Tie, ...]) -> TieConstants:
-    """The kernel's constants of the tie levels: each one's height, k_t·h_t/(W·R), the yield
+def tie_params(wall: Wall, levels: tuple[Tie, ...]) -> TieParams:
+    """The kernel's constants of the tie levels (:class:`~frp_assess.dynamics.kernel.params.
+    TieParams`): each one's height, k_t·h_t/(W·R), the yield
     elongation F_y/k_t and the rotation where a brittle tie (F_a ≤ F_y) is lost; the entries
     beyond the wall's levels (all of them without a tie) are numbers that are never read."""
     if len(levels) > MAX_TIE_LEVELS or MAX_TIE_LEVELS != 2:
@@ -134,8 +124,8 @@ def tie_constants(wall: Wall, levels: tuple[Tie, ...]) -> TieConstants:
         height[j], kn[j], yields[j] = h, k * h / (wall.weight * wall.R), tie.yield_force / k
         if tie.anchorage_force <= tie.yield_force and tie.anchorage_force < k * h:
             losses[j] = math.asin(tie.anchorage_force / (k * h))
-    return TieConstants(
-        bool(levels), len(levels), (height[0], height[1]), (kn[0], kn[1]),
+    return TieParams(
+        len(levels), (height[0], height[1]), (kn[0], kn[1]),
         (yields[0], yields[1]), (losses[0], losses[1]),
     )  # fmt: skip
 

@@ -14,7 +14,7 @@ from frp_assess.dynamics.base_reaction import PIVOT_RULES, BaseReaction, PivotRu
 from frp_assess.dynamics.kernel import Buffers, Ground, history_length, simulate
 from frp_assess.dynamics.kernel import params as kp
 from frp_assess.dynamics.kernel.fate import loaded_tipping_angle, tipping_angle
-from frp_assess.dynamics.loads import NO_LOADS, Loads, side_terms, tie_constants, tie_levels
+from frp_assess.dynamics.loads import NO_LOADS, Loads, side_terms, tie_levels, tie_params
 from frp_assess.dynamics.options import (
     COLLAPSE,
     COLLAPSE_RULES,
@@ -287,6 +287,11 @@ class RockingModel:
         return replace(self, options=replace(self.options, **changes))  # type: ignore[arg-type]
 
     @cached_property
+    def tie_params(self) -> kp.TieParams:
+        """The kernel's constants of the wall's tie levels (docs/model.md §12)."""
+        return tie_params(self.wall, tie_levels(self.loads))
+
+    @cached_property
     def params(self) -> kp.KernelParams:
         """The kernel's constants (docs/model.md §1–4), derived once."""
         wall, bars, o = self.wall, self.rebars, self.options
@@ -359,7 +364,7 @@ class RockingModel:
             e_to_neg=e_neg,
             alpha_x_neg=base.alpha_x,
             tip_bar_neg=math.nan,
-            **tie_constants(wall, ties)._asdict(),
+            tie_on=bool(ties),
             # the bound on the bounces that surely die out is written for the wall alone
             settle_chatter=not loaded,
         )
@@ -419,7 +424,7 @@ class RockingModel:
             np.empty(size), np.empty(size), np.empty(size), np.zeros(2), np.zeros(2, np.int64)
         )
         ground = Ground(acc, float(dt), float(scale), n_tail)
-        out = simulate(ground, prm, float(theta0), float(omega0), history, buf)
+        out = simulate(ground, prm, self.tie_params, float(theta0), float(omega0), history, buf)
         if out.status != kp.STATUS_OK:
             raise NumericalError(
                 f"time history at multiplier C = {scale:.6g}: {_STATUS_MESSAGES[out.status]} "
@@ -457,7 +462,9 @@ class RockingModel:
             rejected_steps=int(out.rejected),
             history=hist,
             tie_lost=bool(out.tie_lost),
-            tie_plastic_elongations=tuple(float(v) for v in out.tie_plastic[: prm.tie_count]),
+            tie_plastic_elongations=tuple(
+                float(v) for v in out.tie_plastic[: self.tie_params.levels]
+            ),
         )
 
 

@@ -26,7 +26,7 @@ from frp_assess.dynamics.kernel.jumps import (
     chatter_ends,
     restoring_at_rest,
 )
-from frp_assess.dynamics.kernel.params import REST_VELOCITY, KernelParams, kernel_record
+from frp_assess.dynamics.kernel.params import NO_TIES, REST_VELOCITY, KernelParams, kernel_record
 from frp_assess.dynamics.kernel.steppers import acceleration
 from tests.conftest import synthetic_record
 from tests.dynamics.walls import CFRP, SIX_WALLS, WALL
@@ -40,7 +40,7 @@ def _run(
     size = history_length(acc.size + n_tail, DT, prm.collapse_mode) if history else 1
     hist = [np.zeros(size) for _ in range(3)]
     buf = Buffers(*hist, np.zeros(2), np.zeros(2, np.int64))
-    out = simulate(Ground(acc, DT, c, n_tail), prm, 0.0, 0.0, history, buf)
+    out = simulate(Ground(acc, DT, c, n_tail), prm, NO_TIES, 0.0, 0.0, history, buf)
     return out, hist
 
 
@@ -81,7 +81,7 @@ def test_bounces_last_what_the_closed_form_says_and_the_bound_holds(
     size = history_length(acc.size, DT, prm.collapse_mode)
     hist = [np.zeros(size) for _ in range(3)]
     buf = Buffers(*hist, np.zeros(2), np.zeros(2, np.int64))
-    out = simulate(Ground(acc, DT, 1.0, 0), prm, 0.0, v, True, buf)
+    out = simulate(Ground(acc, DT, 1.0, 0), prm, NO_TIES, 0.0, v, True, buf)
     theta = hist[0][: out.samples]
     moving = np.flatnonzero(theta != 0.0)
     t_rest = (moving[-1] + 1) * DT  # the first sample from which the wall stays at rest

@@ -13,7 +13,7 @@ import pytest
 from frp_assess.dynamics import IdaSettings, RockingModel, ida
 from frp_assess.dynamics.ida_search import next_multiplier, quiet_intervals, running_max_abs
 from frp_assess.dynamics.kernel import Buffers, Ground, simulate
-from frp_assess.dynamics.kernel.params import kernel_record
+from frp_assess.dynamics.kernel.params import NO_TIES, kernel_record
 from tests.conftest import G, synthetic_record
 from tests.dynamics.walls import CFRP, SIX_WALLS, WALL
 
@@ -82,7 +82,7 @@ def test_a_time_history_from_its_quiet_start_is_the_same_numbers():
     def run(a: np.ndarray) -> Any:
         h = np.empty(1)
         buf = Buffers(h, h, h, np.zeros(2), np.zeros(2, np.int64))
-        return simulate(Ground(a, 0.01, c, 0), prm, 0.0, 0.0, False, buf)
+        return simulate(Ground(a, 0.01, c, 0), prm, NO_TIES, 0.0, 0.0, False, buf)
 
     full, skipped = run(acc), run(acc[start:])
     for name in ("status", "fate", "peak", "peak_with_bar", "impacts", "ruptures"):

@@ -70,7 +70,9 @@ def impacts_of_every_bounce(model: RockingModel, acc: np.ndarray, c: float) -> i
     h = np.empty(1)
     rec = kernel_record(acc)
     buf = Buffers(h, h, h, np.zeros(2), np.zeros(2, np.int64))
-    out = simulate(Ground(rec, DT, c, model.tail_samples(DT)), prm, 0.0, 0.0, False, buf)
+    out = simulate(
+        Ground(rec, DT, c, model.tail_samples(DT)), prm, model.tie_params, 0.0, 0.0, False, buf
+    )
     return int(out.impacts)
 
 

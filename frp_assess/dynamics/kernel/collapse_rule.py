@@ -33,6 +33,7 @@ from frp_assess.dynamics.kernel.params import (
     FATE_FELL,
     FATE_STANDING,
     KernelParams,
+    TieParams,
 )
 from frp_assess.dynamics.kernel.state import Regime
 from frp_assess.dynamics.kernel.step_scan import CRUSH, LIMIT
@@ -72,6 +73,7 @@ def collapse_verdict(
     now: float,
     last_alpha_up: float,
     prm: KernelParams,
+    ties: TieParams,
 ) -> tuple[int, float]:
     """(fate or :data:`UNDECIDED`, collapse time [s] or NaN) of the wall at (θ, θ') in regime r
     at the instant ``now`` [s], just after ``event`` (a step_scan code; NO_EVENT after a step
@@ -89,7 +91,7 @@ def collapse_verdict(
     if r.resting:
         return FATE_AT_REST, math.nan
     if prm.tie_on:
-        if tied_cannot_fall(theta, omega, r, prm):
+        if tied_cannot_fall(theta, omega, r, prm, ties):
             return FATE_AT_REST, math.nan
     elif cannot_fall(theta, omega, r.s, r.intact_pos, r.intact_neg, prm):
         return FATE_AT_REST, math.nan
@@ -98,14 +100,20 @@ def collapse_verdict(
 
 @njit(cache=True, nogil=True)
 def peaks_at_rest(
-    theta: float, omega: float, r: Regime, peak: float, peak_bar: float, prm: KernelParams
+    theta: float,
+    omega: float,
+    r: Regime,
+    peak: float,
+    peak_bar: float,
+    prm: KernelParams,
+    ties: TieParams,
 ) -> tuple[float, float]:
     """(peak, peak with an intact bar) once the wall can no longer fall: the rotation of the
     rocking still to come is the turning angle its energy reaches (:func:`.fate.remaining_peak`)."""
     if r.resting:
         return peak, peak_bar
     if prm.tie_on:
-        extra, with_bar = tied_remaining_peak(theta, omega, r, prm)
+        extra, with_bar = tied_remaining_peak(theta, omega, r, prm, ties)
     else:
         extra, with_bar = remaining_peak(theta, omega, r.s, r.intact_pos, r.intact_neg, prm)
     return max(peak, extra), (max(peak_bar, extra) if with_bar else peak_bar)

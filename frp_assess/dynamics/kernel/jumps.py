@@ -23,6 +23,7 @@ from frp_assess.dynamics.kernel.params import (
     TIE_SLACK,
     TIE_YIELD,
     KernelParams,
+    TieParams,
 )
 from frp_assess.dynamics.kernel.state import (
     Ground,
@@ -41,7 +42,6 @@ from frp_assess.dynamics.kernel.step_scan import (
     RUPTURE,
     TIE_DOWN,
     TIE_TURN,
-    TIE_UP,
 )
 
 
@@ -231,7 +231,8 @@ def jump(
 ) -> tuple[float, float, Regime]:
     """(θ, θ', regime) just after ``event`` (a step_scan code) located at s·θ = ``level`` with
     θ' = ``omega``: the impact's and the rupture's jumps; at the toe crushing and the collapse
-    level the state is kept (the verdict ends the time history there)."""
+    level the state is kept (the verdict ends the time history there).  The ties' events are
+    :func:`tie_jump`'s, which the driver inlines (the tie's constants are not passed here)."""
     if event == IMPACT:
         omega, s, resting = impact(omega, r.s, prm)
         return 0.0, omega, rocking_on(r, s, resting)
@@ -239,13 +240,11 @@ def jump(
     if event == RUPTURE:
         omega, intact_pos, intact_neg = rupture(omega, r.s, r.intact_pos, r.intact_neg, prm)
         return theta, omega, with_bars(r, intact_pos, intact_neg)
-    if event == TIE_UP or event == TIE_DOWN or event == TIE_TURN:
-        return theta, omega, tie_jump(event, level, theta, r, prm)
     return theta, omega, r
 
 
 @njit(cache=True, nogil=True, inline="always")
-def tie_jump(event: int, level: float, theta: float, r: Regime, prm: KernelParams) -> Regime:
+def tie_jump(event: int, level: float, theta: float, r: Regime, ties: TieParams) -> Regime:
     """The ties' new states at their ``event`` (a step_scan code) at s·θ = ``level`` > 0
     (docs/model.md §12): every tie level whose own event is at that level changes; θ and θ'
     do not jump.
@@ -255,23 +254,23 @@ def tie_jump(event: int, level: float, theta: float, r: Regime, prm: KernelParam
     ½·k_t·(δ − δ_p)² leaves with it, θ' is kept).  Downward: it goes slack.  At the turning
     point every level that yields unloads, elastic, with δ_p = h_t·sin θ − F_y/k_t.
     """
-    for j in range(prm.tie_count):
+    for j in range(ties.levels):
         state = r.tie[j]
         dp = r.tie_dp[j]
         if event == TIE_DOWN:
             if tie_down_level(r, j) == level:
-                r = with_tie(r, j, TIE_SLACK, dp, prm)
+                r = with_tie(r, j, TIE_SLACK, dp, ties)
         elif event == TIE_TURN:
             if state == TIE_YIELD:
-                dp = max(dp, prm.tie_height[j] * math.sin(theta) - prm.tie_yield[j])
-                r = with_tie(r, j, TIE_ELASTIC, dp, prm)
-        elif tie_up_level(r, j, prm) == level:
+                dp = max(dp, ties.height[j] * math.sin(theta) - ties.yield_elongation[j])
+                r = with_tie(r, j, TIE_ELASTIC, dp, ties)
+        elif tie_up_level(r, j, ties) == level:
             if state == TIE_SLACK:
-                r = with_tie(r, j, TIE_ELASTIC, dp, prm)
-            elif r.tie_yield[j] < prm.tie_theta_loss[j]:
-                r = with_tie(r, j, TIE_YIELD, dp, prm)
+                r = with_tie(r, j, TIE_ELASTIC, dp, ties)
+            elif r.tie_yield[j] < ties.theta_loss[j]:
+                r = with_tie(r, j, TIE_YIELD, dp, ties)
             else:
-                r = with_tie(r, j, TIE_LOST, dp, prm)
+                r = with_tie(r, j, TIE_LOST, dp, ties)
     return r
 
 

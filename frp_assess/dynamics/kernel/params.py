@@ -8,6 +8,7 @@ be swapped silently.  The codes below are shared by the kernel and its Python fa
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 # the records' form for every compiled kernel, the spectra's too (re-exported here)
@@ -117,18 +118,34 @@ class KernelParams(NamedTuple):
     e_to_neg: float  #: and on side − [-]
     alpha_x_neg: float  #: where the wall without bar tips on side − [rad] (α_x: side +)
     tip_bar_neg: float  #: θ* of side − with the acting bar intact [rad] (tip_bar: side +)
-    # --- the ties of docs/model.md §12, by level (:func:`frp_assess.dynamics.loads.tie_levels`;
-    # the first ``tie_count`` entries of each tuple, the others never read): on side + the
-    # moment of level j over W·R is tie_kn[j]·(h_t·sin θ − δ_p)·cos θ while elastic and
-    # tie_kn[j]·tie_yield[j]·cos θ while yielding (F_t·h_t·cos θ/(W·R), F_t = k_t·(δ − δ_p), F_y)
+    # --- the ties of docs/model.md §12: their constants are a TieParams of their own
     tie_on: bool  #: the wall has a tie
-    tie_count: int  #: tie levels (0 to MAX_TIE_LEVELS)
-    tie_height: tuple[float, float]  #: h_t [m]
-    tie_kn: tuple[float, float]  #: k_t·h_t/(W·R) [1/m]
-    tie_yield: tuple[float, float]  #: F_y/k_t [m]: the elastic elongation at yield
-    #: θ where a brittle tie (F_a ≤ F_y) is lost, asin(F_a/(k_t·h_t)) [rad] (inf: never)
-    tie_theta_loss: tuple[float, float]
     #: the bounces after an impact are ended at once when they surely die out where the input
     #: cannot uplift the wall (:func:`.jumps.chatter_ends`; the same results, fewer impacts to
     #: follow); False only to show that
     settle_chatter: bool = True
+
+
+class TieParams(NamedTuple):
+    """The tie levels of docs/model.md §12 (:func:`frp_assess.dynamics.loads.tie_levels`): the
+    first ``levels`` entries of each tuple, the others never read.  On side + the moment of
+    level j over W·R is kn[j]·(h_t·sin θ − δ_p)·cos θ while elastic and
+    kn[j]·yield_elongation[j]·cos θ while yielding (F_t·h_t·cos θ/(W·R), F_t = k_t·(δ − δ_p)
+    or F_y).
+
+    Kept out of :class:`KernelParams`: numba passes that record field by field to every
+    kernel function it does not inline, and ten more numbers in it made the bare wall's IDAs
+    1.5 % slower (benchmarks/bench_kernel_against.py, 2026-11-28); these go only where a tie
+    acts (the driver, the jumps, the fate with ties).
+    """
+
+    levels: int  #: tie levels (0 to MAX_TIE_LEVELS)
+    height: tuple[float, float]  #: h_t [m]
+    kn: tuple[float, float]  #: k_t·h_t/(W·R) [1/m]
+    yield_elongation: tuple[float, float]  #: F_y/k_t [m]: the elastic elongation at yield
+    #: θ where a brittle tie (F_a ≤ F_y) is lost, asin(F_a/(k_t·h_t)) [rad] (inf: never)
+    theta_loss: tuple[float, float]
+
+
+#: A wall without a tie: no level (the entries are never read).
+NO_TIES = TieParams(0, (1.0, 1.0), (0.0, 0.0), (math.inf, math.inf), (math.inf, math.inf))

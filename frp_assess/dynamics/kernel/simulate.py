@@ -44,6 +44,7 @@ from frp_assess.dynamics.kernel.jumps import (
     bounces_die_out,
     ground_input,
     jump,
+    tie_jump,
     uplift_from_rest,
 )
 from frp_assess.dynamics.kernel.params import (
@@ -58,6 +59,7 @@ from frp_assess.dynamics.kernel.params import (
     TIE_LOST,
     TIE_YIELD,
     KernelParams,
+    TieParams,
 )
 from frp_assess.dynamics.kernel.state import (
     Buffers,
@@ -73,7 +75,15 @@ from frp_assess.dynamics.kernel.state import (
     tie_terms,
 )
 from frp_assess.dynamics.kernel.step_control import stepping, try_step
-from frp_assess.dynamics.kernel.step_scan import IMPACT, NO_EVENT, RUPTURE, TIE_TURN, scan_step
+from frp_assess.dynamics.kernel.step_scan import (
+    IMPACT,
+    NO_EVENT,
+    RUPTURE,
+    TIE_DOWN,
+    TIE_TURN,
+    TIE_UP,
+    scan_step,
+)
 
 
 class Outcome(NamedTuple):
@@ -118,6 +128,7 @@ def reached(x: float, dt: float, h_min: float) -> float:
 def simulate(
     ground: Ground,
     prm: KernelParams,
+    ties: TieParams,
     theta0: float,
     omega0: float,
     record_history: bool,
@@ -141,7 +152,7 @@ def simulate(
 
     theta = theta0
     omega = omega0
-    r = initial_regime(theta0, omega0, prm)
+    r = initial_regime(theta0, omega0, prm, ties)
     peak = abs(theta)
     peak_bar = abs(theta) if r.intact_pos else 0.0
     n_impacts = 0
@@ -168,7 +179,7 @@ def simulate(
                 status = STATUS_FREE_VIBRATION_UNDECIDED
                 break
             fate, collapse_time = collapse_verdict(
-                theta, omega, r, True, NO_EVENT, 0.0, i * dt, last_alpha_up, prm
+                theta, omega, r, True, NO_EVENT, 0.0, i * dt, last_alpha_up, prm, ties
             )
             if fate != UNDECIDED:
                 decided_time = i * dt
@@ -194,11 +205,11 @@ def simulate(
                 t0 = 0.0
                 t1 = 0.0
                 if prm.tie_on:  # the tie's moment in this regime (docs/model.md §12)
-                    if r.s * omega <= 0.0 and any_tie(r, TIE_YIELD, prm):
+                    if r.s * omega <= 0.0 and any_tie(r, TIE_YIELD, ties):
                         # a yielding tie whose wall stopped at the end of a step: it unloads
-                        theta, omega, r = jump(TIE_TURN, r.s * theta, omega, r, prm)
+                        r = tie_jump(TIE_TURN, r.s * theta, theta, r, ties)
                         need_a = True
-                    t0, t1 = tie_terms(r, prm)
+                    t0, t1 = tie_terms(r, ties)
                 k_s = bar_stiffness(r, prm)
                 u0 = ua + slope * x
                 th1, om1, a_end, a1, hh, h, accepted = try_step(
@@ -215,7 +226,7 @@ def simulate(
                 # --- the first event on it, and the peaks up to it
                 event, u_event, level, peak, peak_bar, y0, y1 = scan_step(
                     theta, omega, a1, th1, om1, hh, u0, slope, r, k_s, t0, t1, peak, peak_bar,
-                    bar_level, limit, prm,
+                    bar_level, limit, prm, ties,
                 )  # fmt: skip
                 if event == NO_EVENT:  # the step holds: the wall moves on
                     last_alpha_up = alpha_x_crossing(
@@ -255,7 +266,11 @@ def simulate(
                     )
                     x = reached(x + tau, dt, ctl.h_min)
                     now = t_i + x
-                    theta, omega, r = jump(event, level, om_e, r, prm)
+                    if event == TIE_UP or event == TIE_DOWN or event == TIE_TURN:
+                        theta, omega = r.s * level, om_e  # θ and θ' do not jump
+                        r = tie_jump(event, level, theta, r, ties)
+                    else:
+                        theta, omega, r = jump(event, level, om_e, r, prm)
                     need_a = True
                     if event == IMPACT:
                         n_impacts += 1
@@ -278,7 +293,7 @@ def simulate(
             if event == NO_EVENT and not free:
                 continue
             fate, collapse_time = collapse_verdict(
-                theta, omega, r, free, event, level, now, last_alpha_up, prm
+                theta, omega, r, free, event, level, now, last_alpha_up, prm, ties
             )
             if fate != UNDECIDED:
                 decided_time = now
@@ -291,7 +306,7 @@ def simulate(
         i += 1
 
     if fate == FATE_AT_REST:
-        peak, peak_bar = peaks_at_rest(theta, omega, r, peak, peak_bar, prm)
+        peak, peak_bar = peaks_at_rest(theta, omega, r, peak, peak_bar, prm, ties)
     return Outcome(
         status,
         fate,
@@ -306,6 +321,6 @@ def simulate(
         samples,
         n_steps,
         n_rejected,
-        any_tie(r, TIE_LOST, prm),
-        plastic_elongations(theta, r, prm),
+        any_tie(r, TIE_LOST, ties),
+        plastic_elongations(theta, r, ties),
     )

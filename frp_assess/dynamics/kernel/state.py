@@ -27,6 +27,7 @@ from frp_assess.dynamics.kernel.params import (
     TIE_SLACK,
     TIE_YIELD,
     KernelParams,
+    TieParams,
 )
 
 
@@ -65,7 +66,7 @@ class Regime(NamedTuple):
 
 
 @njit(cache=True, nogil=True, inline="always")
-def initial_regime(theta0: float, omega0: float, prm: KernelParams) -> Regime:
+def initial_regime(theta0: float, omega0: float, prm: KernelParams, ties: TieParams) -> Regime:
     """The regime of the initial state: at rest when it is (0, 0), the side θ0 (or θ'0) points
     to, every bar intact, the ties (if any) unstretched and elastic from θ = 0 (θ0 > 0
     stretches them at once: the initial state is the wall's, the ties taken as fitted at
@@ -76,8 +77,8 @@ def initial_regime(theta0: float, omega0: float, prm: KernelParams) -> Regime:
     off = (TIE_OFF, TIE_OFF)
     zero = (0.0, 0.0)
     r = Regime(s, resting, bars, bars, off, zero, zero, (math.inf, math.inf))
-    for j in range(prm.tie_count):
-        r = with_tie(r, j, TIE_ELASTIC, 0.0, prm)
+    for j in range(ties.levels):
+        r = with_tie(r, j, TIE_ELASTIC, 0.0, ties)
     return r
 
 
@@ -98,12 +99,12 @@ def tie_angle(elongation: float, height: float) -> float:
 
 
 @njit(cache=True, nogil=True, inline="always")
-def with_tie(r: Regime, j: int, state: int, dp: float, prm: KernelParams) -> Regime:
+def with_tie(r: Regime, j: int, state: int, dp: float, ties: TieParams) -> Regime:
     """The regime with tie level j's state and plastic elongation δ_p [m] changed (its levels
     with them)."""
-    h = prm.tie_height[j]
+    h = ties.height[j]
     slack = tie_angle(dp, h) if dp > 0.0 else 0.0
-    yields = tie_angle(dp + prm.tie_yield[j], h)
+    yields = tie_angle(dp + ties.yield_elongation[j], h)
     return Regime(
         r.s, r.resting, r.intact_pos, r.intact_neg, put(r.tie, j, state), put(r.tie_dp, j, dp),
         put(r.tie_slack, j, slack), put(r.tie_yield, j, yields),
@@ -111,7 +112,7 @@ def with_tie(r: Regime, j: int, state: int, dp: float, prm: KernelParams) -> Reg
 
 
 @njit(cache=True, nogil=True, inline="always")
-def tie_terms(r: Regime, prm: KernelParams) -> tuple[float, float]:
+def tie_terms(r: Regime, ties: TieParams) -> tuple[float, float]:
     """(t0, t1): the ties' moment over W·R is cos θ·(t0 + t1·sin θ) in this regime (0 on side
     −): the sum over the levels, elastic k_t·h_t·(h_t·sin θ − δ_p)/(W·R), yielding
     F_y·h_t/(W·R), slack or lost nothing."""
@@ -119,25 +120,25 @@ def tie_terms(r: Regime, prm: KernelParams) -> tuple[float, float]:
     t1 = 0.0
     if r.s < 0.0:
         return t0, t1
-    for j in range(prm.tie_count):
+    for j in range(ties.levels):
         state = r.tie[j]
         if state == TIE_YIELD:
-            t0 += prm.tie_kn[j] * prm.tie_yield[j]
+            t0 += ties.kn[j] * ties.yield_elongation[j]
         elif state == TIE_ELASTIC:
-            t0 -= prm.tie_kn[j] * r.tie_dp[j]
-            t1 += prm.tie_kn[j] * prm.tie_height[j]
+            t0 -= ties.kn[j] * r.tie_dp[j]
+            t1 += ties.kn[j] * ties.height[j]
     return t0, t1
 
 
 @njit(cache=True, nogil=True, inline="always")
-def tie_up_level(r: Regime, j: int, prm: KernelParams) -> float:
+def tie_up_level(r: Regime, j: int, ties: TieParams) -> float:
     """Tie level j's next upward event as a level of θ on side + — re-engaged (slack), yields
     or is lost (elastic) — or inf."""
     state = r.tie[j]
     if state == TIE_SLACK:
         return r.tie_slack[j]
     if state == TIE_ELASTIC:
-        return min(r.tie_yield[j], prm.tie_theta_loss[j])
+        return min(r.tie_yield[j], ties.theta_loss[j])
     return math.inf
 
 
@@ -149,7 +150,7 @@ def tie_down_level(r: Regime, j: int) -> float:
 
 
 @njit(cache=True, nogil=True, inline="always")
-def tie_levels(r: Regime, prm: KernelParams) -> tuple[float, float, bool]:
+def tie_levels(r: Regime, ties: TieParams) -> tuple[float, float, bool]:
     """The ties' events ahead in this regime, as levels of s·θ: (the lowest upward one or inf;
     the highest downward one, or 0: none besides the impact; whether the turning point is an
     event: a level that yields unloads there)."""
@@ -158,47 +159,47 @@ def tie_levels(r: Regime, prm: KernelParams) -> tuple[float, float, bool]:
     turn = False
     if r.s < 0.0:
         return up, down, turn
-    for j in range(prm.tie_count):
-        up = min(up, tie_up_level(r, j, prm))
+    for j in range(ties.levels):
+        up = min(up, tie_up_level(r, j, ties))
         down = max(down, tie_down_level(r, j))
         turn = turn or r.tie[j] == TIE_YIELD
     return up, down, turn
 
 
 @njit(cache=True, nogil=True, inline="always")
-def any_tie(r: Regime, state: int, prm: KernelParams) -> bool:
+def any_tie(r: Regime, state: int, ties: TieParams) -> bool:
     """Whether a tie level is in ``state`` (a TIE_* code)."""
-    for j in range(prm.tie_count):
+    for j in range(ties.levels):
         if r.tie[j] == state:
             return True
     return False
 
 
 @njit(cache=True, nogil=True, inline="always")
-def ties_left(r: Regime, prm: KernelParams) -> bool:
+def ties_left(r: Regime, ties: TieParams) -> bool:
     """Whether a tie level is still anchored (not lost)."""
-    for j in range(prm.tie_count):
+    for j in range(ties.levels):
         if r.tie[j] != TIE_LOST:
             return True
     return False
 
 
 @njit(cache=True, nogil=True)
-def plastic_elongation(theta: float, r: Regime, j: int, prm: KernelParams) -> float:
+def plastic_elongation(theta: float, r: Regime, j: int, ties: TieParams) -> float:
     """δ_p [m] of tie level j in the regime r at θ: the regime's, or while it yields the
     elongation beyond F_y/k_t (δ_p grows with δ; the regime keeps the value of the last
     yield)."""
     if r.tie[j] == TIE_YIELD and theta > 0.0:
-        return max(r.tie_dp[j], prm.tie_height[j] * math.sin(theta) - prm.tie_yield[j])
+        return max(r.tie_dp[j], ties.height[j] * math.sin(theta) - ties.yield_elongation[j])
     return r.tie_dp[j]
 
 
 @njit(cache=True, nogil=True)
-def plastic_elongations(theta: float, r: Regime, prm: KernelParams) -> tuple[float, float]:
+def plastic_elongations(theta: float, r: Regime, ties: TieParams) -> tuple[float, float]:
     """δ_p [m] of every tie level at θ (:func:`plastic_elongation`; 0 beyond the wall's)."""
     dp = (0.0, 0.0)
-    for j in range(prm.tie_count):
-        dp = put(dp, j, plastic_elongation(theta, r, j, prm))
+    for j in range(ties.levels):
+        dp = put(dp, j, plastic_elongation(theta, r, j, ties))
     return dp
 
 

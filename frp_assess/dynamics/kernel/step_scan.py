@@ -22,7 +22,7 @@ import math
 from numba import njit
 
 from frp_assess.dynamics.kernel import events as ev
-from frp_assess.dynamics.kernel.params import KernelParams
+from frp_assess.dynamics.kernel.params import KernelParams, TieParams
 from frp_assess.dynamics.kernel.state import Regime, acting_bar, tie_levels
 from frp_assess.dynamics.kernel.step_control import quiet
 
@@ -191,13 +191,15 @@ def scan_step(
     bar_level: float,
     limit: float,
     prm: KernelParams,
+    ties: TieParams,
 ) -> tuple[int, float, float, float, float, float, float]:
     """The first event of the accepted step hh [s] from (θ, θ', θ'' = a1) to (th1, om1) in the
     regime r, and the peaks up to it: (kind, u ∈ (0, 1] or 2.0, level, peak |θ|, peak |θ| with
     an intact bar, y0 = s·θ, y1 = s·th1).
 
     ``limit``: the collapse level (:func:`.collapse_rule.collapse_level`); ``bar_level``: the lowest
-    level with the bar intact, min(θ_max, θ_cr, limit).  numba inlines it into the driver.
+    level with the bar intact, min(θ_max, θ_cr, limit); ``ties``: the tie levels' constants.
+    numba inlines it into the driver.
     """
     s = r.s
     bar_on = acting_bar(r)
@@ -208,7 +210,7 @@ def scan_step(
     m0 = s * omega * hh
     m1 = s * om1 * hh
     if prm.tie_on:  # the tie's levels narrow the band of a quiet step, (0, top) without
-        tie = tie_levels(r, prm)
+        tie = tie_levels(r, ties)
         tie_up, low, tie_turn = tie
         is_quiet = not tie_turn and quiet(y0 - low, y1 - low, m0, m1, min(top, tie_up) - low)
     else:
