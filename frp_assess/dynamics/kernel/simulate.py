@@ -15,7 +15,8 @@ each piece it calls is one paragraph of docs/model.md §3–4.
   :mod:`.steppers`, retried shorter while its error estimate exceeds the tolerance), scanned
   for events on its dense output (:func:`.step_scan.scan_step`: impact, rupture, toe
   crushing, the collapse level, and the peak).  The first event is located on the integrator
-  (:func:`.events.locate_level`), its jump applied there (:func:`.jumps.jump`) and the step
+  (:func:`.events.locate_level`), its jump applied there (:func:`.jumps.jump`; a tie's,
+  :func:`.jumps.tie_jump`) and the step
   restarts from that instant.
 * The collapse rule's verdict (:func:`.collapse_rule.collapse_verdict`) is asked after every
   event, every step of the free vibration and when the input ends: the toe crushing and the
