@@ -128,7 +128,8 @@ class IdaResult:
     #: again above its first collapse shows here)
     curve: tuple[IdaPoint, ...] = ()
     #: how the wall failed at the first collapse (docs/model.md §1.1): overturning, rupture
-    #: then overturning, crushing, rupture then crushing; None without collapse
+    #: then overturning, crushing, rupture then crushing, tie lost then overturning, rupture
+    #: and tie lost then overturning; None without collapse
     failure_mode: FailureMode | None = None
     #: the rule of ``collapse_multiplier``: effective | first-collapse
     capacity: CapacityRule = "first-collapse"

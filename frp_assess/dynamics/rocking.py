@@ -37,13 +37,14 @@ from frp_assess.rules.wall_loads import impact_velocity_ratio
 Fate = Literal["fell", "at rest", "exceeded", "standing", "crushed"]
 #: How a wall that collapsed failed (docs/model.md §1.1, §12): it fell (or met the α_x limit of
 #: the other collapse rules), or its toe crushed under an intact bar, after a bar broke or not,
-#: or it fell after its tie's anchorage failed.
+#: or it fell after its tie's anchorage failed (and a bar broke, or not).
 FailureMode = Literal[
     "overturning",
     "rupture then overturning",
     "crushing",
     "rupture then crushing",
     "tie lost then overturning",
+    "rupture and tie lost then overturning",
 ]
 FAILURE_MODES: tuple[FailureMode, ...] = (
     "overturning",
@@ -51,6 +52,7 @@ FAILURE_MODES: tuple[FailureMode, ...] = (
     "crushing",
     "rupture then crushing",
     "tie lost then overturning",
+    "rupture and tie lost then overturning",
 )
 #: The fates that are a collapse: the wall fell (or met the α_x limit of the other collapse
 #: rules), or its toe crushed.
@@ -59,12 +61,13 @@ COLLAPSE_FATES: frozenset[Fate] = frozenset({"fell", "exceeded", "crushed"})
 
 def failure_mode_of(fate: Fate, ruptured: bool, tie_lost: bool = False) -> FailureMode | None:
     """How a wall whose time history ended in ``fate`` failed (``None``: it did not collapse);
-    ``ruptured``: a bar broke before; ``tie_lost``: the tie's anchorage failed before (a wall
-    that lost both falls after the bars' rupture: the bars' name is kept)."""
+    ``ruptured``: a bar broke before; ``tie_lost``: a tie's anchorage failed before (a wall
+    that lost both and fell: "rupture and tie lost then overturning"; the toe's crushing is
+    named by the bars alone, the tie takes no part in it)."""
     if fate not in COLLAPSE_FATES:
         return None
-    if tie_lost and not ruptured and fate != "crushed":
-        return "tie lost then overturning"
+    if tie_lost and fate != "crushed":
+        return "rupture and tie lost then overturning" if ruptured else "tie lost then overturning"
     head = "rupture then " if ruptured else ""
     return f"{head}{'crushing' if fate == 'crushed' else 'overturning'}"  # type: ignore[return-value]
 

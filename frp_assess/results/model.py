@@ -127,7 +127,8 @@ class RecordResult:
     #: ground (unscaled, as the IDA received it); None at ground level (it is ``pga``)
     floor_pga: float | None = None
     #: how the wall failed at the first collapse (docs/model.md §1.1): overturning | rupture
-    #: then overturning | crushing | rupture then crushing; None without collapse
+    #: then overturning | crushing | rupture then crushing | tie lost then overturning |
+    #: rupture and tie lost then overturning; None without collapse
     failure_mode: str | None = None
     #: the lowest C that collapsed on the sampling: the first collapse, the paper's
     #: convention (with ``capacity: first-collapse`` it is ``collapse_multiplier``) [-]

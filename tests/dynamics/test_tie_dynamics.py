@@ -217,3 +217,26 @@ def test_the_ida_names_the_loss_of_the_tie(capacity: str) -> None:
     ductile = ida(_model(Tie(H_T, 2e5, 6e3, math.inf)), _pulse(), DT, settings)
     assert ductile.failure_mode in (None, "overturning")
     assert ductile.capacity_multiplier > res.capacity_multiplier
+
+
+def test_a_wall_that_loses_its_bars_and_its_tie_names_both() -> None:
+    """GFRP centred 0.5 ‰ and a brittle tie (F_a = 3 kN/m < F_y), an outward pulse of 0.4 g:
+    the tie is lost, a bar breaks and the wall falls — 'rupture and tie lost then overturning'
+    (it read 'rupture then overturning', the tie's loss unnamed); the same wall without the
+    tie falls by 'rupture then overturning'."""
+    from frp_assess.dynamics.rebars import Rebars
+    from frp_assess.dynamics.rocking import failure_mode_of
+
+    bars = Rebars(46e9, 0.015, "centred", 0.5)
+    opts = ModelOptions(pivot="edge")
+    wall = Wall(B, H, W_UNIT)
+    acc = np.zeros(400)
+    acc[:N_PULSE] = -0.4 * G
+    both = RockingModel(wall, "two-sided", bars, opts, Loads(ties=(Tie(H_T, 2e5, 6e3, 3e3),)))
+    res = both.run(acc, DT, 1.0)
+    assert res.fate == "fell" and res.ruptures and res.tie_lost
+    assert res.failure_mode == "rupture and tie lost then overturning"
+    alone = RockingModel(wall, "two-sided", bars, opts).run(acc, DT, 1.0)
+    assert alone.fate == "fell" and alone.failure_mode == "rupture then overturning"
+    # the toe's crushing is named by the bars alone
+    assert failure_mode_of("crushed", True, True) == "rupture then crushing"
