@@ -37,7 +37,9 @@ from frp_assess.text_safety import plain
 #: 5: the effective collapse intensity (docs/model.md §11): IdaSettings.capacity and .offset,
 #: IdaResult.capacity, first_collapse, windows_below and bound_multiplier
 #: 6: the ties in the time histories (docs/model.md §12): a wall with ties ran without them
-CACHE_VERSION = 6  # 2: IdaResult.survivor_multiplier; 3: keyed on every ModelOptions field
+#: 7: no step on a round-off sliver before a sample (the peaks move by 1e-7, a yielding tie's
+#: capacity by up to 2 %) and the failure mode "rupture and tie lost then overturning"
+CACHE_VERSION = 7  # 2: IdaResult.survivor_multiplier; 3: keyed on every ModelOptions field
 
 
 def record_digest(acc: np.ndarray, dt: float) -> str:
