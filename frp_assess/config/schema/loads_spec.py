@@ -151,7 +151,8 @@ class WallLoadsSpec(_Model):
         max_length=10,
         description="Steel tie-rods: [{height: m, diameter: mm (or area: mm2), spacing: m, "
         "length: m, yield_strength: MPa (235), elastic_modulus: GPa (210), anchorage: kN per "
-        "tie (optional)}].",
+        "tie (optional)}]; at most two levels (e.g. a floor tie and an eaves tie): ties at the "
+        "same height that yield and lose their anchorage at the same elongation are one level.",
     )
 
     def problem(self, thickness: float, height: float) -> tuple[str, tuple[str | int, ...]] | None:
