@@ -92,11 +92,7 @@ class Lang:
         key = "chart:" + text
         if key in self.strings:
             return self.strings[key]
-        for pattern, name in _CHART_PATTERNS:
-            m = pattern.fullmatch(text)
-            if m is not None and ("chart:" + name) in self.strings:
-                return self.numbers_in(self.strings["chart:" + name].format(*m.groups()))
-        return self.numbers_in(text)
+        return self._by_pattern("chart:", _CHART_PATTERNS, text) or self.numbers_in(text)
 
     def run_phrase(self, text: str) -> str | None:
         """A phrase the run wrote in English with numbers in it (the compliance table's
@@ -104,12 +100,21 @@ class Lang:
         its catalogue pattern (``run:`` keys) with the numbers re-formatted, or None for a
         phrase without a pattern.  A phrase without numbers (a material's source in the
         library, config/library.py) is its own key."""
-        if ("run:" + text.strip()) in self.strings:
-            return self.numbers_in(self.strings["run:" + text.strip()])
-        for pattern, name in _RUN_PATTERNS:
-            m = pattern.fullmatch(text.strip())
-            if m is not None and ("run:" + name) in self.strings:
-                return self.numbers_in(self.strings["run:" + name].format(*m.groups()))
+        text = text.strip()
+        if ("run:" + text) in self.strings:
+            return self.numbers_in(self.strings["run:" + text])
+        return self._by_pattern("run:", _RUN_PATTERNS, text)
+
+    def _by_pattern(
+        self, prefix: str, patterns: tuple[tuple[re.Pattern[str], str], ...], text: str
+    ) -> str | None:
+        """``text`` through the first of ``patterns`` it matches whole: the catalogue's entry
+        ``prefix`` + its name, filled with the matched numbers in the language; None if none
+        matches (or the catalogue has no entry for it)."""
+        for pattern, name in patterns:
+            m = pattern.fullmatch(text)
+            if m is not None and (prefix + name) in self.strings:
+                return self.numbers_in(self.strings[prefix + name].format(*m.groups()))
         return None
 
 

@@ -18,12 +18,10 @@ import pytest
 from frp_assess.dynamics import IdaSettings, ModelOptions, RockingModel, Wall, ida
 from frp_assess.dynamics.loads import Loads, Tie, tie_levels
 from tests.dynamics.loads_reference import G, LoadedWall
+from tests.dynamics.test_tie_dynamics import DT, N_PULSE, _pulse, _pulse_ground
 from tests.dynamics.tie_reference import RefTie, tied_rocking
 
 B, H, W_UNIT = 0.4, 6.0, 18e3
-DT = 0.01
-PULSE = -0.3 * G  #: an outward ground acceleration [m/s²]
-N_PULSE = 20  #: its samples (0.2 s)
 #: a yielding tie at the first floor and a stiffer one at the eaves that stays elastic
 LOW = Tie(3.0, 2e5, 4e3, math.inf)
 HIGH = Tie(5.8, 1.5e5, 2e5, math.inf)
@@ -32,17 +30,6 @@ HIGH = Tie(5.8, 1.5e5, 2e5, math.inf)
 def _model(ties: tuple[Tie, ...], mechanism: str = "two-sided", **options: object) -> RockingModel:
     opts = ModelOptions(**{"pivot": "edge", "tolerance": 1e-10, **options})  # type: ignore[arg-type]
     return RockingModel(Wall(B, H, W_UNIT), mechanism, None, opts, Loads(ties=ties))  # type: ignore[arg-type]
-
-
-def _pulse(n: int = 400) -> np.ndarray:
-    acc = np.zeros(n)
-    acc[:N_PULSE] = PULSE
-    return acc
-
-
-def _pulse_ground(t: float) -> float:
-    """The kernel's input of :func:`_pulse`: linear between the samples."""
-    return float(np.interp(t, [0.0, (N_PULSE - 1) * DT, N_PULSE * DT], [PULSE, PULSE, 0.0]))
 
 
 def _reference(ties: tuple[Tie, ...], times: np.ndarray):  # type: ignore[no-untyped-def]
