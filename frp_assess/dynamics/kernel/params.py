@@ -36,7 +36,7 @@ FATE_STANDING = 3  #: `end-of-record`/`first-exceedance`: the input ended below 
 FATE_CRUSHED = 4  #: the compressed zone reached the intact acting bar: the toe crushed
 
 # the state of a tie level (docs/model.md §12), up to MAX_TIE_LEVELS (of rules.tie_rods: the
-# Regime's and KernelParams' tuples hold 2) per wall; a tie acts on side + only
+# Regime's and TieParams' tuples hold 2) per wall; a tie acts on side + only
 TIE_OFF = 0  #: no tie
 TIE_SLACK = 1  #: δ ≤ δ_p: the tie carries nothing (or the wall rocks on side −)
 TIE_ELASTIC = 2  #: F_t = k_t·(δ − δ_p) between 0 and F_y (F_a of a brittle tie)
