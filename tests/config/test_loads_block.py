@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from frp_assess.cli import main
+from tests.config.located import assert_one_located_line, validate_text
 
 BASE = """\
 project: {name: Loads}
@@ -36,14 +36,6 @@ interventions:
 def _sub(old: str, new: str) -> str:
     assert old in BASE, old
     return BASE.replace(old, new, 1)
-
-
-def _validate(tmp_path: Path, text: str, capsys: pytest.CaptureFixture[str]) -> tuple[int, str]:
-    path = tmp_path / "p.yaml"
-    path.write_text(text, encoding="utf-8")
-    code = main(["validate", str(path)])
-    captured = capsys.readouterr()
-    return code, captured.err
 
 
 #: (id, project text, expected fragment, line, key)
@@ -119,12 +111,8 @@ def test_refused_with_one_located_line(
     line: int,
     key: str,
 ) -> None:
-    code, err = _validate(tmp_path, text, capsys)
-    assert code == 2
-    lines = err.strip().splitlines()
-    assert len(lines) == 1, err
-    assert f"p.yaml:{line}: {key}" in lines[0]
-    assert fragment in lines[0]
+    code, err = validate_text(tmp_path, text, capsys)
+    assert_one_located_line(code, err, line, key, fragment)
 
 
 def test_a_facade_with_a_floor_and_a_thrust_is_valid(
@@ -135,7 +123,7 @@ def test_a_facade_with_a_floor_and_a_thrust_is_valid(
         "",
     )
     assert no_tie != BASE
-    code, err = _validate(tmp_path, no_tie, capsys)
+    code, err = validate_text(tmp_path, no_tie, capsys)
     assert code == 0, err
 
 
@@ -156,6 +144,6 @@ def test_ties_are_in_the_time_histories_without_a_warning(
         "length: 8.0}\n",
     )
     for text in (BASE, doubled, floor_tie):
-        code, err = _validate(tmp_path, text, capsys)
+        code, err = validate_text(tmp_path, text, capsys)
         assert code == 0, err
         assert "tie" not in err and "time histories" not in err, err

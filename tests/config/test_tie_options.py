@@ -8,9 +8,9 @@ from pathlib import Path
 
 import pytest
 
-from frp_assess.cli import main
 from frp_assess.config.loader import load_project_text
 from frp_assess.config.schema import Intervention, Project, TieOption
+from tests.config.located import assert_one_located_line, validate_text
 
 BASE = """\
 project: {name: Tie options}
@@ -37,13 +37,6 @@ costs: {tie_steel_per_kg: 2.5, tie_plate: 60, tie_installation: 300}
 def _sub(old: str, new: str) -> str:
     assert old in BASE, old
     return BASE.replace(old, new, 1)
-
-
-def _validate(tmp_path: Path, text: str, capsys: pytest.CaptureFixture[str]) -> tuple[int, str]:
-    path = tmp_path / "p.yaml"
-    path.write_text(text, encoding="utf-8")
-    code = main(["validate", str(path)])
-    return code, capsys.readouterr().err
 
 
 def _project(text: str) -> Project:
@@ -114,12 +107,8 @@ def test_refused_with_one_located_line(
     line: int,
     key: str,
 ) -> None:
-    code, err = _validate(tmp_path, text, capsys)
-    assert code == 2, err
-    lines = err.strip().splitlines()
-    assert len(lines) == 1, err
-    assert f"p.yaml:{line}: {key}" in lines[0]
-    assert fragment in lines[0]
+    code, err = validate_text(tmp_path, text, capsys)
+    assert_one_located_line(code, err, line, key, fragment)
 
 
 def test_tie_options_are_valid_and_named(
@@ -127,7 +116,7 @@ def test_tie_options_are_valid_and_named(
 ) -> None:
     """The three kinds validate without a warning (the time histories model the tie,
     docs/model.md §12), each named by default from its bars and tie."""
-    code, err = _validate(tmp_path, BASE, capsys)
+    code, err = validate_text(tmp_path, BASE, capsys)
     assert code == 0, err
     assert "interventions[" not in err
     options = _project(BASE).expand_interventions()
@@ -170,7 +159,7 @@ def test_the_same_tie_twice_is_one_option_and_two_ties_under_one_name_are_refuse
         "GFRP external 1‰ + tie A 314 mm² @ 3.0 m at 5.5 m",
     ]
     clash = text.replace("name: catena, height: 5.5,", "name: Tie Ø20 @ 3.0 m at 5.5 m, height: 5,")
-    code, err = _validate(tmp_path, clash, capsys)
+    code, err = validate_text(tmp_path, clash, capsys)
     assert code == 2
     assert "p.yaml:13: interventions[1]: two different options are named" in err
 
