@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field, replace
 from functools import cached_property
-from typing import Literal
+from typing import Literal, get_args
 
 import numpy as np
 from numpy.typing import NDArray
@@ -46,14 +46,8 @@ FailureMode = Literal[
     "tie lost then overturning",
     "rupture and tie lost then overturning",
 ]
-FAILURE_MODES: tuple[FailureMode, ...] = (
-    "overturning",
-    "rupture then overturning",
-    "crushing",
-    "rupture then crushing",
-    "tie lost then overturning",
-    "rupture and tie lost then overturning",
-)
+#: Every failure mode, in the order of :data:`FailureMode` (derived: one list to keep).
+FAILURE_MODES: tuple[FailureMode, ...] = get_args(FailureMode)
 #: The fates that are a collapse: the wall fell (or met the α_x limit of the other collapse
 #: rules), or its toe crushed.
 COLLAPSE_FATES: frozenset[Fate] = frozenset({"fell", "exceeded", "crushed"})
