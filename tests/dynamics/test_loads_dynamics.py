@@ -19,6 +19,7 @@ from frp_assess.dynamics.kernel.fate import loaded_energy
 from frp_assess.dynamics.loads import Loads
 from frp_assess.rules.wall_loads import Thrust, TopLoad, uplift_multiplier
 from tests.dynamics.loads_reference import G, LoadedWall, free_rocking
+from tests.dynamics.tolerance_check import assert_capacity_holds, steel_tie
 
 B, H, W_UNIT = 0.4, 6.0, 18e3
 TOP = ((10e3, 0.3, True), (4e3, 0.2, False))
@@ -133,6 +134,13 @@ def test_a_rupture_hands_the_bar_energy_to_the_whole_body() -> None:
     assert 0.5 * i_s * omega**2 == pytest.approx(0.5 * i_s * 0.3**2 + u_r, rel=1e-12)
 
 
+def _facade(loads: Loads, tolerance: float) -> RockingModel:
+    """The façade of the tolerance tests (f_d = 2 MPa: the crushing pivot), one-sided."""
+    return RockingModel(
+        Wall(B, H, W_UNIT, 2e6), "one-sided", None, ModelOptions(tolerance=tolerance), loads
+    )
+
+
 @pytest.mark.parametrize("capacity", ["first-collapse", "effective"])
 def test_a_loaded_walls_capacity_does_not_move_with_the_integration_tolerance(
     capacity: str,
@@ -142,23 +150,11 @@ def test_a_loaded_walls_capacity_does_not_move_with_the_integration_tolerance(
     (1e-6 → 1e-8) moves no record's capacity by more than the IDA's bisection tolerance
     (0.5 %, the resolution the capacity is stated at) — a number of the wall and the record,
     not of a numerical setting."""
-    from frp_assess.dynamics import IdaSettings, ida
-    from tests.conftest import synthetic_record
-
     loads = Loads(
         top=tuple(TopLoad(p, d, c) for p, d, c in TOP),
         thrusts=tuple(Thrust(f, h) for f, h in THRUSTS),
     )
-    wall = Wall(B, H, W_UNIT, 2e6)
-    settings = IdaSettings(capacity=capacity)  # type: ignore[arg-type]
-    for seed in range(4):
-        acc = synthetic_record(seed, duration=8.0)
-        c = [
-            ida(RockingModel(wall, "one-sided", None, ModelOptions(tolerance=tol), loads), acc,
-                0.01, settings).capacity_multiplier
-            for tol in (1e-6, 1e-8)
-        ]  # fmt: skip
-        assert c[1] == pytest.approx(c[0], rel=0.005), (seed, c)
+    assert_capacity_holds(lambda tol: _facade(loads, tol), capacity, seeds=4)
 
 
 @pytest.mark.parametrize(
@@ -173,23 +169,9 @@ def test_a_tied_walls_capacity_does_not_move_with_the_integration_tolerance(
     never): its yield, unloading, slack and loss are events located inside the step, so a
     100× tighter integration tolerance (1e-6 → 1e-8) moves no record's capacity by more than
     the IDA's bisection tolerance (0.5 %), with either capacity rule."""
-    from frp_assess.dynamics import IdaSettings, ida
-    from frp_assess.dynamics.loads import Tie
-    from tests.conftest import synthetic_record
-
-    area, spacing, length = math.pi * 0.010**2, 3.0, 8.0
-    tie = Tie(5.5, 210e9 * area / (length * spacing), 235e6 * area / spacing, anchorage)
+    tie = steel_tie(5.5, 20.0, anchorage)
     loads = Loads(top=tuple(TopLoad(p, d, c) for p, d, c in TOP), ties=(tie,))
-    wall = Wall(B, H, W_UNIT, 2e6)
-    settings = IdaSettings(capacity=capacity)  # type: ignore[arg-type]
-    for seed in range(3):
-        acc = synthetic_record(seed, duration=8.0)
-        c = [
-            ida(RockingModel(wall, "one-sided", None, ModelOptions(tolerance=tol), loads), acc,
-                0.01, settings).capacity_multiplier
-            for tol in (1e-6, 1e-8)
-        ]  # fmt: skip
-        assert c[1] == pytest.approx(c[0], rel=0.005), (seed, c)
+    assert_capacity_holds(lambda tol: _facade(loads, tol), capacity, seeds=3)
 
 
 def test_a_yielding_tie_is_not_stopped_at_a_sample_by_round_off() -> None:
@@ -200,20 +182,13 @@ def test_a_yielding_tie_is_not_stopped_at_a_sample_by_round_off() -> None:
     tolerance 1e-6 against 0.2864 rad from 1e-7 on).  The reference is the same equation at
     a 1000× tighter tolerance (convergence): the peak and the tie's plastic elongation agree
     to 1e-5."""
-    from frp_assess.dynamics.loads import Tie
     from tests.conftest import synthetic_record
 
-    area, spacing, length = math.pi * 0.010**2, 3.0, 8.0
-    tie = Tie(5.5, 210e9 * area / (length * spacing), 235e6 * area / spacing, math.inf)
-    loads = Loads(top=tuple(TopLoad(p, d, c) for p, d, c in TOP), ties=(tie,))
-    wall = Wall(B, H, W_UNIT, 2e6)
-    acc = synthetic_record(0, duration=8.0)
-    default, tight = (
-        RockingModel(wall, "one-sided", None, ModelOptions(tolerance=tol), loads).run(
-            acc, 0.01, 17.25
-        )
-        for tol in (1e-6, 1e-9)
+    loads = Loads(
+        top=tuple(TopLoad(p, d, c) for p, d, c in TOP), ties=(steel_tie(5.5, 20.0, math.inf),)
     )
+    acc = synthetic_record(0, duration=8.0)
+    default, tight = (_facade(loads, tol).run(acc, 0.01, 17.25) for tol in (1e-6, 1e-9))
     assert default.fate == tight.fate == "at rest"
     assert default.max_rotation == pytest.approx(tight.max_rotation, rel=1e-5)
     assert default.tie_plastic_elongation == pytest.approx(tight.tie_plastic_elongation, rel=1e-5)

@@ -15,11 +15,12 @@ import math
 import numpy as np
 import pytest
 
-from frp_assess.dynamics import IdaSettings, ModelOptions, RockingModel, Wall, ida
+from frp_assess.dynamics import ModelOptions, RockingModel, Wall
 from frp_assess.dynamics.loads import Loads, Tie, tie_levels
 from tests.dynamics.loads_reference import G, LoadedWall
 from tests.dynamics.test_tie_dynamics import DT, N_PULSE, _pulse, _pulse_ground
 from tests.dynamics.tie_reference import RefTie, tied_rocking
+from tests.dynamics.tolerance_check import assert_capacity_holds, steel_tie
 
 B, H, W_UNIT = 0.4, 6.0, 18e3
 #: a yielding tie at the first floor and a stiffer one at the eaves that stays elastic
@@ -126,19 +127,5 @@ def test_two_levels_capacity_does_not_move_with_the_integration_tolerance(capaci
     every 3 m at 5.8 m, its anchorage lost at 8 kN/m): a 100× tighter integration tolerance
     (1e-6 → 1e-8) moves no record's capacity by more than the IDA's bisection tolerance
     (0.5 %), with either capacity rule."""
-    from tests.conftest import synthetic_record
-
-    def tie(height: float, diameter: float, anchorage: float) -> Tie:
-        area = math.pi * (diameter / 2e3) ** 2
-        return Tie(height, 210e9 * area / (8.0 * 3.0), 235e6 * area / 3.0, anchorage)
-
-    ties = (tie(3.0, 20.0, math.inf), tie(5.8, 16.0, 8e3))
-    settings = IdaSettings(capacity=capacity)  # type: ignore[arg-type]
-    for seed in range(2):
-        acc = synthetic_record(seed, duration=8.0)
-        c = [
-            ida(_model(ties, "one-sided", tolerance=tol), acc, DT,
-                settings).capacity_multiplier
-            for tol in (1e-6, 1e-8)
-        ]  # fmt: skip
-        assert c[1] == pytest.approx(c[0], rel=0.005), (seed, c)
+    ties = (steel_tie(3.0, 20.0, math.inf), steel_tie(5.8, 16.0, 8e3))
+    assert_capacity_holds(lambda tol: _model(ties, "one-sided", tolerance=tol), capacity, seeds=2)
