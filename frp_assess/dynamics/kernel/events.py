@@ -230,6 +230,29 @@ def locate_level(
     return tau, om_e, resid
 
 
+@njit(cache=True, nogil=True, inline="always")
+def _end_state(
+    theta: float,
+    omega: float,
+    a1: float,
+    tau: float,
+    u0: float,
+    slope: float,
+    s: float,
+    k_s: float,
+    t0: float,
+    t1: float,
+    prm: KernelParams,
+) -> tuple[float, float, float]:
+    """(θ, θ', θ'') after one integrator step of τ [s]: the searches for θ' = 0
+    (:func:`turning_point`, :func:`locate_turn`) take the slope θ'' from it (evaluated when
+    the method gives no end acceleration, RK4)."""
+    th_e, om_e, a_e, _err = step(theta, omega, tau, u0, slope, s, k_s, t0, t1, a1, prm)
+    if math.isnan(a_e):
+        a_e = acceleration(th_e, s, u0 + slope * tau, k_s, t0, t1, prm)
+    return th_e, om_e, a_e
+
+
 @njit(cache=True, nogil=True)
 def turning_point(
     theta: float,
@@ -254,10 +277,8 @@ def turning_point(
     best = s * theta
     taylor = prm.method != METHOD_RK4
     for _ in range(EVENT_ITERATIONS):
-        th_e, om_e, a_e, _err = step(theta, omega, tau, u0, slope, s, k_s, t0, t1, a1, prm)
+        th_e, om_e, a_e = _end_state(theta, omega, a1, tau, u0, slope, s, k_s, t0, t1, prm)
         best = max(best, s * th_e)
-        if math.isnan(a_e):  # a method without FSAL: evaluate the end acceleration
-            a_e = acceleration(th_e, s, u0 + slope * tau, k_s, t0, t1, prm)
         if a_e == 0.0:
             break
         if taylor and tau > 0.0:
@@ -298,9 +319,7 @@ def locate_turn(
     """
     th_e = theta
     for _ in range(EVENT_ITERATIONS):
-        th_e, om_e, a_e, _err = step(theta, omega, tau, u0, slope, s, k_s, t0, t1, a1, prm)
-        if math.isnan(a_e):  # a method without FSAL: evaluate the end acceleration
-            a_e = acceleration(th_e, s, u0 + slope * tau, k_s, t0, t1, prm)
+        th_e, om_e, a_e = _end_state(theta, omega, a1, tau, u0, slope, s, k_s, t0, t1, prm)
         if abs(om_e) <= EVENT_TIME_TOLERANCE * h * abs(a_e) or a_e == 0.0:
             break
         tau_new = _newton_step(tau, om_e, a_e, h)
